@@ -1,0 +1,68 @@
+// ris: the radar image simulator command-line tool.
+#include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include "command_registry.h"
+#include "ris/util/error.h"
+
+namespace ris::app {
+
+std::vector<std::pair<std::string, AddCommand>>& registered_commands() {
+  static std::vector<std::pair<std::string, AddCommand>> commands;
+  return commands;
+}
+
+Registration::Registration(std::string name, AddCommand add) {
+  registered_commands().emplace_back(std::move(name), std::move(add));
+}
+
+std::string data_path(const std::string& relative) {
+  // RIS_DATA overrides the data folder compiled in (for installed copies).
+  const char* env = std::getenv("RIS_DATA");
+  const std::filesystem::path base = (env != nullptr && *env != '\0') ? env : RIS_DATA_DIR;
+  return (base / relative).string();
+}
+
+std::string default_scene_path() { return data_path("scenes/ku-geometric.toml"); }
+std::string default_radar_path() { return data_path("radars/seed-fig4-5.toml"); }
+
+}  // namespace ris::app
+
+int main(int argc, char** argv) {
+  CLI::App app{"ris: radar image simulator (SLAR, SAR and PPI images from terrain)", "ris"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("ris ") + RIS_VERSION);
+  // Messages go to stderr as "ris: level: text"; -v is read before parsing so
+  // that it applies to everything the subcommands print.
+  spdlog::set_default_logger(spdlog::stderr_color_mt("ris"));
+  spdlog::set_pattern("ris: %^%l%$: %v");
+  bool verbose = false;  // applied by the pre-scan below
+  app.add_flag("-v,--verbose", verbose, "Print debug messages");
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-v" || arg == "--verbose") spdlog::set_level(spdlog::level::debug);
+  }
+
+  auto& commands = ris::app::registered_commands();
+  std::sort(commands.begin(), commands.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& [name, add] : commands) add(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const ris::InputError& e) {
+    spdlog::error("{}", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+  return 0;
+}

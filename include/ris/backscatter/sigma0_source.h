@@ -1,0 +1,38 @@
+// Where sigma0 comes from: the interface between the backscatter models and
+// the simulation.
+//
+// A Sigma0Source answers "sigma0 of category c at local incidence theta for
+// this band". It is consulted only while building a Sigma0Lut, once per run
+// (DESIGN.md principle 5: decide outside the loop); the hot loops read the
+// table, never a virtual function.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ris/backscatter/polarisation.h"
+
+namespace ris {
+
+class Sigma0Source {
+ public:
+  virtual ~Sigma0Source() = default;
+
+  // Whether the source can give sigma0 for this category.
+  virtual bool has_category(std::uint16_t category) const = 0;
+
+  // sigma0 (linear, per unit true surface area, >= 0) at local incidence
+  // incidence_rad in [0, pi/2]. Called only for categories with
+  // has_category() true. May throw InputError (e.g. a band outside a model's
+  // validity range).
+  virtual double sigma0(std::uint16_t category, double incidence_rad, const RadarBand& band) const = 0;
+
+  // A human-readable name for the category ("tall corn"), or its number.
+  virtual std::string category_name(std::uint16_t category) const = 0;
+
+  // Where the values come from, for metadata ("table data/backscatter/x.csv").
+  virtual std::string description() const = 0;
+};
+
+}  // namespace ris

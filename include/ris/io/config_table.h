@@ -1,0 +1,87 @@
+// Checked access to one TOML table: the edge where configuration text becomes
+// plain structs (DESIGN.md principle 2).
+//
+// Every getter records the key as used; finish() rejects any key that was
+// never asked for, so a misspelled key fails loudly (pbrt's ReportUnused).
+// Errors are InputError naming the file and the dotted key path.
+//
+// Example:
+//   ris::ConfigTable grid(doc, "scene.toml", "grid");
+//   int rows = grid.get_int("rows");
+//   double cell_m = grid.get_quantity("cell_size", ris::Quantity::length);
+//   grid.finish();
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "ris/util/units.h"
+
+namespace ris {
+
+// Parses a TOML file; a syntax error becomes an InputError with line/column.
+toml::table parse_toml_file(const std::string& path);
+
+class ConfigTable {
+ public:
+  // table: the TOML table; file: its path, for messages; path: dotted key path
+  // of this table ("" for the document root, "grid", "object[3]").
+  ConfigTable(const toml::table& table, std::string file, std::string path);
+
+  bool has(const std::string& key) const;
+
+  // Required values: throw InputError when missing or of the wrong type.
+  double get_double(const std::string& key);
+  std::int64_t get_int(const std::string& key);
+  bool get_bool(const std::string& key);
+  std::string get_string(const std::string& key);
+  // A quantity written as a bare number (default unit) or "<number> <unit>";
+  // returns SI (radians for angles).
+  double get_quantity(const std::string& key, Quantity q);
+  // An array of numbers (or quantities).
+  std::vector<double> get_double_array(const std::string& key);
+  std::vector<double> get_quantity_array(const std::string& key, Quantity q);
+
+  // Optional values: return the default (or nullopt) when absent.
+  double get_double_or(const std::string& key, double fallback);
+  std::int64_t get_int_or(const std::string& key, std::int64_t fallback);
+  bool get_bool_or(const std::string& key, bool fallback);
+  std::string get_string_or(const std::string& key, const std::string& fallback);
+  double get_quantity_or(const std::string& key, Quantity q, double fallback_si);
+  std::optional<double> get_quantity_opt(const std::string& key, Quantity q);
+  std::optional<std::string> get_string_opt(const std::string& key);
+
+  // Sub-tables and arrays of tables, marked as used.
+  std::optional<ConfigTable> subtable(const std::string& key);
+  std::vector<ConfigTable> table_array(const std::string& key);
+
+  // Marks a key as used without reading it (for keys handled elsewhere).
+  void mark_used(const std::string& key);
+
+  // Throws InputError listing every key present but never read.
+  void finish() const;
+
+  // The raw node (marks it used), for callers with their own type logic.
+  const toml::node* raw(const std::string& key);
+
+  const std::string& file() const { return file_; }
+  // Dotted path of a key in this table, for messages: "grid.cell_size".
+  std::string key_path(const std::string& key) const;
+  // An InputError about a key of this table.
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+ private:
+  const toml::node& require(const std::string& key);
+
+  const toml::table* table_;
+  std::string file_;
+  std::string path_;
+  std::set<std::string> used_;
+};
+
+}  // namespace ris

@@ -1,0 +1,70 @@
+// Writing rasters through GDAL: GeoTIFF products and PNG pictures.
+//
+// Every writer is atomic (temporary name, then rename). GeoTIFFs are tiled
+// and DEFLATE-compressed; PNGs are made through GDAL's PNG driver from an
+// in-memory dataset.
+//
+// Example:
+//   ris::Georef g{scene.geotransform(), scene.crs_wkt};
+//   ris::write_geotiff<float>("power.tif", power.data(), cols, rows, &g, NAN);
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ris {
+
+// Georeferencing of a raster: a GDAL geotransform and a CRS (WKT, may be empty).
+struct Georef {
+  std::array<double, 6> geotransform{0, 1, 0, 0, 0, -1};
+  std::string crs_wkt;
+};
+
+// Key/value metadata written into the file's default metadata domain.
+using RasterMetadata = std::map<std::string, std::string>;
+
+// One band of a multi-band raster: data (cols*rows, row-major), a name.
+template <typename T>
+struct BandView {
+  const T* data = nullptr;
+  std::string description;
+};
+
+// Single-band GeoTIFF of float, uint8_t, uint16_t or int32_t samples.
+// georef may be null (no georeferencing: pixel coordinates).
+template <typename T>
+void write_geotiff(const std::filesystem::path& path, const T* data, int cols, int rows,
+                   const Georef* georef, std::optional<double> nodata = std::nullopt,
+                   const RasterMetadata& metadata = {}, const std::string& band_description = "");
+
+// Multi-band GeoTIFF, every band of type T.
+template <typename T>
+void write_geotiff_bands(const std::filesystem::path& path, const std::vector<BandView<T>>& bands,
+                         int cols, int rows, const Georef* georef,
+                         std::optional<double> nodata = std::nullopt,
+                         const RasterMetadata& metadata = {});
+
+// 8-bit greyscale PNG (0 black, 255 white).
+void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows);
+// 8-bit RGB PNG from interleaved r,g,b samples (cols*rows*3).
+void write_png_rgb(const std::filesystem::path& path, const std::uint8_t* rgb, int cols, int rows);
+
+// A raster read back as float64, for tests and small tools.
+struct RasterF64 {
+  int cols = 0;
+  int rows = 0;
+  int bands = 0;
+  std::vector<double> data;  // band-major: band b at offset b*cols*rows
+  std::optional<double> nodata;
+  Georef georef;
+  bool has_geotransform = false;
+  RasterMetadata metadata;
+};
+RasterF64 read_raster_f64(const std::filesystem::path& path);
+
+}  // namespace ris

@@ -1,0 +1,39 @@
+// Reading and writing scenes through GDAL.
+//
+// A ris scene file is a GeoTIFF with two Float32 bands: band 1 elevation
+// (metres, description "elevation_m"), band 2 category id (description
+// "category"; Float32 holds every uint16 id exactly, and GeoTIFF requires one
+// sample type for all bands). No-data is NaN in both bands. The geotransform
+// and CRS are kept; metadata item RIS_SCENE=1 marks the file.
+//
+// Any other GDAL raster is read as an elevation model (band 1) with every
+// cell of category 0, or with categories from a second raster on exactly the
+// same grid.
+//
+// Example:
+//   ris::Scene s = ris::read_scene("scene.tif");
+//   ris::write_scene_geotiff(s, "copy.tif");
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "ris/scene/scene.h"
+
+namespace ris {
+
+void write_scene_geotiff(const Scene& scene, const std::filesystem::path& path);
+
+// Reads a ris scene file or an elevation raster (any GDAL format). With
+// category_path, categories come from band 1 of that raster, which must have
+// the same size and geotransform; its no-data cells become no-data.
+// Elevation no-data and NaN cells are marked invalid. Throws InputError for
+// unreadable, empty or mismatched inputs.
+Scene read_scene(const std::filesystem::path& path,
+                 const std::optional<std::filesystem::path>& category_path = std::nullopt);
+
+// Number of cells marked no-data.
+std::size_t count_nodata(const Scene& scene);
+
+}  // namespace ris

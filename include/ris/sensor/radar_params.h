@@ -1,0 +1,119 @@
+// The radar, its track and its image chain as checked plain structs: what a
+// radar description file (docs/radar-format.md) becomes after parsing. The
+// core never sees strings or units; everything here is SI (metres, seconds,
+// hertz, watts, radians).
+//
+// Parsing and validation: ris/sensor/radar_config.h. Derived quantities
+// (resolutions, swath, N): ris/sensor/radar_derived.h.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ris/backscatter/polarisation.h"
+
+namespace ris {
+
+enum class RadarMode { slar };
+enum class LookSide { right, left };
+
+// One-way elevation antenna power gain G_e(beta) relative to boresight, as a
+// function of the look angle beta from nadir (MODEL.md section 3).
+struct ElevationPattern {
+  enum class Kind { uniform, sinc2, gaussian, table };
+  Kind kind = Kind::uniform;
+  double beamwidth_rad = 0.0;   // one-way 3 dB beamwidth (sinc2, gaussian)
+  double boresight_rad = 0.0;   // look angle from nadir of the beam centre
+  std::vector<double> table_look_rad;  // table: look angles from nadir, increasing
+  std::vector<double> table_gain;      // table: one-way power gain, linear, relative
+};
+
+// How the flight track is given in the file; resolved against a scene into
+// a Track (ris/sensor/track.h) because "near edge" depends on the scene.
+struct TrackSpec {
+  enum class Kind { endpoints, heading_near_edge };
+  Kind kind = Kind::heading_near_edge;
+  // endpoints: ground projection of the track start and end, scene metres.
+  double start_x_m = 0.0, start_y_m = 0.0, end_x_m = 0.0, end_y_m = 0.0;
+  // heading_near_edge: heading clockwise from north (scene +y), and the ground
+  // distance from the track to the scene's nearest edge (the seed's
+  // GROUND(1)); the track spans the scene along its heading.
+  double heading_rad = 0.0;
+  double near_edge_ground_m = 0.0;
+  double altitude_m = 0.0;  // above the scene datum
+  LookSide look_side = LookSide::right;
+};
+
+// The reference ("calibrator") cell of the seed's equation 15.
+struct ReferenceCell {
+  bool automatic = true;          // median pixel power maps to auto_greytone
+  double auto_greytone = 128.0;
+  double greytone = 128.0;        // G_ref
+  // Explicit reference: P_ref = P_T1 sigma0_1 dA_1 G_1^2 lambda_1^2 / ((4 pi)^3 R_1^4)
+  double transmit_power_w = 0.0;  // P_T1
+  double sigma0 = 0.0;            // sigma0_1 (linear)
+  double area_m2 = 0.0;           // dA_1
+  double gain = 1.0;              // G_1 (one-way, linear)
+  double wavelength_m = 0.0;      // lambda_1
+  double range_m = 0.0;           // R_1
+};
+
+// Film and receiver constants of equation 15 for the simulated (2) and
+// reference (1) systems.
+struct FilmParams {
+  double density_range = 2.0;  // X, optical density range of the film
+  double gamma = 1.0;          // film gamma
+  double k1 = 1.0, k2 = 1.0;   // film exposure/processing constants
+  double m1 = 1.0, m2 = 1.0;   // receiver power-to-intensity constants
+};
+
+// Which factors of equation 15 vary from the reference (the seed's
+// PROCES(5..13)); a switched-off factor takes its reference value.
+struct GreytoneSwitches {
+  bool transmit_power = true;
+  bool wavelength = true;
+  bool antenna_gain = true;
+  bool backscatter = true;
+  bool area = true;
+  bool range = true;
+  bool film_k = true;
+  bool receiver_m = true;
+  bool fading = true;
+};
+
+enum class FadingLaw { exact_gamma, seed_eq21 };
+
+struct RadarParams {
+  std::string source_file;         // where it was read from
+  std::string name;                // free text
+
+  RadarMode mode = RadarMode::slar;
+  double frequency_hz = 0.0;
+  Polarisation polarisation = Polarisation::HH;
+  double pulse_width_s = 0.0;      // tau
+  double near_slant_range_m = 0.0; // c t_delay / 2
+  double far_slant_range_m = 0.0;  // near + c t_sweep / 2
+  double range_bin_m = 0.0;        // dr, default c tau / 2
+  int range_bins = 0;              // ceil((far - near) / dr)
+  double azimuth_beamwidth_rad = 0.0;  // phi
+  ElevationPattern elevation_pattern;
+  double transmit_power_w = 0.0;   // P_t
+  double peak_gain = 1.0;          // boresight one-way gain (linear), scales G_e
+
+  TrackSpec track;
+  double speed_m_per_s = 0.0;
+  double prf_hz = 0.0;
+  std::optional<double> independent_samples;  // nullopt: the seed's equation 16
+  double azimuth_line_spacing_m = 0.0;        // 0: one scene cell
+
+  ReferenceCell reference;
+  FilmParams film;
+  GreytoneSwitches switches;
+  FadingLaw fading = FadingLaw::exact_gamma;
+
+  double wavelength_m() const;
+};
+
+}  // namespace ris

@@ -1,0 +1,102 @@
+#include "ris/io/atomic_file.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <fstream>
+#include <system_error>
+
+#include "ris/util/error.h"
+
+namespace ris {
+
+namespace fs = std::filesystem;
+
+namespace {
+// A name unique to this process and call, so concurrent writers never clash.
+std::string unique_suffix() {
+  static std::atomic<unsigned> counter{0};
+  return ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+}
+}  // namespace
+
+AtomicPath::AtomicPath(fs::path final_path) : final_(std::move(final_path)) {
+  fs::path parent = final_.parent_path();
+  if (!parent.empty() && !fs::is_directory(parent)) {
+    throw InputError(final_.string(), "", "the output folder " + parent.string() + " does not exist");
+  }
+  temp_ = final_;
+  temp_ += unique_suffix();
+  temp_ += final_.extension();
+}
+
+AtomicPath::~AtomicPath() {
+  if (!committed_) {
+    std::error_code ec;
+    fs::remove(temp_, ec);
+    fs::path aux = temp_;
+    aux += ".aux.xml";  // GDAL side-car files
+    fs::remove(aux, ec);
+  }
+}
+
+void AtomicPath::commit() {
+  std::error_code ec;
+  fs::rename(temp_, final_, ec);
+  if (ec) throw InputError(final_.string(), "", "cannot move the finished file into place: " + ec.message());
+  fs::path aux = temp_;
+  aux += ".aux.xml";
+  fs::remove(aux, ec);
+  committed_ = true;
+}
+
+void write_text_file_atomic(const fs::path& path, const std::string& text) {
+  AtomicPath out(path);
+  {
+    std::ofstream f(out.temp_path(), std::ios::binary);
+    if (!f) throw InputError(path.string(), "", "cannot open for writing");
+    f << text;
+    f.flush();
+    if (!f) throw InputError(path.string(), "", "write failed (disk full?)");
+  }
+  out.commit();
+}
+
+StagedDirectory::StagedDirectory(fs::path final_dir) : final_(std::move(final_dir)) {
+  if (final_.empty()) final_ = ".";
+  if (fs::exists(final_) && !fs::is_directory(final_)) {
+    throw InputError(final_.string(), "", "the output path exists and is not a folder");
+  }
+  fs::path parent = fs::absolute(final_).parent_path();
+  if (!fs::is_directory(parent)) {
+    throw InputError(final_.string(), "", "the parent folder " + parent.string() + " does not exist");
+  }
+  staging_ = fs::absolute(final_).lexically_normal();
+  if (staging_.filename().empty()) staging_ = staging_.parent_path();
+  staging_ = staging_.parent_path() / ("." + staging_.filename().string() + unique_suffix());
+  fs::create_directories(staging_);
+}
+
+StagedDirectory::~StagedDirectory() {
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
+}
+
+void StagedDirectory::commit() {
+  fs::create_directories(final_);
+  for (const auto& entry : fs::directory_iterator(staging_)) {
+    const fs::path name = entry.path().filename();
+    if (name.string().size() > 8 && name.extension() == ".xml" &&
+        name.string().find(".aux.xml") != std::string::npos) {
+      continue;  // GDAL statistics side-cars are not products
+    }
+    std::error_code ec;
+    fs::rename(entry.path(), final_ / name, ec);
+    if (ec) {
+      throw InputError(final_.string(), "", "cannot move " + name.string() + " into place: " + ec.message());
+    }
+  }
+  committed_ = true;
+}
+
+}  // namespace ris

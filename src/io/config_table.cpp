@@ -1,0 +1,173 @@
+#include "ris/io/config_table.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "ris/util/error.h"
+
+namespace ris {
+
+toml::table parse_toml_file(const std::string& path) {
+  try {
+    return toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    const auto& where = e.source().begin;
+    throw InputError(path, "",
+                     fmt::format("TOML syntax error at line {}, column {}: {}", where.line,
+                                 where.column, e.description()));
+  }
+}
+
+ConfigTable::ConfigTable(const toml::table& table, std::string file, std::string path)
+    : table_(&table), file_(std::move(file)), path_(std::move(path)) {}
+
+std::string ConfigTable::key_path(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+void ConfigTable::fail(const std::string& key, const std::string& what) const {
+  throw InputError(file_, key_path(key), what);
+}
+
+bool ConfigTable::has(const std::string& key) const { return table_->contains(key); }
+
+void ConfigTable::mark_used(const std::string& key) { used_.insert(key); }
+
+const toml::node* ConfigTable::raw(const std::string& key) {
+  used_.insert(key);
+  return table_->get(key);
+}
+
+const toml::node& ConfigTable::require(const std::string& key) {
+  used_.insert(key);
+  const toml::node* node = table_->get(key);
+  if (node == nullptr) fail(key, "missing required key");
+  return *node;
+}
+
+double ConfigTable::get_double(const std::string& key) {
+  const toml::node& node = require(key);
+  if (auto v = node.value<double>(); v && (node.is_floating_point() || node.is_integer())) {
+    return *v;
+  }
+  fail(key, "expected a number");
+}
+
+std::int64_t ConfigTable::get_int(const std::string& key) {
+  const toml::node& node = require(key);
+  if (auto v = node.as_integer()) return v->get();
+  fail(key, "expected an integer");
+}
+
+bool ConfigTable::get_bool(const std::string& key) {
+  const toml::node& node = require(key);
+  if (auto v = node.as_boolean()) return v->get();
+  fail(key, "expected true or false");
+}
+
+std::string ConfigTable::get_string(const std::string& key) {
+  const toml::node& node = require(key);
+  if (auto v = node.as_string()) return v->get();
+  fail(key, "expected a string");
+}
+
+namespace {
+double node_quantity(const toml::node& node, Quantity q, const ConfigTable& t,
+                     const std::string& key) {
+  if (node.is_integer() || node.is_floating_point()) {
+    return from_default_unit(*node.value<double>(), q);
+  }
+  if (auto s = node.as_string()) {
+    try {
+      return parse_quantity(s->get(), q);
+    } catch (const std::invalid_argument& e) {
+      t.fail(key, e.what());
+    }
+  }
+  t.fail(key, fmt::format("expected a number (in {}) or a string \"<number> <unit>\"",
+                          default_unit(q).empty() ? "no unit" : default_unit(q)));
+}
+}  // namespace
+
+double ConfigTable::get_quantity(const std::string& key, Quantity q) {
+  return node_quantity(require(key), q, *this, key);
+}
+
+std::vector<double> ConfigTable::get_double_array(const std::string& key) {
+  return get_quantity_array(key, Quantity::dimensionless);
+}
+
+std::vector<double> ConfigTable::get_quantity_array(const std::string& key, Quantity q) {
+  const toml::node& node = require(key);
+  const toml::array* arr = node.as_array();
+  if (arr == nullptr) fail(key, "expected an array");
+  std::vector<double> out;
+  out.reserve(arr->size());
+  for (const toml::node& element : *arr) out.push_back(node_quantity(element, q, *this, key));
+  return out;
+}
+
+double ConfigTable::get_double_or(const std::string& key, double fallback) {
+  return has(key) ? get_double(key) : fallback;
+}
+std::int64_t ConfigTable::get_int_or(const std::string& key, std::int64_t fallback) {
+  return has(key) ? get_int(key) : fallback;
+}
+bool ConfigTable::get_bool_or(const std::string& key, bool fallback) {
+  return has(key) ? get_bool(key) : fallback;
+}
+std::string ConfigTable::get_string_or(const std::string& key, const std::string& fallback) {
+  return has(key) ? get_string(key) : fallback;
+}
+double ConfigTable::get_quantity_or(const std::string& key, Quantity q, double fallback_si) {
+  return has(key) ? get_quantity(key, q) : fallback_si;
+}
+std::optional<double> ConfigTable::get_quantity_opt(const std::string& key, Quantity q) {
+  if (!has(key)) return std::nullopt;
+  return get_quantity(key, q);
+}
+std::optional<std::string> ConfigTable::get_string_opt(const std::string& key) {
+  if (!has(key)) return std::nullopt;
+  return get_string(key);
+}
+
+std::optional<ConfigTable> ConfigTable::subtable(const std::string& key) {
+  if (!has(key)) return std::nullopt;
+  const toml::node& node = require(key);
+  const toml::table* t = node.as_table();
+  if (t == nullptr) fail(key, "expected a table");
+  return ConfigTable(*t, file_, key_path(key));
+}
+
+std::vector<ConfigTable> ConfigTable::table_array(const std::string& key) {
+  std::vector<ConfigTable> out;
+  if (!has(key)) return out;
+  const toml::node& node = require(key);
+  const toml::array* arr = node.as_array();
+  if (arr == nullptr) fail(key, "expected an array of tables ([[" + key + "]])");
+  size_t index = 0;
+  for (const toml::node& element : *arr) {
+    const toml::table* t = element.as_table();
+    if (t == nullptr) fail(key, fmt::format("element {} is not a table", index));
+    out.emplace_back(*t, file_, fmt::format("{}[{}]", key_path(key), index));
+    ++index;
+  }
+  return out;
+}
+
+void ConfigTable::finish() const {
+  std::string unknown;
+  for (const auto& [k, v] : *table_) {
+    std::string name(k.str());
+    if (used_.count(name) == 0) {
+      if (!unknown.empty()) unknown += ", ";
+      unknown += key_path(name);
+    }
+  }
+  if (!unknown.empty()) {
+    throw InputError(file_, "", "unknown key(s): " + unknown + " (check the spelling)");
+  }
+}
+
+}  // namespace ris
