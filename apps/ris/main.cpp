@@ -1,7 +1,7 @@
 // ris: the radar image simulator command-line tool.
-#include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -28,8 +28,12 @@ std::string data_path(const std::string& relative) {
   return (base / relative).string();
 }
 
-std::string default_scene_path() { return data_path("scenes/ku-geometric.toml"); }
-std::string default_radar_path() { return data_path("radars/seed-fig4-5.toml"); }
+std::string default_scene_path() {
+  return data_path("scenes/ku-geometric.toml");
+}
+std::string default_radar_path() {
+  return data_path("radars/seed-fig4-5.toml");
+}
 
 }  // namespace ris::app
 

@@ -18,10 +18,14 @@ Polarisation parse_polarisation(std::string_view text) {
 
 std::string_view to_string(Polarisation p) {
   switch (p) {
-    case Polarisation::HH: return "HH";
-    case Polarisation::VV: return "VV";
-    case Polarisation::HV: return "HV";
-    case Polarisation::VH: return "VH";
+    case Polarisation::HH:
+      return "HH";
+    case Polarisation::VV:
+      return "VV";
+    case Polarisation::HV:
+      return "HV";
+    case Polarisation::VH:
+      return "VH";
   }
   return "?";
 }

@@ -10,7 +10,8 @@
 namespace ris {
 
 Sigma0Lut Sigma0Lut::build(const Sigma0Source& source, const RadarBand& band,
-                           std::span<const std::uint16_t> categories, const std::string& source_name) {
+                           std::span<const std::uint16_t> categories,
+                           const std::string& source_name) {
   Sigma0Lut lut;
   std::uint16_t max_category = 0;
   for (std::uint16_t c : categories) {
@@ -22,7 +23,8 @@ Sigma0Lut Sigma0Lut::build(const Sigma0Source& source, const RadarBand& band,
     if (!source.has_category(c)) {
       throw InputError(source_name, "",
                        fmt::format("no backscatter for category {} (the scene uses it; add it to "
-                                   "the backscatter file)", c));
+                                   "the backscatter file)",
+                                   c));
     }
     lut.offset_[c] = static_cast<std::int64_t>(lut.table_.size());
     for (int i = 0; i <= kSteps; ++i) {
@@ -31,7 +33,8 @@ Sigma0Lut Sigma0Lut::build(const Sigma0Source& source, const RadarBand& band,
       if (!std::isfinite(s0) || s0 < 0.0) {
         throw InputError(source_name, "",
                          fmt::format("category {} gives sigma0 = {} at {:.2f} deg; expected a "
-                                     "finite value >= 0", c, s0, rad_to_deg(theta)));
+                                     "finite value >= 0",
+                                     c, s0, rad_to_deg(theta)));
       }
       lut.table_.push_back(static_cast<float>(s0));
     }

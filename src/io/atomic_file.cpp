@@ -23,7 +23,8 @@ std::string unique_suffix() {
 AtomicPath::AtomicPath(fs::path final_path) : final_(std::move(final_path)) {
   fs::path parent = final_.parent_path();
   if (!parent.empty() && !fs::is_directory(parent)) {
-    throw InputError(final_.string(), "", "the output folder " + parent.string() + " does not exist");
+    throw InputError(final_.string(), "",
+                     "the output folder " + parent.string() + " does not exist");
   }
   temp_ = final_;
   temp_ += unique_suffix();
@@ -43,7 +44,9 @@ AtomicPath::~AtomicPath() {
 void AtomicPath::commit() {
   std::error_code ec;
   fs::rename(temp_, final_, ec);
-  if (ec) throw InputError(final_.string(), "", "cannot move the finished file into place: " + ec.message());
+  if (ec)
+    throw InputError(final_.string(), "",
+                     "cannot move the finished file into place: " + ec.message());
   fs::path aux = temp_;
   aux += ".aux.xml";
   fs::remove(aux, ec);
@@ -69,7 +72,8 @@ StagedDirectory::StagedDirectory(fs::path final_dir) : final_(std::move(final_di
   }
   fs::path parent = fs::absolute(final_).parent_path();
   if (!fs::is_directory(parent)) {
-    throw InputError(final_.string(), "", "the parent folder " + parent.string() + " does not exist");
+    throw InputError(final_.string(), "",
+                     "the parent folder " + parent.string() + " does not exist");
   }
   staging_ = fs::absolute(final_).lexically_normal();
   if (staging_.filename().empty()) staging_ = staging_.parent_path();
@@ -93,7 +97,8 @@ void StagedDirectory::commit() {
     std::error_code ec;
     fs::rename(entry.path(), final_ / name, ec);
     if (ec) {
-      throw InputError(final_.string(), "", "cannot move " + name.string() + " into place: " + ec.message());
+      throw InputError(final_.string(), "",
+                       "cannot move " + name.string() + " into place: " + ec.message());
     }
   }
   committed_ = true;

@@ -30,9 +30,13 @@ void ConfigTable::fail(const std::string& key, const std::string& what) const {
   throw InputError(file_, key_path(key), what);
 }
 
-bool ConfigTable::has(const std::string& key) const { return table_->contains(key); }
+bool ConfigTable::has(const std::string& key) const {
+  return table_->contains(key);
+}
 
-void ConfigTable::mark_used(const std::string& key) { used_.insert(key); }
+void ConfigTable::mark_used(const std::string& key) {
+  used_.insert(key);
+}
 
 const toml::node* ConfigTable::raw(const std::string& key) {
   used_.insert(key);

@@ -33,7 +33,8 @@ GdalDataset open_raster(const std::string& path) {
   ensure_gdal_registered();
   if (!std::filesystem::exists(path)) throw InputError(path, "", "no such file");
   CPLErrorReset();
-  GDALDatasetH ds = GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
+  GDALDatasetH ds =
+      GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
   if (ds == nullptr) {
     throw InputError(path, "", "not a readable raster (" + last_gdal_error() + ")");
   }

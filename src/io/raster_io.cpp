@@ -16,12 +16,18 @@ namespace {
 
 template <typename T>
 constexpr GDALDataType gdal_type() {
-  if constexpr (std::is_same_v<T, float>) return GDT_Float32;
-  else if constexpr (std::is_same_v<T, double>) return GDT_Float64;
-  else if constexpr (std::is_same_v<T, std::uint8_t>) return GDT_Byte;
-  else if constexpr (std::is_same_v<T, std::uint16_t>) return GDT_UInt16;
-  else if constexpr (std::is_same_v<T, std::int32_t>) return GDT_Int32;
-  else static_assert(sizeof(T) == 0, "unsupported raster sample type");
+  if constexpr (std::is_same_v<T, float>)
+    return GDT_Float32;
+  else if constexpr (std::is_same_v<T, double>)
+    return GDT_Float64;
+  else if constexpr (std::is_same_v<T, std::uint8_t>)
+    return GDT_Byte;
+  else if constexpr (std::is_same_v<T, std::uint16_t>)
+    return GDT_UInt16;
+  else if constexpr (std::is_same_v<T, std::int32_t>)
+    return GDT_Int32;
+  else
+    static_assert(sizeof(T) == 0, "unsupported raster sample type");
 }
 
 void apply_georef(GDALDatasetH ds, const Georef* georef) {
@@ -54,7 +60,8 @@ void write_geotiff_bands(const std::filesystem::path& path, const std::vector<Ba
   GDALDatasetH ds = GDALCreate(driver, out.temp_path().c_str(), cols, rows,
                                static_cast<int>(bands.size()), gdal_type<T>(), options);
   CSLDestroy(options);
-  if (ds == nullptr) throw InputError(path.string(), "", "cannot create GeoTIFF: " + last_gdal_error());
+  if (ds == nullptr)
+    throw InputError(path.string(), "", "cannot create GeoTIFF: " + last_gdal_error());
   GdalDataset owner(ds);
   apply_georef(ds, georef);
   apply_metadata(ds, metadata);
@@ -72,18 +79,19 @@ void write_geotiff_bands(const std::filesystem::path& path, const std::vector<Ba
 
 template <typename T>
 void write_geotiff(const std::filesystem::path& path, const T* data, int cols, int rows,
-                   const Georef* georef, std::optional<double> nodata, const RasterMetadata& metadata,
-                   const std::string& band_description) {
+                   const Georef* georef, std::optional<double> nodata,
+                   const RasterMetadata& metadata, const std::string& band_description) {
   write_geotiff_bands<T>(path, {BandView<T>{data, band_description}}, cols, rows, georef, nodata,
                          metadata);
 }
 
-#define RIS_INSTANTIATE_GEOTIFF(T)                                                              \
+#define RIS_INSTANTIATE_GEOTIFF(T)                                                                \
   template void write_geotiff<T>(const std::filesystem::path&, const T*, int, int, const Georef*, \
-                                 std::optional<double>, const RasterMetadata&, const std::string&); \
-  template void write_geotiff_bands<T>(const std::filesystem::path&, const std::vector<BandView<T>>&, \
-                                       int, int, const Georef*, std::optional<double>,            \
-                                       const RasterMetadata&);
+                                 std::optional<double>, const RasterMetadata&,                    \
+                                 const std::string&);                                             \
+  template void write_geotiff_bands<T>(const std::filesystem::path&,                              \
+                                       const std::vector<BandView<T>>&, int, int, const Georef*,  \
+                                       std::optional<double>, const RasterMetadata&);
 RIS_INSTANTIATE_GEOTIFF(float)
 RIS_INSTANTIATE_GEOTIFF(double)
 RIS_INSTANTIATE_GEOTIFF(std::uint8_t)
@@ -109,15 +117,16 @@ void write_png(const std::filesystem::path& path, const std::uint8_t* data, int 
     RIS_CHECK(err == CE_None);
   }
   AtomicPath out(path);
-  GDALDatasetH dst = GDALCreateCopy(png, out.temp_path().c_str(), handle(src), FALSE, nullptr,
-                                    nullptr, nullptr);
+  GDALDatasetH dst =
+      GDALCreateCopy(png, out.temp_path().c_str(), handle(src), FALSE, nullptr, nullptr, nullptr);
   if (dst == nullptr) throw InputError(path.string(), "", "cannot write PNG: " + last_gdal_error());
   GDALClose(dst);
   out.commit();
 }
 }  // namespace
 
-void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows) {
+void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols,
+                    int rows) {
   write_png(path, data, cols, rows, 1);
 }
 
@@ -140,8 +149,8 @@ RasterF64 read_raster_f64(const std::filesystem::path& path) {
       if (has) r.nodata = nd;
     }
     CPLErr err = GDALRasterIO(band, GF_Read, 0, 0, r.cols, r.rows,
-                              r.data.data() + static_cast<size_t>(b) * r.cols * r.rows, r.cols, r.rows,
-                              GDT_Float64, 0, 0);
+                              r.data.data() + static_cast<size_t>(b) * r.cols * r.rows, r.cols,
+                              r.rows, GDT_Float64, 0, 0);
     if (err != CE_None) throw InputError(path.string(), "", "read failed: " + last_gdal_error());
   }
   r.has_geotransform = GDALGetGeoTransform(handle(ds), r.georef.geotransform.data()) == CE_None;

@@ -24,9 +24,9 @@ void write_scene_geotiff(const Scene& scene, const std::filesystem::path& path) 
     category[i] = ok ? static_cast<float>(scene.category[i]) : nan;
   }
   Georef georef{scene.geotransform(), scene.crs_wkt};
-  write_geotiff_bands<float>(path, {{elevation.data(), "elevation_m"}, {category.data(), "category"}},
-                             scene.cols, scene.rows, &georef, static_cast<double>(nan),
-                             {{"RIS_SCENE", "1"}});
+  write_geotiff_bands<float>(
+      path, {{elevation.data(), "elevation_m"}, {category.data(), "category"}}, scene.cols,
+      scene.rows, &georef, static_cast<double>(nan), {{"RIS_SCENE", "1"}});
 }
 
 namespace {
@@ -83,7 +83,8 @@ void fill_categories(Scene& scene, const std::vector<float>& cat, const std::str
     if (c < 0.0f || c > static_cast<float>(kMaxCategory) || c != std::floor(c)) {
       throw InputError(path, "category",
                        fmt::format("category value {} at column {}, row {} is not an integer in "
-                                   "0..{}", c, i % scene.cols, i / scene.cols, kMaxCategory));
+                                   "0..{}",
+                                   c, i % scene.cols, i / scene.cols, kMaxCategory));
     }
     scene.category[i] = static_cast<std::uint16_t>(c);
   }
@@ -98,8 +99,9 @@ Scene read_scene(const std::filesystem::path& path,
   const Grid g = grid_of(handle(ds));
   check_scene_fits_in_memory(g.rows, g.cols, p, "");
   if (g.has_gt && (g.gt[2] != 0.0 || g.gt[4] != 0.0)) {
-    throw InputError(p, "", "rotated or sheared geotransforms are not supported; warp the raster "
-                            "to a north-up grid first (gdalwarp)");
+    throw InputError(p, "",
+                     "rotated or sheared geotransforms are not supported; warp the raster "
+                     "to a north-up grid first (gdalwarp)");
   }
 
   Scene scene;
@@ -111,8 +113,10 @@ Scene read_scene(const std::filesystem::path& path,
     scene.origin_y_m = g.gt[3];
     scene.dy_m = -g.gt[5];
     if (!(scene.dx_m > 0.0) || !(scene.dy_m > 0.0)) {
-      throw InputError(p, "", fmt::format("expected a north-up raster (positive pixel width, "
-                                          "negative pixel height), got {} x {}", g.gt[1], g.gt[5]));
+      throw InputError(p, "",
+                       fmt::format("expected a north-up raster (positive pixel width, "
+                                   "negative pixel height), got {} x {}",
+                                   g.gt[1], g.gt[5]));
     }
   } else {
     // No georeferencing: one unit per cell, origin so that the south-west
@@ -151,9 +155,10 @@ Scene read_scene(const std::filesystem::path& path,
       same = std::abs(cg.gt[k] - g.gt[k]) <= 1e-9 * std::max(1.0, std::abs(g.gt[k]));
     }
     if (!same) {
-      throw InputError(cp, "", fmt::format("the category raster ({} x {}) is not on the elevation "
-                                           "grid of {} ({} x {}, same geotransform required)",
-                                           cg.cols, cg.rows, p, g.cols, g.rows));
+      throw InputError(cp, "",
+                       fmt::format("the category raster ({} x {}) is not on the elevation "
+                                   "grid of {} ({} x {}, same geotransform required)",
+                                   cg.cols, cg.rows, p, g.cols, g.rows));
     }
     fill_categories(scene, read_band_nan(handle(cds), 1, cp), cp);
   }

@@ -28,7 +28,8 @@ void Scene::validate(const std::string& source) const {
     throw InputError(source, "", fmt::format("empty raster ({} columns x {} rows)", cols, rows));
   }
   if (!(dx_m > 0.0) || !(dy_m > 0.0) || !std::isfinite(dx_m) || !std::isfinite(dy_m)) {
-    throw InputError(source, "", fmt::format("cell size must be positive, got {} x {} m", dx_m, dy_m));
+    throw InputError(source, "",
+                     fmt::format("cell size must be positive, got {} x {} m", dx_m, dy_m));
   }
   RIS_CHECK(elevation_m.size() == size());
   RIS_CHECK(category.size() == size());
@@ -38,7 +39,9 @@ void Scene::validate(const std::string& source) const {
 void check_scene_fits_in_memory(std::int64_t rows, std::int64_t cols, const std::string& source,
                                 const std::string& key) {
   if (rows <= 0 || cols <= 0) {
-    throw InputError(source, key, fmt::format("grid size must be positive, got {} columns x {} rows", cols, rows));
+    throw InputError(
+        source, key,
+        fmt::format("grid size must be positive, got {} columns x {} rows", cols, rows));
   }
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long page_size = sysconf(_SC_PAGE_SIZE);

@@ -4,6 +4,8 @@
 
 namespace ris {
 
-double RadarParams::wavelength_m() const { return kSpeedOfLight_m_per_s / frequency_hz; }
+double RadarParams::wavelength_m() const {
+  return kSpeedOfLight_m_per_s / frequency_hz;
+}
 
 }  // namespace ris

@@ -55,13 +55,20 @@ std::string_view trim(std::string_view s) {
 
 std::string_view default_unit(Quantity q) {
   switch (q) {
-    case Quantity::length: return "m";
-    case Quantity::frequency: return "Hz";
-    case Quantity::time: return "s";
-    case Quantity::angle: return "deg";
-    case Quantity::power: return "W";
-    case Quantity::speed: return "m/s";
-    case Quantity::dimensionless: return "";
+    case Quantity::length:
+      return "m";
+    case Quantity::frequency:
+      return "Hz";
+    case Quantity::time:
+      return "s";
+    case Quantity::angle:
+      return "deg";
+    case Quantity::power:
+      return "W";
+    case Quantity::speed:
+      return "m/s";
+    case Quantity::dimensionless:
+      return "";
   }
   return "";
 }
@@ -98,8 +105,8 @@ double parse_quantity(std::string_view text, Quantity q) {
   for (const auto& u : kUnits) {
     if (u.quantity == q && u.name == unit) return value * u.to_si;
   }
-  throw std::invalid_argument("unknown unit \"" + std::string(unit) + "\" (accepted: " +
-                              accepted_units(q) + ")");
+  throw std::invalid_argument("unknown unit \"" + std::string(unit) +
+                              "\" (accepted: " + accepted_units(q) + ")");
 }
 
 }  // namespace ris

@@ -51,7 +51,7 @@ class Sigma0Lut {
 
  private:
   static constexpr float kInvStep = static_cast<float>(1.0 / kStepRad);
-  std::vector<float> table_;        // (kSteps + 1) samples per tabulated category
+  std::vector<float> table_;          // (kSteps + 1) samples per tabulated category
   std::vector<std::int64_t> offset_;  // by category id; -1 when absent
 };
 

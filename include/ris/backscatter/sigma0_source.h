@@ -26,7 +26,8 @@ class Sigma0Source {
   // incidence_rad in [0, pi/2]. Called only for categories with
   // has_category() true. May throw InputError (e.g. a band outside a model's
   // validity range).
-  virtual double sigma0(std::uint16_t category, double incidence_rad, const RadarBand& band) const = 0;
+  virtual double sigma0(std::uint16_t category, double incidence_rad,
+                        const RadarBand& band) const = 0;
 
   // A human-readable name for the category ("tall corn"), or its number.
   virtual std::string category_name(std::uint16_t category) const = 0;

@@ -20,7 +20,9 @@ struct GdalCloser {
 };
 using GdalDataset = std::unique_ptr<void, GdalCloser>;
 
-inline GDALDatasetH handle(const GdalDataset& ds) { return static_cast<GDALDatasetH>(ds.get()); }
+inline GDALDatasetH handle(const GdalDataset& ds) {
+  return static_cast<GDALDatasetH>(ds.get());
+}
 
 // Opens a raster for reading; throws InputError naming the file when it is
 // missing, unreadable or not a raster.

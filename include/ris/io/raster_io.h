@@ -50,7 +50,8 @@ void write_geotiff_bands(const std::filesystem::path& path, const std::vector<Ba
                          const RasterMetadata& metadata = {});
 
 // 8-bit greyscale PNG (0 black, 255 white).
-void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows);
+void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols,
+                    int rows);
 // 8-bit RGB PNG from interleaved r,g,b samples (cols*rows*3).
 void write_png_rgb(const std::filesystem::path& path, const std::uint8_t* rgb, int cols, int rows);
 

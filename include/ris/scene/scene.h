@@ -29,23 +29,26 @@ inline constexpr std::uint16_t kMaxCategory = 0xFFFE;
 struct Scene {
   int rows = 0;
   int cols = 0;
-  double dx_m = 1.0;  // cell size along x (east), metres
-  double dy_m = 1.0;  // cell size along y (north), metres
+  double dx_m = 1.0;        // cell size along x (east), metres
+  double dy_m = 1.0;        // cell size along y (north), metres
   double origin_x_m = 0.0;  // x of the grid's north-west corner
   double origin_y_m = 0.0;  // y of the grid's north-west corner
   std::string crs_wkt;      // empty when the scene has no CRS (a local frame)
 
-  std::vector<float> elevation_m;         // rows*cols, metres above the datum
-  std::vector<std::uint16_t> category;    // rows*cols, backscatter category id
-  std::vector<std::uint8_t> valid;        // rows*cols, 1 = data, 0 = no data
+  std::vector<float> elevation_m;       // rows*cols, metres above the datum
+  std::vector<std::uint16_t> category;  // rows*cols, backscatter category id
+  std::vector<std::uint8_t> valid;      // rows*cols, 1 = data, 0 = no data
 
   // A flat scene of one category, all cells valid, origin at (0, rows*dy) so
   // that the south-west corner is (0, 0).
   static Scene flat(int rows, int cols, double cell_m, float elevation_m, std::uint16_t category);
 
-  std::size_t size() const { return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols); }
+  std::size_t size() const {
+    return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+  }
   std::size_t index(int row, int col) const {
-    return static_cast<std::size_t>(row) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(col);
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(cols) +
+           static_cast<std::size_t>(col);
   }
   bool contains(int row, int col) const { return row >= 0 && row < rows && col >= 0 && col < cols; }
 

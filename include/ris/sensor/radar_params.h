@@ -24,8 +24,8 @@ enum class LookSide { right, left };
 struct ElevationPattern {
   enum class Kind { uniform, sinc2, gaussian, table };
   Kind kind = Kind::uniform;
-  double beamwidth_rad = 0.0;   // one-way 3 dB beamwidth (sinc2, gaussian)
-  double boresight_rad = 0.0;   // look angle from nadir of the beam centre
+  double beamwidth_rad = 0.0;          // one-way 3 dB beamwidth (sinc2, gaussian)
+  double boresight_rad = 0.0;          // look angle from nadir of the beam centre
   std::vector<double> table_look_rad;  // table: look angles from nadir, increasing
   std::vector<double> table_gain;      // table: one-way power gain, linear, relative
 };
@@ -48,9 +48,9 @@ struct TrackSpec {
 
 // The reference ("calibrator") cell of the seed's equation 15.
 struct ReferenceCell {
-  bool automatic = true;          // median pixel power maps to auto_greytone
+  bool automatic = true;  // median pixel power maps to auto_greytone
   double auto_greytone = 128.0;
-  double greytone = 128.0;        // G_ref
+  double greytone = 128.0;  // G_ref
   // Explicit reference: P_ref = P_T1 sigma0_1 dA_1 G_1^2 lambda_1^2 / ((4 pi)^3 R_1^4)
   double transmit_power_w = 0.0;  // P_T1
   double sigma0 = 0.0;            // sigma0_1 (linear)
@@ -86,21 +86,21 @@ struct GreytoneSwitches {
 enum class FadingLaw { exact_gamma, seed_eq21 };
 
 struct RadarParams {
-  std::string source_file;         // where it was read from
-  std::string name;                // free text
+  std::string source_file;  // where it was read from
+  std::string name;         // free text
 
   RadarMode mode = RadarMode::slar;
   double frequency_hz = 0.0;
   Polarisation polarisation = Polarisation::HH;
-  double pulse_width_s = 0.0;      // tau
-  double near_slant_range_m = 0.0; // c t_delay / 2
-  double far_slant_range_m = 0.0;  // near + c t_sweep / 2
-  double range_bin_m = 0.0;        // dr, default c tau / 2
-  int range_bins = 0;              // ceil((far - near) / dr)
+  double pulse_width_s = 0.0;          // tau
+  double near_slant_range_m = 0.0;     // c t_delay / 2
+  double far_slant_range_m = 0.0;      // near + c t_sweep / 2
+  double range_bin_m = 0.0;            // dr, default c tau / 2
+  int range_bins = 0;                  // ceil((far - near) / dr)
   double azimuth_beamwidth_rad = 0.0;  // phi
   ElevationPattern elevation_pattern;
-  double transmit_power_w = 0.0;   // P_t
-  double peak_gain = 1.0;          // boresight one-way gain (linear), scales G_e
+  double transmit_power_w = 0.0;  // P_t
+  double peak_gain = 1.0;         // boresight one-way gain (linear), scales G_e
 
   TrackSpec track;
   double speed_m_per_s = 0.0;

@@ -31,7 +31,7 @@ class InputError : public std::runtime_error {
 }  // namespace ris
 
 // An internal invariant: failure is a bug in ris, never a user error.
-#define RIS_CHECK(cond)                                        \
-  do {                                                         \
+#define RIS_CHECK(cond)                                          \
+  do {                                                           \
     if (!(cond)) ::ris::check_failed(#cond, __FILE__, __LINE__); \
   } while (0)

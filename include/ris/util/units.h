@@ -36,7 +36,11 @@ constexpr double kFeetToMetres = 0.3048;
 constexpr double kSpeedOfLight_m_per_s = 299792458.0;
 constexpr double kPi = 3.14159265358979323846;
 
-constexpr double deg_to_rad(double deg) { return deg * kPi / 180.0; }
-constexpr double rad_to_deg(double rad) { return rad * 180.0 / kPi; }
+constexpr double deg_to_rad(double deg) {
+  return deg * kPi / 180.0;
+}
+constexpr double rad_to_deg(double rad) {
+  return rad * 180.0 / kPi;
+}
 
 }  // namespace ris
