@@ -1,0 +1,98 @@
+// The SLAR geometry stage: the terrain sampled along zero-Doppler lines, with
+// per sample slant range, incidence, local incidence, true facet area, cast
+// shadow, back-facing and layover (MODEL.md section 2).
+//
+// Azimuth line k lies at along-track position s_k = (k + 1/2) * line_spacing
+// from the track start; sample j of every line at cross-track ground distance
+// u_j = first_sample_u_m + j * sample_step_m. Two samplers, chosen once per
+// run:
+//   - direct: the track runs along a grid axis; each sample is one scene cell
+//     (its centre's u, its elevation and category), the line taking the
+//     nearest row (or column) of cells; sample_step_m is the cell size across
+//     track.
+//   - bilinear: any other heading; elevation and slope are interpolated
+//     bilinearly, the category is the nearest cell's, at a step of half the
+//     smaller cell size. A sample touching a no-data cell is no data.
+// The slope comes from ris/geometry/surface_gradient.h (central differences).
+//
+// The result is plain data (line-major arrays of lines x samples), so image
+// formation, speckle and greytone can be re-run on it without recomputing it.
+//
+// Example:
+//   ris::Track track = ris::resolve_track(radar.track, scene, radar.source_file);
+//   ris::SlarGeometry g = ris::compute_slar_geometry(scene, track, 0.0, radar.source_file);
+//   float r_m = g.slant_range_m[g.index(line, sample)];
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ris/scene/scene.h"
+#include "ris/sensor/track.h"
+
+namespace ris {
+
+// Per-sample flags (bit values).
+namespace sample_flag {
+inline constexpr std::uint8_t kNoData = 1;      // the scene has no data here (NaN / no-data cell)
+inline constexpr std::uint8_t kUnseen = 2;      // outside the scene, or not in front (u <= 0)
+inline constexpr std::uint8_t kShadow = 4;      // cast shadow: max_{u'<u} t(u') > t(u)
+inline constexpr std::uint8_t kBackFacing = 8;  // cos(local incidence) <= 0
+inline constexpr std::uint8_t kLayover = 16;    // in the SNAP two-scan layover zone
+}  // namespace sample_flag
+
+struct SlarGeometry {
+  Track track;
+  double altitude_m = 0.0;  // H
+  bool direct_sampling = false;
+
+  int lines = 0;
+  int samples = 0;  // per line
+  double line_spacing_m = 0.0;
+  double sample_step_m = 0.0;
+  double first_sample_u_m = 0.0;
+
+  // Per sample, index(line, sample); NaN (or 0 for integers) where unseen or
+  // no data, except flags.
+  std::vector<float> height_m;             // h above the datum
+  std::vector<float> slant_range_m;        // R = sqrt(u^2 + (H - h)^2)
+  std::vector<float> incidence_rad;        // flat-earth incidence = look angle from nadir
+  std::vector<float> local_incidence_rad;  // acos(n . l); > pi/2 when back-facing
+  std::vector<float> area_m2;              // true (tilted) area of the element
+  // Signed slant-range extent of the element along the line, dR/du * step
+  // (negative where R decreases with u: layover).
+  std::vector<float> range_extent_m;
+  std::vector<std::uint16_t> category;
+  std::vector<std::uint8_t> flags;
+
+  // Counts over all samples.
+  std::int64_t nodata_samples = 0;  // samples inside the scene on no-data cells
+  std::int64_t shadow_samples = 0;
+  std::int64_t back_facing_samples = 0;
+  std::int64_t layover_samples = 0;
+  std::int64_t nodata_cells = 0;  // scene cells without data
+
+  std::size_t index(int line, int sample) const {
+    return static_cast<std::size_t>(line) * static_cast<std::size_t>(samples) +
+           static_cast<std::size_t>(sample);
+  }
+  double line_s_m(int line) const { return (line + 0.5) * line_spacing_m; }
+  double sample_u_m(int sample) const { return first_sample_u_m + sample * sample_step_m; }
+};
+
+// Whether a sample takes part in image formation (seen, has data, lit, facing).
+inline bool sample_visible(std::uint8_t flags) {
+  return (flags & (sample_flag::kNoData | sample_flag::kUnseen | sample_flag::kShadow |
+                   sample_flag::kBackFacing)) == 0;
+}
+
+// Computes the geometry. line_spacing_m <= 0 means one scene cell (the cell
+// size along the track's nearer grid axis). Throws InputError naming
+// radar_file and key "altitude" when valid terrain reaches the sensor
+// altitude.
+SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, double line_spacing_m,
+                                   const std::string& radar_file);
+
+}  // namespace ris
