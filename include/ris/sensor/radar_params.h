@@ -47,6 +47,11 @@ struct TrackSpec {
 };
 
 // The reference ("calibrator") cell of the seed's equation 15.
+//
+// After load_radar() every factor below holds a value: keys the file leaves
+// out default to this radar's own values at mid-swath over flat ground
+// (docs/radar-format.md), so a switched-off term of equation 15 always has a
+// reference value to take.
 struct ReferenceCell {
   bool automatic = true;  // median pixel power maps to auto_greytone
   double auto_greytone = 128.0;
@@ -58,6 +63,14 @@ struct ReferenceCell {
   double gain = 1.0;              // G_1 (one-way, linear)
   double wavelength_m = 0.0;      // lambda_1
   double range_m = 0.0;           // R_1
+  // Added (backward compatible): P_ref given directly instead of through the
+  // factors above (the factors still serve switched-off terms).
+  std::optional<double> mean_power_w;
+  // Added: sigma0_1 given as a category at a local incidence angle; the
+  // simulation evaluates it through its Sigma0Lut (include this category when
+  // building the LUT) and stores the value in `sigma0`.
+  std::optional<std::uint16_t> sigma0_category;
+  double sigma0_incidence_rad = 0.0;
 };
 
 // Film and receiver constants of equation 15 for the simulated (2) and
@@ -96,16 +109,17 @@ struct RadarParams {
   double near_slant_range_m = 0.0;     // c t_delay / 2
   double far_slant_range_m = 0.0;      // near + c t_sweep / 2
   double range_bin_m = 0.0;            // dr, default c tau / 2
-  int range_bins = 0;                  // ceil((far - near) / dr)
+  int range_bins = 0;                  // floor((far - near) / dr): whole bins only
   double azimuth_beamwidth_rad = 0.0;  // phi
   ElevationPattern elevation_pattern;
   double transmit_power_w = 0.0;  // P_t
   double peak_gain = 1.0;         // boresight one-way gain (linear), scales G_e
 
   TrackSpec track;
-  double speed_m_per_s = 0.0;
-  double prf_hz = 0.0;
+  double speed_m_per_s = 0.0;                 // 0: not given (used only for reporting)
+  double prf_hz = 0.0;                        // 0: not given (used only for reporting)
   std::optional<double> independent_samples;  // nullopt: the seed's equation 16
+                                              // (ris/sensor/radar_derived.h)
   double azimuth_line_spacing_m = 0.0;        // 0: one scene cell
 
   ReferenceCell reference;

@@ -1,0 +1,407 @@
+#include "ris/sensor/radar_config.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "ris/io/config_table.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+
+namespace ris {
+
+namespace {
+
+// A value that must be strictly positive and finite.
+double positive(ConfigTable& t, const std::string& key, double v, const std::string& unit) {
+  if (!(v > 0.0) || !std::isfinite(v)) {
+    t.fail(key, fmt::format("expected a positive value, got {} {}", v, unit));
+  }
+  return v;
+}
+
+double get_positive(ConfigTable& t, const std::string& key, Quantity q, const std::string& unit) {
+  return positive(t, key, t.get_quantity(key, q), unit);
+}
+
+// At most one of the keys may be present; returns which one (or "").
+std::string one_of(ConfigTable& t, std::initializer_list<const char*> keys, bool required) {
+  std::string found;
+  std::string all;
+  for (const char* k : keys) {
+    if (!all.empty()) all += ", ";
+    all += k;
+    if (!t.has(k)) continue;
+    if (!found.empty()) {
+      t.fail(k, fmt::format("give only one of {} (both {} and {} are set)", all, found, k));
+    }
+    found = k;
+  }
+  if (required && found.empty()) {
+    throw InputError(t.file(), t.key_path(*keys.begin()),
+                     fmt::format("missing: give one of {}", all));
+  }
+  return found;
+}
+
+// A number that may be written in dB ("<key>_db") or linearly ("<key>").
+std::optional<double> linear_or_db(ConfigTable& t, const std::string& key) {
+  const std::string db_key = key + "_db";
+  const std::string which = one_of(t, {key.c_str(), db_key.c_str()}, false);
+  if (which.empty()) return std::nullopt;
+  if (which == key) return positive(t, key, t.get_double(key), "");
+  const double db = t.get_double(db_key);
+  if (!std::isfinite(db)) t.fail(db_key, "expected a finite number of dB");
+  return std::pow(10.0, db / 10.0);
+}
+
+// An area: a bare number in m^2, or "<number> m2" / "<number> ft2".
+double get_area_m2(ConfigTable& t, const std::string& key) {
+  const toml::node* node = t.raw(key);
+  if (node->is_integer() || node->is_floating_point()) {
+    return positive(t, key, *node->value<double>(), "m2");
+  }
+  if (auto s = node->as_string()) {
+    const std::string text = s->get();
+    for (const auto& [unit, scale] :
+         {std::pair{"m2", 1.0}, {"ft2", kFeetToMetres * kFeetToMetres}}) {
+      const std::string u(unit);
+      if (text.size() > u.size() && text.compare(text.size() - u.size(), u.size(), u) == 0) {
+        try {
+          const double v =
+              parse_quantity(text.substr(0, text.size() - u.size()), Quantity::dimensionless);
+          return positive(t, key, v * scale, "m2");
+        } catch (const std::invalid_argument& e) {
+          t.fail(key, e.what());
+        }
+      }
+    }
+  }
+  t.fail(key, "expected an area: a number (m2) or \"<number> m2\" / \"<number> ft2\"");
+}
+
+void parse_track(ConfigTable& t, TrackSpec& spec) {
+  spec.altitude_m = get_positive(t, "altitude", Quantity::length, "m");
+  const std::string look = t.get_string_or("look_side", "right");
+  if (look == "right") {
+    spec.look_side = LookSide::right;
+  } else if (look == "left") {
+    spec.look_side = LookSide::left;
+  } else {
+    t.fail("look_side", fmt::format("expected \"right\" or \"left\", got \"{}\"", look));
+  }
+  const bool endpoints = t.has("start") || t.has("end");
+  const bool heading = t.has("heading") || t.has("near_edge_distance");
+  if (endpoints && heading) {
+    t.fail("start",
+           "give either start and end, or heading and near_edge_distance, not both kinds of track");
+  }
+  if (endpoints) {
+    spec.kind = TrackSpec::Kind::endpoints;
+    auto point = [&](const char* key) {
+      std::vector<double> p = t.get_quantity_array(key, Quantity::length);
+      if (p.size() != 2) t.fail(key, fmt::format("expected [x, y] (2 values), got {}", p.size()));
+      return p;
+    };
+    const auto a = point("start");
+    const auto b = point("end");
+    spec.start_x_m = a[0];
+    spec.start_y_m = a[1];
+    spec.end_x_m = b[0];
+    spec.end_y_m = b[1];
+    if (a == b) t.fail("end", "track start and end coincide");
+  } else {
+    spec.kind = TrackSpec::Kind::heading_near_edge;
+    spec.heading_rad = t.get_quantity_or("heading", Quantity::angle, 0.0);
+    if (!std::isfinite(spec.heading_rad)) t.fail("heading", "expected a finite angle");
+    spec.near_edge_ground_m = t.get_quantity("near_edge_distance", Quantity::length);
+    if (!(spec.near_edge_ground_m >= 0.0)) {
+      t.fail("near_edge_distance",
+             fmt::format("expected a ground distance >= 0, got {} m", spec.near_edge_ground_m));
+    }
+  }
+  t.finish();
+}
+
+void parse_pattern(ConfigTable& t, ElevationPattern& p, double default_boresight_rad) {
+  const std::string shape = t.get_string_or("shape", "uniform");
+  if (shape == "uniform") {
+    p.kind = ElevationPattern::Kind::uniform;
+  } else if (shape == "sinc2") {
+    p.kind = ElevationPattern::Kind::sinc2;
+  } else if (shape == "gaussian") {
+    p.kind = ElevationPattern::Kind::gaussian;
+  } else if (shape == "table") {
+    p.kind = ElevationPattern::Kind::table;
+  } else {
+    t.fail("shape",
+           fmt::format("expected \"uniform\", \"sinc2\", \"gaussian\" or \"table\", got \"{}\"",
+                       shape));
+  }
+  if (p.kind == ElevationPattern::Kind::sinc2 || p.kind == ElevationPattern::Kind::gaussian) {
+    p.beamwidth_rad = get_positive(t, "beamwidth", Quantity::angle, "rad");
+    if (p.beamwidth_rad >= kPi) t.fail("beamwidth", "expected a beamwidth below 180 deg");
+    p.boresight_rad = t.get_quantity_or("boresight", Quantity::angle, default_boresight_rad);
+    if (!(p.boresight_rad >= 0.0 && p.boresight_rad <= kPi / 2)) {
+      t.fail("boresight", "expected a look angle from nadir between 0 and 90 deg");
+    }
+  }
+  if (p.kind == ElevationPattern::Kind::table) {
+    p.table_look_rad = t.get_quantity_array("look_angles", Quantity::angle);
+    const std::string which = one_of(t, {"gain", "gain_db"}, true);
+    p.table_gain = t.get_double_array(which);
+    if (which == "gain_db") {
+      for (double& g : p.table_gain) g = std::pow(10.0, g / 10.0);
+    }
+    if (p.table_look_rad.size() < 2) t.fail("look_angles", "expected at least 2 angles");
+    if (p.table_gain.size() != p.table_look_rad.size()) {
+      t.fail(which, fmt::format("expected {} values (one per look angle), got {}",
+                                p.table_look_rad.size(), p.table_gain.size()));
+    }
+    for (size_t i = 1; i < p.table_look_rad.size(); ++i) {
+      if (!(p.table_look_rad[i] > p.table_look_rad[i - 1])) {
+        t.fail("look_angles", fmt::format("angles must increase (entry {} does not)", i));
+      }
+    }
+    for (double g : p.table_gain) {
+      if (!(g >= 0.0) || !std::isfinite(g)) t.fail(which, "expected gains >= 0");
+    }
+  }
+  t.finish();
+}
+
+void parse_film(ConfigTable& t, FilmParams& f, GreytoneSwitches& sw, FadingLaw& law) {
+  f.density_range =
+      positive(t, "density_range", t.get_double_or("density_range", f.density_range), "");
+  f.gamma = positive(t, "gamma", t.get_double_or("gamma", f.gamma), "");
+  f.k1 = positive(t, "k_reference", t.get_double_or("k_reference", f.k1), "");
+  f.k2 = positive(t, "k_simulated", t.get_double_or("k_simulated", f.k2), "");
+  f.m1 = positive(t, "m_reference", t.get_double_or("m_reference", f.m1), "");
+  f.m2 = positive(t, "m_simulated", t.get_double_or("m_simulated", f.m2), "");
+  const std::string fading = t.get_string_or("fading", "exact");
+  if (fading == "exact") {
+    law = FadingLaw::exact_gamma;
+  } else if (fading == "seed") {
+    law = FadingLaw::seed_eq21;
+  } else {
+    t.fail("fading", fmt::format("expected \"exact\" or \"seed\", got \"{}\"", fading));
+  }
+  if (auto terms = t.subtable("terms")) {
+    sw.transmit_power = terms->get_bool_or("transmit_power", true);
+    sw.wavelength = terms->get_bool_or("wavelength", true);
+    sw.antenna_gain = terms->get_bool_or("antenna_gain", true);
+    sw.backscatter = terms->get_bool_or("backscatter", true);
+    sw.area = terms->get_bool_or("area", true);
+    sw.range = terms->get_bool_or("range", true);
+    sw.film_k = terms->get_bool_or("k", true);
+    sw.receiver_m = terms->get_bool_or("m", true);
+    sw.fading = terms->get_bool_or("fading", true);
+    terms->finish();
+  }
+  t.finish();
+}
+
+// Fills the reference cell; factors not given take this radar's own values at
+// mid-swath over flat ground (so that their ratio is one when switched off).
+void parse_reference(std::optional<ConfigTable>& t, const RadarParams& r, ReferenceCell& ref) {
+  const double h_m = r.track.altitude_m;
+  const double mid_r_m = 0.5 * (r.near_slant_range_m + r.far_slant_range_m);
+  const double cos_theta = std::min(1.0, h_m / mid_r_m);
+  const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+  // Defaults: transmit power, wavelength and boresight gain of this radar; the
+  // mid-swath slant range; the flat-ground resolution cell there,
+  // dA = (R phi) (dr / sin theta) (seed equation 2 with theta_A = theta_c = 0).
+  ref.transmit_power_w = r.transmit_power_w;
+  ref.wavelength_m = r.wavelength_m();
+  ref.gain = r.peak_gain;
+  ref.range_m = mid_r_m;
+  ref.area_m2 = mid_r_m * r.azimuth_beamwidth_rad * r.range_bin_m / std::max(sin_theta, 1e-6);
+  ref.sigma0 = 1.0;
+  ref.automatic = true;
+  ref.greytone = ref.auto_greytone = 128.0;
+  if (!t) return;
+
+  ref.automatic = t->get_bool_or("auto", true);
+  ref.greytone = t->get_double_or("greytone", 128.0);
+  if (!(ref.greytone >= 0.0 && ref.greytone <= 255.0)) {
+    t->fail("greytone", fmt::format("expected a greytone in [0, 255], got {}", ref.greytone));
+  }
+  ref.auto_greytone = ref.greytone;
+  if (t->has("mean_power")) {
+    ref.mean_power_w = get_positive(*t, "mean_power", Quantity::power, "W");
+  }
+  if (t->has("transmit_power")) {
+    ref.transmit_power_w = get_positive(*t, "transmit_power", Quantity::power, "W");
+  }
+  const std::string s0 = one_of(*t, {"sigma0", "sigma0_db", "category"}, false);
+  if (s0 == "category") {
+    const std::int64_t c = t->get_int("category");
+    if (c < 0 || c > 0xFFFE) t->fail("category", "expected a category id in 0..65534");
+    ref.sigma0_category = static_cast<std::uint16_t>(c);
+    ref.sigma0_incidence_rad = t->get_quantity("incidence", Quantity::angle);
+    if (!(ref.sigma0_incidence_rad >= 0.0 && ref.sigma0_incidence_rad <= kPi / 2)) {
+      t->fail("incidence", "expected a local incidence angle between 0 and 90 deg");
+    }
+  } else if (!s0.empty()) {
+    ref.sigma0 = *linear_or_db(*t, "sigma0");
+  } else if (t->has("incidence")) {
+    t->fail("incidence", "incidence is used only with category");
+  }
+  if (t->has("area")) ref.area_m2 = get_area_m2(*t, "area");
+  if (auto g = linear_or_db(*t, "gain")) ref.gain = *g;
+  const std::string wl = one_of(*t, {"wavelength", "frequency"}, false);
+  if (wl == "wavelength") ref.wavelength_m = get_positive(*t, "wavelength", Quantity::length, "m");
+  if (wl == "frequency") {
+    ref.wavelength_m =
+        kSpeedOfLight_m_per_s / get_positive(*t, "frequency", Quantity::frequency, "Hz");
+  }
+  if (t->has("range")) ref.range_m = get_positive(*t, "range", Quantity::length, "m");
+  if (!ref.automatic && !ref.mean_power_w && s0.empty()) {
+    t->fail("sigma0",
+            "an explicit reference (auto = false) needs mean_power, or sigma0 / sigma0_db / "
+            "category + incidence");
+  }
+  if (ref.automatic && ref.mean_power_w) {
+    t->fail("mean_power", "mean_power is an explicit reference: set auto = false");
+  }
+  t->finish();
+}
+
+}  // namespace
+
+RadarParams radar_from_toml(const toml::table& doc, const std::string& source_file) {
+  ConfigTable t(doc, source_file, "");
+  RadarParams r;
+  r.source_file = source_file;
+  r.name = t.get_string_or("name", "");
+
+  const std::string mode = t.get_string("mode");
+  if (mode != "slar") t.fail("mode", fmt::format("expected \"slar\", got \"{}\"", mode));
+  r.mode = RadarMode::slar;
+
+  r.frequency_hz = get_positive(t, "frequency", Quantity::frequency, "Hz");
+  try {
+    r.polarisation = parse_polarisation(t.get_string("polarisation"));
+  } catch (const std::invalid_argument& e) {
+    t.fail("polarisation", e.what());
+  }
+  r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
+  r.range_bin_m = t.get_quantity_or("range_bin", Quantity::length,
+                                    kSpeedOfLight_m_per_s * r.pulse_width_s / 2.0);
+  positive(t, "range_bin", r.range_bin_m, "m");
+
+  // Near range: R_near = c t_delay / 2 (MODEL.md section 2), or given.
+  if (one_of(t, {"sweep_delay", "near_range"}, true) == "sweep_delay") {
+    r.near_slant_range_m =
+        kSpeedOfLight_m_per_s * get_positive(t, "sweep_delay", Quantity::time, "s") / 2.0;
+  } else {
+    r.near_slant_range_m = get_positive(t, "near_range", Quantity::length, "m");
+  }
+  // Far range: R_far = R_near + c t_sweep / 2, or given, or a number of bins.
+  const std::string far_key = one_of(t, {"sweep_length", "far_range", "range_bins"}, true);
+  if (far_key == "range_bins") {
+    const std::int64_t n = t.get_int("range_bins");
+    if (n < 1 || n > 1000000) {
+      t.fail("range_bins", fmt::format("expected 1 to 1000000 range bins, got {}", n));
+    }
+    r.range_bins = static_cast<int>(n);
+    r.far_slant_range_m = r.near_slant_range_m + static_cast<double>(n) * r.range_bin_m;
+  } else {
+    if (far_key == "sweep_length") {
+      r.far_slant_range_m =
+          r.near_slant_range_m +
+          kSpeedOfLight_m_per_s * t.get_quantity("sweep_length", Quantity::time) / 2.0;
+    } else {
+      r.far_slant_range_m = t.get_quantity("far_range", Quantity::length);
+    }
+    if (!(r.far_slant_range_m > r.near_slant_range_m)) {
+      t.fail(far_key, fmt::format("near range ({:.1f} m) is beyond far range ({:.1f} m)",
+                                  r.near_slant_range_m, r.far_slant_range_m));
+    }
+    // Whole bins only, as the seed's GROUND(13) = RADAR(7) / RADAR(8); the
+    // 1e-9 guards against a sweep that is an exact multiple of the bin.
+    const double bins =
+        std::floor((r.far_slant_range_m - r.near_slant_range_m) / r.range_bin_m + 1e-9);
+    if (bins < 1.0) {
+      t.fail(far_key, fmt::format("the swath ({:.1f} m of slant range) is shorter than one range "
+                                  "bin ({:.1f} m)",
+                                  r.far_slant_range_m - r.near_slant_range_m, r.range_bin_m));
+    }
+    if (bins > 1e6) t.fail(far_key, "more than 1000000 range bins");
+    r.range_bins = static_cast<int>(bins);
+  }
+
+  r.azimuth_beamwidth_rad = get_positive(t, "azimuth_beamwidth", Quantity::angle, "rad");
+  if (r.azimuth_beamwidth_rad >= kPi) {
+    t.fail("azimuth_beamwidth", "expected a beamwidth below 180 deg");
+  }
+  r.transmit_power_w = positive(t, "transmit_power",
+                                t.get_quantity_or("transmit_power", Quantity::power, 1000.0), "W");
+  const double gain_db = t.get_double_or("antenna_gain_db", 0.0);
+  if (!std::isfinite(gain_db)) t.fail("antenna_gain_db", "expected a finite number of dB");
+  r.peak_gain = std::pow(10.0, gain_db / 10.0);
+
+  // Track (with altitude and look side).
+  {
+    auto track = t.subtable("track");
+    if (!track) t.fail("track", "missing required table [track]");
+    parse_track(*track, r.track);
+  }
+  const double h_m = r.track.altitude_m;
+  if (r.near_slant_range_m < h_m) {
+    t.fail(t.has("sweep_delay") ? "sweep_delay" : "near_range",
+           fmt::format("near slant range {:.1f} m is shorter than the altitude {:.1f} m: the sweep "
+                       "would start before the ground return",
+                       r.near_slant_range_m, h_m));
+  }
+
+  if (t.has("speed")) r.speed_m_per_s = get_positive(t, "speed", Quantity::speed, "m/s");
+  if (t.has("prf")) r.prf_hz = get_positive(t, "prf", Quantity::frequency, "Hz");
+  if (t.has("azimuth_line_spacing")) {
+    r.azimuth_line_spacing_m = get_positive(t, "azimuth_line_spacing", Quantity::length, "m");
+  }
+  if (t.has("independent_samples")) {
+    const toml::node* n = t.raw("independent_samples");
+    if (auto s = n->as_string()) {
+      if (s->get() != "seed") {
+        t.fail(
+            "independent_samples",
+            fmt::format("expected \"seed\" (equation 16) or a number >= 1, got \"{}\"", s->get()));
+      }
+    } else if (n->is_integer() || n->is_floating_point()) {
+      const double v = *n->value<double>();
+      if (!(v >= 1.0) || !std::isfinite(v)) {
+        t.fail("independent_samples", fmt::format("expected a number >= 1, got {}", v));
+      }
+      r.independent_samples = v;
+    } else {
+      t.fail("independent_samples", "expected \"seed\" or a number >= 1");
+    }
+  }
+
+  // Elevation pattern; the default boresight points at mid-swath (flat ground).
+  {
+    const double mid_r_m = 0.5 * (r.near_slant_range_m + r.far_slant_range_m);
+    const double mid_look_rad = std::acos(std::min(1.0, h_m / mid_r_m));
+    if (auto p = t.subtable("elevation_pattern")) {
+      parse_pattern(*p, r.elevation_pattern, mid_look_rad);
+    } else {
+      r.elevation_pattern.boresight_rad = mid_look_rad;
+    }
+  }
+
+  auto ref = t.subtable("reference");
+  parse_reference(ref, r, r.reference);
+  if (auto film = t.subtable("film")) parse_film(*film, r.film, r.switches, r.fading);
+  t.finish();
+  return r;
+}
+
+RadarParams load_radar(const std::string& path) {
+  const toml::table doc = parse_toml_file(path);
+  return radar_from_toml(doc, path);
+}
+
+}  // namespace ris
