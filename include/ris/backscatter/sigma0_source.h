@@ -7,7 +7,9 @@
 // table, never a virtual function.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,21 @@ class Sigma0Source {
 
   // Where the values come from, for metadata ("table data/backscatter/x.csv").
   virtual std::string description() const = 0;
+
+  // Added for the category libraries (backward compatible: defaults below).
+  // Every category the source defines, ascending; empty when the source
+  // cannot list them.
+  virtual std::vector<std::uint16_t> category_ids() const { return {}; }
+  // Display colour (R, G, B) of a category for legends and category maps, or
+  // nullopt when the source gives none.
+  virtual std::optional<std::array<std::uint8_t, 3>> category_colour(std::uint16_t) const {
+    return std::nullopt;
+  }
+  // The model or table behind a category at a band, one line ("water_cloud
+  // A = ... over oh1992 ..."), for metadata. Default: description().
+  virtual std::string category_model(std::uint16_t, const RadarBand&) const {
+    return description();
+  }
 };
 
 }  // namespace ris

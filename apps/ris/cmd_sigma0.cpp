@@ -1,0 +1,261 @@
+// ris sigma0: evaluate backscatter models and category libraries.
+//
+//   ris sigma0 --library data/backscatter/ku-geometric.toml --category 4,5
+//              --frequency "8.6 GHz" --pol HH,VV --angles 0:90:10
+//   ris sigma0 --model 'name = "oh1992", rms_height = "1 cm", permittivity = "15 - 4j"'
+//              --frequency "5.405 GHz" --pol HH,VV,HV --angles 30 --format json
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+#include "command_registry.h"
+#include "ris/backscatter/backscatter_model.h"
+#include "ris/backscatter/library.h"
+#include "ris/io/atomic_file.h"
+#include "ris/io/config_table.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+
+namespace {
+
+using ris::InputError;
+
+// Values below this are written as this (a table file needs finite numbers;
+// sigma0 is exactly 0 at grazing incidence for most models).
+constexpr double kFloorDb = -100.0;
+
+struct Options {
+  std::string library;
+  std::string categories = "all";
+  std::string model;
+  std::string frequency = "8.6 GHz";
+  std::string polarisations = "HH,VV";
+  std::string angles = "0:90:5";
+  std::string format = "table";
+  bool allow_extrapolation = false;
+};
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(s);
+  while (std::getline(in, item, sep)) {
+    const auto a = item.find_first_not_of(" \t");
+    const auto b = item.find_last_not_of(" \t");
+    if (a != std::string::npos) out.push_back(item.substr(a, b - a + 1));
+  }
+  return out;
+}
+
+double parse_double(const std::string& text, const std::string& option) {
+  try {
+    size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument("");
+    return v;
+  } catch (const std::exception&) {
+    throw InputError("", option, "expected a number, got \"" + text + "\"");
+  }
+}
+
+// "0:90:5" (inclusive) or "10,20,30", in degrees.
+std::vector<double> parse_angles_deg(const std::string& text) {
+  std::vector<double> out;
+  if (text.find(':') != std::string::npos) {
+    const auto parts = split(text, ':');
+    if (parts.size() != 3) throw InputError("", "--angles", "expected start:stop:step in degrees");
+    const double a = parse_double(parts[0], "--angles");
+    const double b = parse_double(parts[1], "--angles");
+    const double step = parse_double(parts[2], "--angles");
+    if (!(step > 0.0) || b < a) {
+      throw InputError("", "--angles", "expected start <= stop and step > 0");
+    }
+    const auto n = static_cast<long>(std::floor((b - a) / step + 1e-9));
+    for (long i = 0; i <= n; ++i) out.push_back(a + static_cast<double>(i) * step);
+  } else {
+    for (const auto& s : split(text, ',')) out.push_back(parse_double(s, "--angles"));
+  }
+  for (double d : out) {
+    if (d < 0.0 || d > 90.0) {
+      throw InputError("", "--angles", fmt::format("{:g} deg is outside [0, 90] deg", d));
+    }
+  }
+  if (out.empty()) throw InputError("", "--angles", "no angles given");
+  return out;
+}
+
+// One curve to evaluate: a category of a library (or the inline model) at one
+// band.
+struct Series {
+  int category = 0;
+  std::string name;
+  std::string model;
+  ris::RadarBand band;
+  std::optional<std::array<std::uint8_t, 3>> colour;
+  std::vector<double> sigma0_db;
+};
+
+double to_db(double linear) {
+  return linear > 0.0 ? std::max(kFloorDb, 10.0 * std::log10(linear)) : kFloorDb;
+}
+
+void run(const Options& o) {
+  const std::vector<double> angles = parse_angles_deg(o.angles);
+  double frequency_hz = 0.0;
+  try {
+    frequency_hz = ris::parse_quantity(o.frequency, ris::Quantity::frequency);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("", "--frequency", e.what());
+  }
+  if (!(frequency_hz > 0.0)) throw InputError("", "--frequency", "expected a frequency > 0");
+  std::vector<ris::Polarisation> pols;
+  for (const auto& p : split(o.polarisations, ',')) {
+    try {
+      pols.push_back(ris::parse_polarisation(p));
+    } catch (const std::invalid_argument& e) {
+      throw InputError("", "--pol", e.what());
+    }
+  }
+  if (pols.empty()) throw InputError("", "--pol", "no polarisation given");
+
+  std::vector<Series> series;
+  if (!o.model.empty()) {
+    // An inline model: the option's text is the body of a TOML inline table.
+    toml::table doc;
+    try {
+      doc = toml::parse("model = { " + o.model + " }");
+    } catch (const toml::parse_error& e) {
+      throw InputError("", "--model",
+                       fmt::format("expected TOML key = value pairs such as 'name = \"oh1992\", "
+                                   "rms_height = \"1 cm\"': {}",
+                                   e.description()));
+    }
+    ris::ConfigTable root(doc, "--model", "");
+    std::optional<ris::ConfigTable> t = root.subtable("model");
+    ris::ModelContext ctx{"--model", ".", o.allow_extrapolation, -1, nullptr};
+    std::unique_ptr<ris::BackscatterModel> model = ris::make_backscatter_model(*t, ctx);
+    for (ris::Polarisation p : pols) {
+      Series s{0, "model", model->describe(), {frequency_hz, p}, std::nullopt, {}};
+      model->check_band(s.band);
+      for (double a : angles)
+        s.sigma0_db.push_back(to_db(model->sigma0(ris::deg_to_rad(a), s.band)));
+      series.push_back(std::move(s));
+    }
+  } else {
+    const std::string path = o.library.empty() ? ris::default_sigma0_library_path() : o.library;
+    std::unique_ptr<ris::Sigma0Source> src = ris::load_sigma0_source(path);
+    std::vector<std::uint16_t> ids;
+    if (o.categories == "all") {
+      ids = src->category_ids();
+    } else {
+      for (const auto& c : split(o.categories, ',')) {
+        const double v = parse_double(c, "--category");
+        if (v < 1 || v > 65535 || v != std::floor(v) ||
+            !src->has_category(static_cast<std::uint16_t>(v))) {
+          throw InputError(path, "--category", fmt::format("no category {} in the file", c));
+        }
+        ids.push_back(static_cast<std::uint16_t>(v));
+      }
+    }
+    for (std::uint16_t id : ids) {
+      for (ris::Polarisation p : pols) {
+        Series s{id, src->category_name(id), "", {frequency_hz, p}, src->category_colour(id), {}};
+        s.model = src->category_model(id, s.band);
+        for (double a : angles) {
+          s.sigma0_db.push_back(to_db(src->sigma0(id, ris::deg_to_rad(a), s.band)));
+        }
+        series.push_back(std::move(s));
+      }
+    }
+  }
+
+  // Output.
+  if (o.format == "csv") {
+    // The sigma0 table format (include/ris/backscatter/sigma0_table.h), so the
+    // output can be shipped as a table file.
+    fmt::print("# sigma0 table written by ris {} (ris sigma0)\n", RIS_VERSION);
+    fmt::print("# values below {:g} dB are written as {:g} dB\n", kFloorDb, kFloorDb);
+    std::set<int> named;
+    for (const Series& s : series) {
+      if (named.insert(s.category).second) {
+        fmt::print("# category {}: {}\n", s.category, s.name);
+      }
+    }
+    for (const Series& s : series)
+      fmt::print("#   model of category {} at {:g} GHz {}: {}\n", s.category,
+                 s.band.frequency_hz / 1e9, ris::to_string(s.band.polarisation), s.model);
+    fmt::print("category,frequency_ghz,polarisation,angle_deg,sigma0_db\n");
+    for (const Series& s : series) {
+      for (size_t i = 0; i < angles.size(); ++i) {
+        fmt::print("{},{:g},{},{:g},{:.3f}\n", s.category, s.band.frequency_hz / 1e9,
+                   ris::to_string(s.band.polarisation), angles[i], s.sigma0_db[i]);
+      }
+    }
+  } else if (o.format == "json") {
+    nlohmann::json j = nlohmann::json::array();
+    for (const Series& s : series) {
+      j.push_back({{"category", s.category},
+                   {"name", s.name},
+                   {"model", s.model},
+                   {"frequency_ghz", s.band.frequency_hz / 1e9},
+                   {"polarisation", std::string(ris::to_string(s.band.polarisation))},
+                   {"angle_deg", angles},
+                   {"sigma0_db", s.sigma0_db}});
+    }
+    fmt::print("{}\n", j.dump(2));
+  } else if (o.format == "table") {
+    fmt::print("sigma0 (dB) at {:g} GHz\n", frequency_hz / 1e9);
+    for (const Series& s : series) {
+      fmt::print("  {:>3} {}: {} {}\n", s.category, ris::to_string(s.band.polarisation), s.name,
+                 s.model);
+    }
+    fmt::print("{:>9}", "angle_deg");
+    for (const Series& s : series) {
+      fmt::print(" {:>9}", fmt::format("{}{}", s.category, ris::to_string(s.band.polarisation)));
+    }
+    fmt::print("\n");
+    for (size_t i = 0; i < angles.size(); ++i) {
+      fmt::print("{:>9g}", angles[i]);
+      for (const Series& s : series) fmt::print(" {:>9.2f}", s.sigma0_db[i]);
+      fmt::print("\n");
+    }
+  } else {
+    throw InputError("", "--format", "expected table, csv or json, got \"" + o.format + "\"");
+  }
+}
+
+void add_sigma0(CLI::App& app) {
+  auto opts = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "sigma0",
+      "Evaluate backscatter (sigma0 against incidence) for library categories or a model");
+  cmd->add_option("--library", opts->library,
+                  "Category library (.toml) or sigma0 table (.csv); default "
+                  "data/backscatter/ku-geometric.toml");
+  cmd->add_option("--category", opts->categories, "Category ids, comma separated, or \"all\"")
+      ->capture_default_str();
+  cmd->add_option("--model", opts->model,
+                  "A model with inline parameters instead of a library, as TOML key = value "
+                  "pairs: 'name = \"oh1992\", rms_height = \"1 cm\", permittivity = \"15 - 4j\"'");
+  cmd->add_option("--frequency,-f", opts->frequency, "Radar frequency, e.g. \"8.6 GHz\"")
+      ->capture_default_str();
+  cmd->add_option("--pol,-p", opts->polarisations, "Polarisations, comma separated (HH,VV,HV,VH)")
+      ->capture_default_str();
+  cmd->add_option("--angles,-a", opts->angles,
+                  "Incidence angles in degrees: start:stop:step or a comma list")
+      ->capture_default_str();
+  cmd->add_option("--format", opts->format, "Output: table, csv (the table file format) or json")
+      ->capture_default_str();
+  cmd->add_flag("--allow-extrapolation", opts->allow_extrapolation,
+                "For --model: warn instead of failing outside the model's validity range");
+  cmd->callback([opts] { run(*opts); });
+}
+
+const ris::app::Registration reg{"sigma0", add_sigma0};
+
+}  // namespace
