@@ -240,6 +240,7 @@ void parse_reference(std::optional<ConfigTable>& t, const RadarParams& r, Refere
     const std::int64_t c = t->get_int("category");
     if (c < 0 || c > 0xFFFE) t->fail("category", "expected a category id in 0..65534");
     ref.sigma0_category = static_cast<std::uint16_t>(c);
+    ref.sigma0 = std::numeric_limits<double>::quiet_NaN();  // resolve_reference_sigma0()
     ref.sigma0_incidence_rad = t->get_quantity("incidence", Quantity::angle);
     if (!(ref.sigma0_incidence_rad >= 0.0 && ref.sigma0_incidence_rad <= kPi / 2)) {
       t->fail("incidence", "expected a local incidence angle between 0 and 90 deg");

@@ -68,7 +68,8 @@ struct ReferenceCell {
   std::optional<double> mean_power_w;
   // Added: sigma0_1 given as a category at a local incidence angle; the
   // simulation evaluates it through its Sigma0Lut (include this category when
-  // building the LUT) and stores the value in `sigma0`.
+  // building the LUT) and stores the value in `sigma0` (NaN until then):
+  // ris::resolve_reference_sigma0 in ris/image/greytone_terms.h.
   std::optional<std::uint16_t> sigma0_category;
   double sigma0_incidence_rad = 0.0;
 };

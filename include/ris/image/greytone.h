@@ -1,0 +1,86 @@
+// Film greytones from mean (or speckled) power: the seed's equations 13 and
+// 15 (MODEL.md section 3, "Greytone").
+//
+//   G = G_ref + (255/X) [ gamma log10(P / P_ref) + log10(k2/k1) + gamma log10(M2/M1) ]
+//
+// rounded to the nearest integer, then clamped to [0, 255] (0 black, 255
+// white). A factor of 10 in power moves G by 255 gamma / X.
+//
+// What the switches do here and where: P arrives with the radar-equation
+// factors that are switched off already replaced by their reference values
+// (ris/image/greytone_terms.h explains the design); GreytoneMap adds the k and
+// M terms only when switched on; fading enters as speckled power (P times the
+// fading factor Y of ris/image/speckle.h), which is equation 21's
+// G_fad = (255/X) gamma log10(Y) exactly, so the fading switch means "apply
+// speckle or not".
+//
+// The reference:
+//   explicit (reference.auto = false): P_ref from the reference cell
+//     (reference_power_w()), G_ref = reference.greytone;
+//   auto: P_ref = the median of the valid pixels' power, G_ref =
+//     reference.auto_greytone. Valid: finite, > 0 (shadow is 0 and would drag
+//     the median to -inf) and not masked. Take it from the mean power (before
+//     speckle) so the grey scale does not depend on the fading seed.
+//
+// Example:
+//   ris::GreytoneMap map = ris::make_greytone_map(radar, img.mean_power_w, no_data_mask);
+//   std::vector<std::uint8_t> grey(img.mean_power_w.size());
+//   ris::greytones(speckled_power, grey, map, no_data_mask);
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <span>
+
+#include "ris/sensor/radar_params.h"
+
+namespace ris {
+
+class GreytoneMap {
+ public:
+  // p_ref_w: reference power P_ref (W, > 0); g_ref: its greytone.
+  GreytoneMap(const RadarParams& radar, double p_ref_w, double g_ref);
+
+  // Equation 15 as a real number, neither rounded nor clamped; -inf for P = 0.
+  double greytone(double power_w) const { return offset_ + per_decade_ * std::log10(power_w); }
+  // Rounded, then clamped to [0, 255]. NaN power gives 0.
+  std::uint8_t quantised(double power_w) const {
+    const double g = std::round(greytone(power_w));
+    if (!(g > 0.0)) return 0;  // also NaN and -inf
+    return g >= 255.0 ? std::uint8_t{255} : static_cast<std::uint8_t>(g);
+  }
+
+  double reference_power_w() const { return p_ref_w_; }
+  double reference_greytone() const { return g_ref_; }
+  double greytones_per_decade() const { return per_decade_; }  // 255 gamma / X
+  // (255/X) [log10(k2/k1) + gamma log10(M2/M1)] with the switches applied.
+  double film_offset() const { return film_offset_; }
+
+ private:
+  double p_ref_w_;
+  double g_ref_;
+  double per_decade_;
+  double film_offset_;
+  double offset_;  // G_ref + film_offset - per_decade log10(P_ref)
+};
+
+// Median of the valid pixels of `power_w` (see above); NaN when none is valid.
+// no_data: empty, or one byte per pixel, non-zero = no data.
+double median_valid_power_w(std::span<const float> power_w,
+                            std::span<const std::uint8_t> no_data = {});
+
+// The radar's greytone map for an image: explicit reference, or auto from the
+// median of `mean_power_w`. Throws InputError (radar file, key "reference")
+// when auto finds no valid pixel, and (key "reference.category") when the
+// reference sigma0 is a category that was not resolved
+// (resolve_reference_sigma0, ris/image/greytone_terms.h).
+GreytoneMap make_greytone_map(const RadarParams& radar, std::span<const float> mean_power_w,
+                              std::span<const std::uint8_t> no_data = {});
+
+// Maps a power raster to greytones, in parallel (OpenMP over blocks of pixels;
+// the result does not depend on the thread count). NaN pixels and masked
+// pixels (no_data non-zero) get no_data_greytone. out.size() == power_w.size().
+void greytones(std::span<const float> power_w, std::span<std::uint8_t> out, const GreytoneMap& map,
+               std::span<const std::uint8_t> no_data = {}, std::uint8_t no_data_greytone = 0);
+
+}  // namespace ris

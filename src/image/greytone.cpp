@@ -1,0 +1,87 @@
+#include "ris/image/greytone.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "ris/image/greytone_terms.h"
+#include "ris/util/error.h"
+
+namespace ris {
+
+GreytoneMap::GreytoneMap(const RadarParams& radar, double p_ref_w, double g_ref)
+    : p_ref_w_(p_ref_w), g_ref_(g_ref) {
+  RIS_CHECK(p_ref_w > 0.0 && std::isfinite(p_ref_w));
+  const FilmParams& f = radar.film;
+  const double scale = 255.0 / f.density_range;  // equation 13: G = (255 / X) D
+  per_decade_ = scale * f.gamma;
+  film_offset_ = 0.0;
+  if (radar.switches.film_k) film_offset_ += scale * std::log10(f.k2 / f.k1);
+  if (radar.switches.receiver_m) film_offset_ += scale * f.gamma * std::log10(f.m2 / f.m1);
+  offset_ = g_ref_ + film_offset_ - per_decade_ * std::log10(p_ref_w_);
+}
+
+namespace {
+bool valid_pixel(float p, std::span<const std::uint8_t> no_data, std::size_t i) {
+  return std::isfinite(p) && p > 0.0f && (no_data.empty() || no_data[i] == 0);
+}
+}  // namespace
+
+double median_valid_power_w(std::span<const float> power_w, std::span<const std::uint8_t> no_data) {
+  RIS_CHECK(no_data.empty() || no_data.size() == power_w.size());
+  std::vector<float> v;
+  v.reserve(power_w.size());
+  for (std::size_t i = 0; i < power_w.size(); ++i) {
+    if (valid_pixel(power_w[i], no_data, i)) v.push_back(power_w[i]);
+  }
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const std::size_t mid = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid), v.end());
+  const double upper = v[mid];
+  if (v.size() % 2 == 1) return upper;
+  const double lower = *std::max_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid));
+  return 0.5 * (lower + upper);
+}
+
+GreytoneMap make_greytone_map(const RadarParams& radar, std::span<const float> mean_power_w,
+                              std::span<const std::uint8_t> no_data) {
+  const ReferenceCell& ref = radar.reference;
+  if (ref.automatic) {
+    const double median = median_valid_power_w(mean_power_w, no_data);
+    if (!(median > 0.0)) {
+      throw InputError(radar.source_file, "reference",
+                       "auto reference: no pixel has a positive mean power (the swath saw "
+                       "nothing); give an explicit reference or check the track");
+    }
+    return GreytoneMap(radar, median, ref.auto_greytone);
+  }
+  // A reference sigma0 given as a category is NaN until resolve_reference_sigma0().
+  RIS_CHECK(ref.mean_power_w || !std::isnan(ref.sigma0));
+  const double p_ref = reference_power_w(ref);
+  if (!(p_ref > 0.0) || !std::isfinite(p_ref)) {
+    throw InputError(radar.source_file, "reference",
+                     fmt::format("the reference cell's mean power is {} W; expected > 0", p_ref));
+  }
+  return GreytoneMap(radar, p_ref, ref.greytone);
+}
+
+void greytones(std::span<const float> power_w, std::span<std::uint8_t> out, const GreytoneMap& map,
+               std::span<const std::uint8_t> no_data, std::uint8_t no_data_greytone) {
+  RIS_CHECK(out.size() == power_w.size());
+  RIS_CHECK(no_data.empty() || no_data.size() == power_w.size());
+  const auto n = static_cast<std::int64_t>(power_w.size());
+  // Each pixel is independent: any schedule gives the same bytes.
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const float p = power_w[k];
+    const bool masked = std::isnan(p) || (!no_data.empty() && no_data[k] != 0);
+    out[k] = masked ? no_data_greytone : map.quantised(p);
+  }
+}
+
+}  // namespace ris
