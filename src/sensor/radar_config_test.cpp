@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "ris/sensor/elevation_gain.h"
 #include "ris/sensor/radar_derived.h"
+#include "ris/sensor/radar_json.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -320,6 +323,57 @@ TEST(ElevationGain, ShapesHaveHalfPowerAtHalfBeamwidth) {
   EXPECT_NEAR(t(0.75), 0.4, 1e-12);
   EXPECT_NEAR(t(0.1), 0.2, 1e-12);  // held at the ends
   EXPECT_NEAR(t(1.5), 0.6, 1e-12);
+}
+
+}  // namespace
+}  // namespace ris
+
+namespace ris {
+namespace {
+
+// The complete example in docs/radar-format.md parses and means what it says.
+TEST(RadarConfig, DocumentationExampleParses) {
+  const std::string doc_path = std::string(RIS_DATA_DIR) + "/../docs/radar-format.md";
+  std::ifstream f(doc_path);
+  ASSERT_TRUE(f) << doc_path;
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const std::string text = ss.str();
+  const auto begin = text.find("```toml\n");
+  ASSERT_NE(begin, std::string::npos);
+  const auto end = text.find("```", begin + 8);
+  const RadarParams r =
+      radar_from_toml(toml::parse(text.substr(begin + 8, end - begin - 8)), doc_path);
+  EXPECT_EQ(r.polarisation, Polarisation::VV);
+  EXPECT_EQ(r.range_bins, 400);
+  EXPECT_EQ(r.track.look_side, LookSide::left);
+  EXPECT_EQ(r.elevation_pattern.kind, ElevationPattern::Kind::gaussian);
+  EXPECT_EQ(r.fading, FadingLaw::seed_eq21);
+  EXPECT_FALSE(r.switches.range);
+  EXPECT_TRUE(r.switches.area);
+  ASSERT_TRUE(r.reference.sigma0_category.has_value());
+  EXPECT_EQ(*r.reference.sigma0_category, 3);
+}
+
+}  // namespace
+}  // namespace ris
+
+namespace ris {
+namespace {
+
+TEST(RadarJson, RecordsInputsDerivedAndSwitches) {
+  const RadarParams r = load_radar(radar_file("seed-fig4-5.toml"));
+  const nlohmann::json j = radar_to_json(r);
+  EXPECT_EQ(j["polarisation"], "HH");
+  EXPECT_EQ(j["range_bins"], 241);
+  EXPECT_NEAR(j["track"]["near_edge_distance_m"].get<double>(), 109900 * kFeetToMetres, 1e-6);
+  EXPECT_EQ(j["film"]["fading"], "exact");
+  EXPECT_EQ(j["film"]["terms"]["backscatter"], true);
+  EXPECT_EQ(j["independent_samples"], "seed equation 16");
+  const nlohmann::json d = derived_to_json(derive(r));
+  EXPECT_NEAR(d["near_depression_rad"].get<double>(), deg_to_rad(19.983), 1e-4);
+  EXPECT_EQ(d["range_bins"], 241);
+  EXPECT_NO_THROW((void)j.dump());
 }
 
 }  // namespace

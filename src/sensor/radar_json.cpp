@@ -1,0 +1,130 @@
+#include "ris/sensor/radar_json.h"
+
+#include <cmath>
+
+namespace ris {
+
+namespace {
+const char* pattern_name(ElevationPattern::Kind k) {
+  switch (k) {
+    case ElevationPattern::Kind::uniform:
+      return "uniform";
+    case ElevationPattern::Kind::sinc2:
+      return "sinc2";
+    case ElevationPattern::Kind::gaussian:
+      return "gaussian";
+    case ElevationPattern::Kind::table:
+      return "table";
+  }
+  return "?";
+}
+
+// JSON has no NaN: an unresolved value is written as null.
+nlohmann::json number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+}  // namespace
+
+nlohmann::json radar_to_json(const RadarParams& r) {
+  using nlohmann::json;
+  json j;
+  j["source_file"] = r.source_file;
+  j["name"] = r.name;
+  j["mode"] = "slar";
+  j["frequency_hz"] = r.frequency_hz;
+  j["wavelength_m"] = r.wavelength_m();
+  j["polarisation"] = std::string(to_string(r.polarisation));
+  j["pulse_width_s"] = r.pulse_width_s;
+  j["near_slant_range_m"] = r.near_slant_range_m;
+  j["far_slant_range_m"] = r.far_slant_range_m;
+  j["range_bin_m"] = r.range_bin_m;
+  j["range_bins"] = r.range_bins;
+  j["azimuth_beamwidth_rad"] = r.azimuth_beamwidth_rad;
+  j["transmit_power_w"] = r.transmit_power_w;
+  j["peak_gain"] = r.peak_gain;
+  const ElevationPattern& p = r.elevation_pattern;
+  j["elevation_pattern"] = {{"shape", pattern_name(p.kind)},
+                            {"beamwidth_rad", p.beamwidth_rad},
+                            {"boresight_rad", p.boresight_rad},
+                            {"table_look_rad", p.table_look_rad},
+                            {"table_gain", p.table_gain}};
+  const TrackSpec& t = r.track;
+  json track = {{"altitude_m", t.altitude_m},
+                {"look_side", t.look_side == LookSide::right ? "right" : "left"}};
+  if (t.kind == TrackSpec::Kind::endpoints) {
+    track["start_m"] = {t.start_x_m, t.start_y_m};
+    track["end_m"] = {t.end_x_m, t.end_y_m};
+  } else {
+    track["heading_rad"] = t.heading_rad;
+    track["near_edge_distance_m"] = t.near_edge_ground_m;
+  }
+  j["track"] = track;
+  j["speed_m_per_s"] = r.speed_m_per_s > 0.0 ? json(r.speed_m_per_s) : json(nullptr);
+  j["prf_hz"] = r.prf_hz > 0.0 ? json(r.prf_hz) : json(nullptr);
+  j["independent_samples"] =
+      r.independent_samples ? json(*r.independent_samples) : json("seed equation 16");
+  j["azimuth_line_spacing_m"] =
+      r.azimuth_line_spacing_m > 0.0 ? json(r.azimuth_line_spacing_m) : json("one scene cell");
+  const ReferenceCell& ref = r.reference;
+  json reference = {{"auto", ref.automatic},
+                    {"greytone", ref.automatic ? ref.auto_greytone : ref.greytone},
+                    {"transmit_power_w", ref.transmit_power_w},
+                    {"sigma0", number(ref.sigma0)},
+                    {"area_m2", ref.area_m2},
+                    {"gain", ref.gain},
+                    {"wavelength_m", ref.wavelength_m},
+                    {"range_m", ref.range_m}};
+  if (ref.mean_power_w) reference["mean_power_w"] = *ref.mean_power_w;
+  if (ref.sigma0_category) {
+    reference["category"] = *ref.sigma0_category;
+    reference["incidence_rad"] = ref.sigma0_incidence_rad;
+  }
+  j["reference"] = reference;
+  const FilmParams& f = r.film;
+  const GreytoneSwitches& s = r.switches;
+  j["film"] = {{"density_range", f.density_range},
+               {"gamma", f.gamma},
+               {"k_reference", f.k1},
+               {"k_simulated", f.k2},
+               {"m_reference", f.m1},
+               {"m_simulated", f.m2},
+               {"fading", r.fading == FadingLaw::exact_gamma ? "exact" : "seed"},
+               {"terms",
+                {{"transmit_power", s.transmit_power},
+                 {"wavelength", s.wavelength},
+                 {"antenna_gain", s.antenna_gain},
+                 {"backscatter", s.backscatter},
+                 {"area", s.area},
+                 {"range", s.range},
+                 {"k", s.film_k},
+                 {"m", s.receiver_m},
+                 {"fading", s.fading}}}};
+  return j;
+}
+
+nlohmann::json derived_to_json(const RadarDerived& d) {
+  return {{"wavelength_m", d.wavelength_m},
+          {"range_resolution_m", d.range_resolution_m},
+          {"range_bin_m", d.range_bin_m},
+          {"range_bins", d.range_bins},
+          {"near_slant_range_m", d.near_slant_range_m},
+          {"far_slant_range_m", d.far_slant_range_m},
+          {"near_ground_range_m", d.near_ground_range_m},
+          {"far_ground_range_m", d.far_ground_range_m},
+          {"swath_ground_m", d.swath_ground_m},
+          {"near_depression_rad", d.near_depression_rad},
+          {"far_depression_rad", d.far_depression_rad},
+          {"near_incidence_rad", d.near_incidence_rad},
+          {"far_incidence_rad", d.far_incidence_rad},
+          {"near_azimuth_footprint_m", d.near_azimuth_footprint_m},
+          {"far_azimuth_footprint_m", d.far_azimuth_footprint_m},
+          {"near_independent_samples_eq16", d.near_samples_eq16},
+          {"far_independent_samples_eq16", d.far_samples_eq16},
+          {"near_independent_samples", d.near_samples},
+          {"far_independent_samples", d.far_samples},
+          {"independent_samples_from_eq16", d.samples_from_eq16},
+          {"near_pulses_per_footprint", d.near_pulses_per_footprint},
+          {"far_pulses_per_footprint", d.far_pulses_per_footprint}};
+}
+
+}  // namespace ris
