@@ -7,10 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "ris/image/greytone_image.h"
 #include "ris/image/greytone_terms.h"
 #include "ris/image/speckle.h"
 #include "ris/sensor/elevation_gain.h"
 #include "ris/sensor/radar_config.h"
+#include "ris/sensor/radar_derived.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -247,6 +249,42 @@ TEST(Greytone, RasterMatchesThePixelMap) {
   std::vector<std::uint8_t> g(p.size());
   greytones(p, g, map);
   for (size_t i = 0; i < p.size(); i += 997) EXPECT_EQ(g[i], map.quantised(p[i]));
+}
+
+}  // namespace
+}  // namespace ris
+
+namespace ris {
+namespace {
+
+TEST(GreytoneImage, ChainWithAndWithoutFading) {
+  constexpr int kLines = 50, kBins = 30;
+  std::vector<float> mean(static_cast<size_t>(kLines) * kBins);
+  for (size_t i = 0; i < mean.size(); ++i)
+    mean[i] = static_cast<float>(1e-12 * static_cast<double>(1 + i % 7));
+  std::vector<std::uint8_t> mask(mean.size(), 0);
+  mask[3] = 1;
+  const std::string auto_ref = kRadar.substr(0, kRadar.find("[reference]")) + "[film]\n";
+  // Fading off: the speckled power is the mean power.
+  const RadarParams off = radar_from_toml(toml::parse(auto_ref + "terms.fading = false\n"), "r");
+  const GreytoneImage a = make_greytone_image(off, mean, kLines, kBins, 15000.0, 15.0, 1, mask);
+  EXPECT_TRUE(std::isnan(a.speckled_power_w[3]));
+  EXPECT_EQ(a.greytone[3], 0);
+  for (size_t i = 4; i < mean.size(); ++i) {
+    ASSERT_EQ(a.speckled_power_w[i], mean[i]);
+    ASSERT_EQ(a.greytone[i], a.map.quantised(mean[i]));
+  }
+  EXPECT_EQ(a.map.quantised(median_valid_power_w(mean, mask)), 128);
+  ASSERT_EQ(a.looks_per_bin.size(), static_cast<size_t>(kBins));
+  EXPECT_DOUBLE_EQ(a.looks_per_bin[7], independent_samples(off, 15000.0 + 7.5 * 15.0));
+  // Fading on: same reference (from the mean power), speckled pixels differ,
+  // and the seed fixes them.
+  const RadarParams on = radar_from_toml(toml::parse(auto_ref), "r");
+  const GreytoneImage b = make_greytone_image(on, mean, kLines, kBins, 15000.0, 15.0, 1, mask);
+  const GreytoneImage c = make_greytone_image(on, mean, kLines, kBins, 15000.0, 15.0, 1, mask);
+  EXPECT_DOUBLE_EQ(b.map.reference_power_w(), a.map.reference_power_w());
+  EXPECT_NE(b.speckled_power_w[10], mean[10]);
+  EXPECT_EQ(b.greytone, c.greytone);
 }
 
 }  // namespace
