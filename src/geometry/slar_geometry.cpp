@@ -124,7 +124,7 @@ bool nearly(double a, double b) {
 
 // Fills one line: per-sample quantities, then the shadow and layover scans.
 template <typename Sampler>
-void fill_line(SlarGeometry& g, Sampler& sampler, int line) {
+void fill_line(SlarGeometry& g, Sampler& sampler, int line, std::vector<float>& dh_du_scratch) {
   const Track& t = g.track;
   const double H = g.altitude_m;
   sampler.start_line(t, g.line_s_m(line));
@@ -141,7 +141,8 @@ void fill_line(SlarGeometry& g, Sampler& sampler, int line) {
     if (!(u > 0.0)) f |= sample_flag::kUnseen;
     if (!ts.inside || !ts.valid) {
       g.height_m[i] = g.slant_range_m[i] = g.incidence_rad[i] = kNaN;
-      g.local_incidence_rad[i] = g.area_m2[i] = g.range_extent_m[i] = kNaN;
+      g.local_incidence_rad[i] = g.area_m2[i] = kNaN;
+      g.range_near_end_m[i] = g.range_far_end_m[i] = kNaN;
       g.category[i] = 0;
       g.flags[i] = f;
       continue;
@@ -162,15 +163,31 @@ void fill_line(SlarGeometry& g, Sampler& sampler, int line) {
     g.incidence_rad[i] = static_cast<float>(std::atan2(u, D));
     g.local_incidence_rad[i] = static_cast<float>(std::acos(std::clamp(cos_l, -1.0, 1.0)));
     g.area_m2[i] = static_cast<float>(element_m2 * n_len);
-    // dR/du on the facet: R^2 = u^2 + (H - h(u))^2.
-    g.range_extent_m[i] = static_cast<float>((u - D * dh_du) / R * g.sample_step_m);
+    dh_du_scratch[static_cast<std::size_t>(j)] = static_cast<float>(dh_du);
     g.category[i] = ts.category;
     g.flags[i] = f;
   }
 
+  // The element's ends: heights halfway to the neighbours with data.
+  constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
+  const double half_step = 0.5 * g.sample_step_m;
+  const auto has_data = [&](int j) {
+    return j >= 0 && j < g.samples && !(g.flags[base + static_cast<std::size_t>(j)] & kSkip);
+  };
+  for (int j = 0; j < g.samples; ++j) {
+    const std::size_t i = base + static_cast<std::size_t>(j);
+    if (!has_data(j)) continue;
+    const double h = g.height_m[i];
+    const double slope_half = dh_du_scratch[static_cast<std::size_t>(j)] * half_step;
+    const double h_near = has_data(j - 1) ? 0.5 * (h + g.height_m[i - 1]) : h - slope_half;
+    const double h_far = has_data(j + 1) ? 0.5 * (h + g.height_m[i + 1]) : h + slope_half;
+    const double u = g.sample_u_m(j);
+    g.range_near_end_m[i] = static_cast<float>(std::hypot(u - half_step, H - h_near));
+    g.range_far_end_m[i] = static_cast<float>(std::hypot(u + half_step, H - h_far));
+  }
+
   // Cast shadow: t(u) = u / (H - h); a point is shadowed when a nearer point
   // has a larger t (MODEL.md section 2).
-  constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
   double max_t = -std::numeric_limits<double>::infinity();
   for (int j = 0; j < g.samples; ++j) {
     const std::size_t i = base + static_cast<std::size_t>(j);
@@ -275,18 +292,23 @@ SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, doubl
   g.incidence_rad.resize(n);
   g.local_incidence_rad.resize(n);
   g.area_m2.resize(n);
-  g.range_extent_m.resize(n);
+  g.range_near_end_m.resize(n);
+  g.range_far_end_m.resize(n);
   g.category.resize(n);
   g.flags.resize(n);
 
   // Lines are independent: one line per iteration, samplers copied per
-  // thread (they hold only the current line's position).
-#pragma omp parallel for schedule(dynamic, 16) firstprivate(direct, bilinear)
-  for (int line = 0; line < g.lines; ++line) {
-    if (g.direct_sampling)
-      fill_line(g, direct, line);
-    else
-      fill_line(g, bilinear, line);
+  // thread (they hold only the current line's position), scratch per thread.
+#pragma omp parallel firstprivate(direct, bilinear)
+  {
+    std::vector<float> dh_du(static_cast<std::size_t>(g.samples));
+#pragma omp for schedule(dynamic, 16)
+    for (int line = 0; line < g.lines; ++line) {
+      if (g.direct_sampling)
+        fill_line(g, direct, line, dh_du);
+      else
+        fill_line(g, bilinear, line, dh_du);
+    }
   }
 
   std::int64_t nodata = 0, shadow = 0, back = 0, layover = 0;

@@ -40,7 +40,8 @@ TEST(SlarGeometry, FlatPlaneSlantRangeIncidenceAreaAndNoFlags) {
       EXPECT_NEAR(g.incidence_rad[i], std::atan2(u, D), 1e-6);
       EXPECT_NEAR(g.local_incidence_rad[i], std::atan2(u, D), 1e-4);
       EXPECT_NEAR(g.area_m2[i], kCell * kCell, 1e-4);
-      EXPECT_NEAR(g.range_extent_m[i], kCell * u / std::hypot(u, D), 1e-5);
+      EXPECT_NEAR(g.range_near_end_m[i], std::hypot(u - kCell / 2, D), 1e-3);
+      EXPECT_NEAR(g.range_far_end_m[i], std::hypot(u + kCell / 2, D), 1e-3);
       EXPECT_EQ(g.flags[i], 0);
       EXPECT_EQ(g.category[i], 3);
     }

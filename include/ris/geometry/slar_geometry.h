@@ -61,9 +61,15 @@ struct SlarGeometry {
   std::vector<float> incidence_rad;        // flat-earth incidence = look angle from nadir
   std::vector<float> local_incidence_rad;  // acos(n . l); > pi/2 when back-facing
   std::vector<float> area_m2;              // true (tilted) area of the element
-  // Signed slant-range extent of the element along the line, dR/du * step
-  // (negative where R decreases with u: layover).
-  std::vector<float> range_extent_m;
+  // Slant range of the element's two ends along the line, at u - step/2 and
+  // u + step/2. The element is the polyline from its near end through its
+  // centre to its far end; the end heights are the means with the
+  // neighbouring samples (or the local slope's extrapolation where a
+  // neighbour has no data). A step in the terrain is thus shared by the two
+  // cells beside it, and its range extent is the terrain's, not a tilted
+  // facet's overshoot.
+  std::vector<float> range_near_end_m;
+  std::vector<float> range_far_end_m;
   std::vector<std::uint16_t> category;
   std::vector<std::uint8_t> flags;
 

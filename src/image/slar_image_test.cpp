@@ -1,0 +1,291 @@
+#include "ris/image/slar_image.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+#include "slar_fixtures.h"
+
+namespace ris {
+namespace {
+
+using test::CosineSigma0Source;
+
+constexpr double kCell = 6.0;
+constexpr double kH = 3000.0;
+constexpr double kNear = 4000.0;
+
+double gaussian_gain(double beta) {
+  return std::exp(-std::pow((beta - 1.1) / 0.4, 2));
+}
+
+SlarImagingParams test_params(double near_m = 5300.0, int bins = 200) {
+  SlarImagingParams p;
+  p.range.near_m = near_m;
+  p.range.bin_m = kSpeedOfLight_m_per_s * 1e-7 / 2.0;  // c tau / 2
+  p.range.count = bins;
+  p.transmit_power_w = 1000.0;
+  p.wavelength_m = kSpeedOfLight_m_per_s / 8.6e9;
+  p.peak_gain = 300.0;
+  p.azimuth_beamwidth_rad = 0.006;
+  p.elevation_gain = gaussian_gain;
+  return p;
+}
+
+TEST(SlarImage, FlatPlanePixelPowerFollowsTheRadarEquationAcrossTheSwath) {
+  const Scene s = Scene::flat(120, 700, kCell, 0.0f, 2);
+  const SlarGeometry g =
+      compute_slar_geometry(s, test::north_track(s, kH, kNear), 0.0, "radar.toml");
+  const SlarImagingParams p = test_params();
+  const SlarImage img = form_slar_image(g, test::cosine_lut(s), p, "radar.toml");
+  ASSERT_EQ(img.lines, 120);
+  ASSERT_EQ(img.bins, 200);
+  const double k_radar = p.transmit_power_w * p.wavelength_m * p.wavelength_m * p.peak_gain *
+                         p.peak_gain / std::pow(4 * kPi, 3);
+  double worst = 0.0;
+  for (int line : {40, 60, 80}) {
+    for (int b = 0; b < img.bins; ++b) {
+      const double R = p.range.centre_m(b);
+      const double u = std::sqrt(R * R - kH * kH);
+      const double theta = std::atan2(u, kH);
+      const double G = gaussian_gain(theta);
+      // sigma0(theta) w(R) c tau / (2 sin theta) G^2 / R^4, times P_t lambda^2 / (4 pi)^3.
+      const double expected = k_radar * CosineSigma0Source::gamma(2) * std::cos(theta) *
+                              (R * p.azimuth_beamwidth_rad) * p.range.bin_m / std::sin(theta) * G *
+                              G / std::pow(R, 4);
+      const double got = img.mean_power_w[img.index(line, b)];
+      const double rel = std::abs(got / expected - 1.0);
+      worst = std::max(worst, rel);
+      EXPECT_LT(rel, 0.01) << "line " << line << " bin " << b;
+      EXPECT_EQ(img.mask[img.index(line, b)], 0);
+    }
+  }
+  RecordProperty("worst_relative_error", std::to_string(worst));
+  // Near the track's ends the footprint runs off the scene: less power.
+  EXPECT_LT(img.mean_power_w[img.index(0, 100)], 0.8 * img.mean_power_w[img.index(60, 100)]);
+}
+
+TEST(SlarImage, CentreCountsEqualTheCellsWhoseSlantRangeFallsInEachBin) {
+  const Scene s = Scene::flat(10, 700, kCell, 0.0f, 1);
+  const SlarGeometry g =
+      compute_slar_geometry(s, test::north_track(s, kH, kNear), 0.0, "radar.toml");
+  const SlarImagingParams p = test_params();
+  const SlarImage img = form_slar_image(g, test::cosine_lut(s), p, "radar.toml");
+  std::vector<int> expected(static_cast<std::size_t>(img.bins), 0);
+  for (int c = 0; c < s.cols; ++c) {
+    const double u = kNear + (c + 0.5) * kCell;
+    const double pos = (std::hypot(u, kH) - p.range.near_m) / p.range.bin_m;
+    if (pos >= 0 && pos < img.bins) ++expected[static_cast<std::size_t>(pos)];
+  }
+  for (int b = 0; b < img.bins; ++b) {
+    EXPECT_EQ(img.mapped_count[img.index(4, b)], expected[static_cast<std::size_t>(b)]) << b;
+    EXPECT_EQ(img.visible_count[img.index(4, b)], expected[static_cast<std::size_t>(b)]) << b;
+  }
+}
+
+TEST(SlarImage, TowerTopLaysOverTowardsNearRangeByThePredictedBins) {
+  Scene s = Scene::flat(30, 700, kCell, 0.0f, 1);
+  const int tower_row = 15, tower_col = 300;
+  const float h = 400.0f;
+  s.elevation_m[s.index(tower_row, tower_col)] = h;
+  const SlarGeometry g =
+      compute_slar_geometry(s, test::north_track(s, kH, kNear), 0.0, "radar.toml");
+  const SlarImagingParams p = test_params();
+  const SlarImage img = form_slar_image(g, test::cosine_lut(s), p, "radar.toml");
+  const int line = s.rows - 1 - tower_row;  // track starts at the south edge
+  const double u = kNear + (tower_col + 0.5) * kCell;
+  const int base_bin = static_cast<int>((std::hypot(u, kH) - p.range.near_m) / p.range.bin_m);
+  const int top_bin = static_cast<int>((std::hypot(u, kH - h) - p.range.near_m) / p.range.bin_m);
+  const int predicted_shift =
+      static_cast<int>(std::round((std::hypot(u, kH) - std::hypot(u, kH - h)) / p.range.bin_m));
+  ASSERT_GE(predicted_shift, 5);
+  EXPECT_NEAR(base_bin - top_bin, predicted_shift, 1);
+  // The top is seen in its bin, on top of the flat ground there (one more
+  // element than the neighbouring lines), and that pixel is flagged layover.
+  const std::size_t top = img.index(line, top_bin);
+  EXPECT_EQ(img.visible_count[top], img.visible_count[img.index(line - 3, top_bin)] + 1);
+  EXPECT_TRUE(img.mask[top] & pixel_flag::kLayover);
+  // No other bin of that line holds the top: every other bin matches the flat line.
+  for (int b = 0; b < img.bins; ++b) {
+    if (b == top_bin || std::abs(b - base_bin) <= 1) continue;
+    EXPECT_EQ(img.mapped_count[img.index(line, b)], img.mapped_count[img.index(line - 3, b)]) << b;
+  }
+}
+
+TEST(SlarImage, BoxLayoverPixelsSpanTheGeometricSlantRangeExtent) {
+  Scene s = Scene::flat(40, 700, kCell, 0.0f, 1);
+  const int c1 = 300, c2 = 330;
+  const float h = 200.0f;
+  for (int r = 0; r < s.rows; ++r)
+    for (int c = c1; c < c2; ++c) s.elevation_m[s.index(r, c)] = h;
+  const SlarGeometry g =
+      compute_slar_geometry(s, test::north_track(s, kH, kNear), 0.0, "radar.toml");
+  const SlarImagingParams p = test_params();
+  const SlarImage img = form_slar_image(g, test::cosine_lut(s), p, "radar.toml");
+  // Layover from the top's near edge to the ground at the same range.
+  const double r_top = std::hypot(kNear + (c1 + 0.5) * kCell, kH - h);
+  const double r_ground = std::hypot(kNear + (c1 - 0.5) * kCell, kH);
+  int first = -1, last = -1;
+  for (int b = 0; b < img.bins; ++b) {
+    if (!(img.mask[img.index(20, b)] & pixel_flag::kLayover)) continue;
+    if (first < 0) first = b;
+    last = b;
+  }
+  const double extent_m = (last - first + 1) * p.range.bin_m;
+  // Whole bins cover the extent plus at most one bin at each end (partial
+  // bins and the elements' own range extent).
+  EXPECT_GE(extent_m, r_ground - r_top);
+  EXPECT_LE(extent_m, r_ground - r_top + 2 * p.range.bin_m);
+  EXPECT_EQ(first, static_cast<int>((r_top - p.range.near_m) / p.range.bin_m));
+  // Behind the box: shadow pixels, and more of them than layover ones here.
+  int shadow = 0;
+  for (int b = 0; b < img.bins; ++b)
+    shadow += (img.mask[img.index(20, b)] & pixel_flag::kShadow) ? 1 : 0;
+  EXPECT_GT(shadow, 0);
+}
+
+TEST(SlarImage, IdenticalBytesWithOneAndTwoThreads) {
+  Scene s = Scene::flat(64, 300, kCell, 0.0f, 1);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    s.elevation_m[i] = static_cast<float>(40.0 * std::sin(0.01 * double(i)) + 40.0);
+    s.category[i] = static_cast<std::uint16_t>(i % 3);
+  }
+  const SlarGeometry g =
+      compute_slar_geometry(s, test::north_track(s, kH, kNear), 0.0, "radar.toml");
+  const SlarImagingParams p = test_params(5000.0, 120);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const SlarImage a = form_slar_image(g, test::cosine_lut(s), p, "radar.toml");
+  const SlarGeometry g1 =
+      compute_slar_geometry(s, test::north_track(s, kH, kNear), 0.0, "radar.toml");
+  omp_set_num_threads(2);
+  const SlarImage b = form_slar_image(g, test::cosine_lut(s), p, "radar.toml");
+  const SlarGeometry g2 =
+      compute_slar_geometry(s, test::north_track(s, kH, kNear), 0.0, "radar.toml");
+  omp_set_num_threads(saved);
+  ASSERT_EQ(a.mean_power_w.size(), b.mean_power_w.size());
+  EXPECT_EQ(std::memcmp(a.mean_power_w.data(), b.mean_power_w.data(), a.mean_power_w.size() * 4),
+            0);
+  EXPECT_EQ(a.mask, b.mask);
+  EXPECT_EQ(g1.flags, g2.flags);
+  EXPECT_EQ(
+      std::memcmp(g1.slant_range_m.data(), g2.slant_range_m.data(), g1.slant_range_m.size() * 4),
+      0);
+}
+
+// Terrain given in the track frame (s, u): a round hill on a plane.
+float hill(double s_m, double u_m) {
+  const double ds = s_m - 300.0, du = u_m - 4400.0;
+  return static_cast<float>(120.0 * std::exp(-(ds * ds + du * du) / (2.0 * 70.0 * 70.0)));
+}
+
+// A north-up grid covering the track-frame rectangle s in [0, 600],
+// u in [u0, u1] for the given track, with the hill at its track coordinates.
+Scene hill_scene(const Track& t, double u0, double u1) {
+  double x_min = 1e30, x_max = -1e30, y_min = 1e30, y_max = -1e30;
+  for (double s : {0.0, 600.0}) {
+    for (double u : {u0, u1}) {
+      const auto [x, y] = t.world_from_along_cross(s, u);
+      x_min = std::min(x_min, x);
+      x_max = std::max(x_max, x);
+      y_min = std::min(y_min, y);
+      y_max = std::max(y_max, y);
+    }
+  }
+  const int cols = static_cast<int>(std::round((x_max - x_min) / kCell));
+  const int rows = static_cast<int>(std::round((y_max - y_min) / kCell));
+  Scene s = Scene::flat(rows, cols, kCell, 0.0f, 1);
+  s.origin_x_m = x_min;
+  s.origin_y_m = y_max;
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      const auto [x, y] = s.cell_centre(r, c);
+      const auto [sa, ua] = t.along_cross(x, y);
+      s.elevation_m[s.index(r, c)] = hill(sa, ua);
+    }
+  }
+  return s;
+}
+
+Track endpoint_track(double heading_rad) {
+  TrackSpec spec;
+  spec.kind = TrackSpec::Kind::endpoints;
+  spec.start_x_m = 0.0;
+  spec.start_y_m = 0.0;
+  spec.end_x_m = 600.0 * std::sin(heading_rad);
+  spec.end_y_m = 600.0 * std::cos(heading_rad);
+  spec.altitude_m = kH;
+  Scene unused = Scene::flat(1, 1, 1.0, 0.0f, 0);
+  return resolve_track(spec, unused, "radar.toml");
+}
+
+TEST(SlarImage, SceneAndTrackRotatedTogetherBy30DegreesGiveTheSameImage) {
+  const Track t0 = endpoint_track(0.0);
+  const Track t30 = endpoint_track(deg_to_rad(30.0));
+  const Scene s0 = hill_scene(t0, 3900.0, 4900.0);
+  const Scene s30 = hill_scene(t30, 3900.0, 4900.0);
+  const SlarGeometry g0 = compute_slar_geometry(s0, t0, kCell, "radar.toml");
+  const SlarGeometry g30 = compute_slar_geometry(s30, t30, kCell, "radar.toml");
+  ASSERT_TRUE(g0.direct_sampling);
+  ASSERT_FALSE(g30.direct_sampling);
+  // Bins over u in about [4150, 4700]: inside both scenes' rectangles.
+  const SlarImagingParams p = test_params(5130.0, 36);
+  const SlarImage a = form_slar_image(g0, test::cosine_lut(s0), p, "radar.toml");
+  const SlarImage b = form_slar_image(g30, test::cosine_lut(s30), p, "radar.toml");
+  ASSERT_EQ(a.lines, b.lines);
+  double sum_a = 0, sum_b = 0, abs_diff = 0;
+  int mask_same = 0, n = 0;
+  for (int line = 10; line < a.lines - 10; ++line) {
+    for (int bin = 0; bin < a.bins; ++bin) {
+      const std::size_t i = a.index(line, bin);
+      sum_a += a.mean_power_w[i];
+      sum_b += b.mean_power_w[i];
+      abs_diff += std::abs(double(a.mean_power_w[i]) - double(b.mean_power_w[i]));
+      mask_same += a.mask[i] == b.mask[i] ? 1 : 0;
+      ++n;
+    }
+  }
+  EXPECT_NEAR(sum_b / sum_a, 1.0, 0.002);
+  EXPECT_LT(abs_diff / sum_a, 0.01);  // pixel-wise resampling error, relative to the total
+  EXPECT_GT(double(mask_same) / n, 0.97);
+  RecordProperty("relative_total", std::to_string(sum_b / sum_a));
+  RecordProperty("pixel_error", std::to_string(abs_diff / sum_a));
+}
+
+TEST(SlarImage, SwathMissingTheSceneIsAnInputError) {
+  const Scene s = Scene::flat(10, 50, kCell, 0.0f, 1);
+  const SlarGeometry g =
+      compute_slar_geometry(s, test::north_track(s, kH, kNear), 0.0, "radar.toml");
+  try {
+    (void)form_slar_image(g, test::cosine_lut(s), test_params(20000.0, 50), "radar.toml");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "radar.toml");
+    EXPECT_EQ(e.key(), "swath");
+  }
+}
+
+TEST(SlarImage, CategoryWithoutBackscatterIsAnInputError) {
+  Scene s = Scene::flat(10, 50, kCell, 0.0f, 1);
+  s.category[s.index(3, 7)] = 9;
+  // The LUT refuses to be built without category 9 ...
+  const std::vector<std::uint16_t> cats{1, 9};
+  EXPECT_THROW(
+      Sigma0Lut::build(CosineSigma0Source({1}), RadarBand{8.6e9, Polarisation::HH}, cats, "b.toml"),
+      InputError);
+  // ... and image formation refuses a LUT that lacks it.
+  const Sigma0Lut partial =
+      Sigma0Lut::build(CosineSigma0Source({1}), RadarBand{8.6e9, Polarisation::HH},
+                       std::vector<std::uint16_t>{1}, "b.toml");
+  const SlarGeometry g =
+      compute_slar_geometry(s, test::north_track(s, kH, kNear), 0.0, "radar.toml");
+  EXPECT_THROW((void)form_slar_image(g, partial, test_params(5000.0, 50), "radar.toml"),
+               InputError);
+}
+
+}  // namespace
+}  // namespace ris
