@@ -54,7 +54,8 @@ constexpr std::uint8_t kTouchLayover = 4;
 // Adds `power` spread uniformly over the bin-coordinate interval between x0
 // and x1 (either order) to acc; the part outside [0, bins) is lost. A
 // zero-length interval puts everything into its bin.
-void spread(std::vector<double>& acc, double x0, double x1, double power, int bins) {
+void spread(std::vector<double>& acc, std::vector<double>& acc_area, double x0, double x1,
+            double power, double area, int bins) {
   const double lo = std::min(x0, x1), hi = std::max(x0, x1);
   if (hi < 0.0 || lo >= bins) return;
   const int b0 = std::max(0, static_cast<int>(std::floor(lo)));
@@ -62,12 +63,14 @@ void spread(std::vector<double>& acc, double x0, double x1, double power, int bi
   const double width = hi - lo;
   if (b0 == b1 && width <= 0.0) {
     acc[static_cast<std::size_t>(b0)] += power;
+    acc_area[static_cast<std::size_t>(b0)] += area;
     return;
   }
-  const double density = power / width;
+  const double inv_width = 1.0 / width;
   for (int b = b0; b <= b1; ++b) {
-    const double overlap = std::min(hi, double(b + 1)) - std::max(lo, double(b));
-    acc[static_cast<std::size_t>(b)] += density * overlap;
+    const double f = (std::min(hi, double(b + 1)) - std::max(lo, double(b))) * inv_width;
+    acc[static_cast<std::size_t>(b)] += power * f;
+    acc_area[static_cast<std::size_t>(b)] += area * f;
   }
 }
 
@@ -107,6 +110,7 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
   const std::size_t n_pix =
       static_cast<std::size_t>(img.lines) * static_cast<std::size_t>(img.bins);
   img.mean_power_w.assign(n_pix, 0.0f);
+  img.area_m2.assign(n_pix, 0.0f);
   img.mask.assign(n_pix, 0);
   img.mapped_count.assign(n_pix, 0);
   img.visible_count.assign(n_pix, 0);
@@ -120,15 +124,19 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
 
   // Per-line range profiles before azimuth integration and per-line touch bits.
   std::vector<float> line_power(n_pix, 0.0f);
+  std::vector<float> line_area(n_pix, 0.0f);
   std::vector<std::uint8_t> touch(n_pix, 0);
   std::int64_t in_swath = 0;
 
 #pragma omp parallel reduction(+ : in_swath)
   {
-    std::vector<double> acc(static_cast<std::size_t>(bins));  // per-thread scratch
+    // Per-thread scratch, allocated once.
+    std::vector<double> acc(static_cast<std::size_t>(bins));
+    std::vector<double> acc_area(static_cast<std::size_t>(bins));
 #pragma omp for schedule(dynamic, 8)
     for (int line = 0; line < g.lines; ++line) {
       std::fill(acc.begin(), acc.end(), 0.0);
+      std::fill(acc_area.begin(), acc_area.end(), 0.0);
       const std::size_t row = img.index(line, 0);
       for (int j = 0; j < g.samples; ++j) {
         const std::size_t i = g.index(line, j);
@@ -162,12 +170,15 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
                              double(lut.at(g.category[i], g.local_incidence_rad[i])) *
                              double(g.area_m2[i]) / (r2 * r2);
         // Half the element (near end to centre, centre to far end) each.
-        spread(acc, (r_a - near) * inv_dr, pos, 0.5 * power, bins);
-        spread(acc, pos, (r_b - near) * inv_dr, 0.5 * power, bins);
+        const double half_area = 0.5 * double(g.area_m2[i]);
+        spread(acc, acc_area, (r_a - near) * inv_dr, pos, 0.5 * power, half_area, bins);
+        spread(acc, acc_area, pos, (r_b - near) * inv_dr, 0.5 * power, half_area, bins);
       }
-      for (int b = 0; b < bins; ++b)
-        line_power[row + static_cast<std::size_t>(b)] =
-            static_cast<float>(acc[static_cast<std::size_t>(b)]);
+      for (int b = 0; b < bins; ++b) {
+        const std::size_t bb = static_cast<std::size_t>(b);
+        line_power[row + bb] = static_cast<float>(acc[bb]);
+        line_area[row + bb] = static_cast<float>(acc_area[bb]);
+      }
     }
   }
   img.samples_in_swath = in_swath;
@@ -185,34 +196,37 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
 #pragma omp parallel
   {
     std::vector<double> cum(static_cast<std::size_t>(n) + 1);
+    std::vector<double> cum_area(static_cast<std::size_t>(n) + 1);
     std::vector<int> cum_data(static_cast<std::size_t>(n) + 1);
     std::vector<int> cum_visible(static_cast<std::size_t>(n) + 1);
     std::vector<int> cum_layover(static_cast<std::size_t>(n) + 1);
 #pragma omp for schedule(static)
     for (int b = 0; b < bins; ++b) {
-      cum[0] = 0.0;
+      cum[0] = cum_area[0] = 0.0;
       cum_data[0] = cum_visible[0] = cum_layover[0] = 0;
       for (int j = 0; j < n; ++j) {
         const std::size_t k = img.index(j, b), jj = static_cast<std::size_t>(j);
         cum[jj + 1] = cum[jj] + double(line_power[k]);
+        cum_area[jj + 1] = cum_area[jj] + double(line_area[k]);
         cum_data[jj + 1] = cum_data[jj] + ((touch[k] & kTouchData) ? 1 : 0);
         cum_visible[jj + 1] = cum_visible[jj] + ((touch[k] & kTouchVisible) ? 1 : 0);
         cum_layover[jj + 1] = cum_layover[jj] + ((touch[k] & kTouchLayover) ? 1 : 0);
       }
       // Integral of the profile from -1/2 to x (line units), clamped.
-      const auto integral = [&](double x) {
+      const auto integral = [n](const std::vector<double>& c, double x) {
         const double y = std::clamp(x + 0.5, 0.0, double(n));
         const int i = std::min(static_cast<int>(y), n - 1);
         const double f = y - i;
         const std::size_t ii = static_cast<std::size_t>(i);
-        return cum[ii] + f * (cum[ii + 1] - cum[ii]);
+        return c[ii] + f * (c[ii + 1] - c[ii]);
       };
       const double half =
           0.5 * slar_footprint_m(p.range.centre_m(b), p.azimuth_beamwidth_rad) / g.line_spacing_m;
       for (int k = 0; k < n; ++k) {
         const double a = k - half, e = k + half;
         const std::size_t pix = img.index(k, b);
-        img.mean_power_w[pix] = static_cast<float>(integral(e) - integral(a));
+        img.mean_power_w[pix] = static_cast<float>(integral(cum, e) - integral(cum, a));
+        img.area_m2[pix] = static_cast<float>(integral(cum_area, e) - integral(cum_area, a));
         // Lines whose strip overlaps the footprint: j + 1/2 > a and j - 1/2 < e.
         const int j_lo = std::max(0, static_cast<int>(std::floor(a - 0.5)) + 1);
         const int j_hi = std::min(n - 1, static_cast<int>(std::ceil(e + 0.5)) - 1);

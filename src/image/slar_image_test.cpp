@@ -62,6 +62,9 @@ TEST(SlarImage, FlatPlanePixelPowerFollowsTheRadarEquationAcrossTheSwath) {
       worst = std::max(worst, rel);
       EXPECT_LT(rel, 0.01) << "line " << line << " bin " << b;
       EXPECT_EQ(img.mask[img.index(line, b)], 0);
+      // The seed's cell area dA = w l, l = c tau / (2 sin theta).
+      const double cell_area = R * p.azimuth_beamwidth_rad * p.range.bin_m / std::sin(theta);
+      EXPECT_NEAR(img.area_m2[img.index(line, b)] / cell_area, 1.0, 0.01);
     }
   }
   RecordProperty("worst_relative_error", std::to_string(worst));

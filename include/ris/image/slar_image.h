@@ -69,7 +69,10 @@ struct SlarImage {
   SlantRangeBins range;
   double line_spacing_m = 0.0;
   std::vector<float> mean_power_w;  // lines x bins, received mean power (W)
-  std::vector<std::uint8_t> mask;   // lines x bins, pixel_flag bits
+  // lines x bins: true area (m^2) of the visible elements summed like the
+  // power (for the area switch of equation 15, ris/image/greytone_terms.h).
+  std::vector<float> area_m2;
+  std::vector<std::uint8_t> mask;  // lines x bins, pixel_flag bits
   // Per line (not integrated over the footprint), by element centre:
   std::vector<std::uint16_t> mapped_count;   // elements with data
   std::vector<std::uint16_t> visible_count;  // of which visible (lit, facing)

@@ -1,0 +1,47 @@
+// The ground-range presentation: each azimuth line resampled from slant range
+// to uniform ground range over a reference height h_ref (flat earth, as on
+// the seed's IDECS display; MODEL.md section 3, "Presentations"):
+//   u = sqrt(R^2 - (H - h_ref)^2).
+// Pixel j covers ground range [u_near + j du, u_near + (j + 1) du] and takes
+// the slant-range raster linearly interpolated between bin centres at the
+// slant range of its centre (masks: the nearest bin). Columns are near range
+// first, rows are the slant-range image's rows.
+//
+// Example:
+//   ris::GroundRangeGrid grid = ris::ground_range_grid(img.range, H, 0.0, img.line_spacing_m);
+//   std::vector<float> ground = ris::to_ground_range(img.mean_power_w, img.lines, img.range, grid);
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ris/image/slar_image.h"
+
+namespace ris {
+
+struct GroundRangeGrid {
+  double altitude_m = 0.0;          // H above the datum
+  double reference_height_m = 0.0;  // h_ref
+  double near_m = 0.0;              // ground range of the first pixel's near edge
+  double spacing_m = 0.0;           // du
+  int count = 0;
+  double centre_m(int j) const { return near_m + (j + 0.5) * spacing_m; }
+};
+
+// The grid covering the slant-range swath [near, far] at spacing_m. Throws
+// InputError (key "reference_height") when h_ref is at or above the sensor.
+GroundRangeGrid ground_range_grid(const SlantRangeBins& bins, double altitude_m,
+                                  double reference_height_m, double spacing_m);
+
+// Resamples a lines x bins float raster (power) to lines x grid.count; NaN
+// bins stay NaN, pixels beyond the swath are NaN.
+std::vector<float> to_ground_range(std::span<const float> slant, int lines,
+                                   const SlantRangeBins& bins, const GroundRangeGrid& grid);
+
+// The same for a byte raster (mask), nearest bin; fill beyond the swath.
+std::vector<std::uint8_t> to_ground_range_nearest(std::span<const std::uint8_t> slant, int lines,
+                                                  const SlantRangeBins& bins,
+                                                  const GroundRangeGrid& grid, std::uint8_t fill);
+
+}  // namespace ris

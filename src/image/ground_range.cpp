@@ -1,0 +1,95 @@
+#include "ris/image/ground_range.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ris/util/error.h"
+
+namespace ris {
+
+GroundRangeGrid ground_range_grid(const SlantRangeBins& bins, double altitude_m,
+                                  double reference_height_m, double spacing_m) {
+  RIS_CHECK(spacing_m > 0.0 && bins.count > 0);
+  const double D = altitude_m - reference_height_m;
+  if (!(D > 0.0)) {
+    throw InputError("", "reference_height",
+                     fmt::format("the ground-range reference height {:.1f} m is at or above the "
+                                 "sensor altitude {:.1f} m",
+                                 reference_height_m, altitude_m));
+  }
+  const auto ground = [D](double r) { return r > D ? std::sqrt(r * r - D * D) : 0.0; };
+  GroundRangeGrid g;
+  g.altitude_m = altitude_m;
+  g.reference_height_m = reference_height_m;
+  g.near_m = ground(bins.near_m);
+  g.spacing_m = spacing_m;
+  g.count = std::max(1, static_cast<int>(std::ceil((ground(bins.far_m()) - g.near_m) / spacing_m)));
+  return g;
+}
+
+namespace {
+// Fractional bin-centre coordinate of ground pixel j (bin k's centre is k).
+std::vector<double> bin_positions(const SlantRangeBins& bins, const GroundRangeGrid& grid) {
+  const double D = grid.altitude_m - grid.reference_height_m;
+  std::vector<double> pos(static_cast<std::size_t>(grid.count));
+  for (int j = 0; j < grid.count; ++j) {
+    const double r = std::hypot(grid.centre_m(j), D);
+    pos[static_cast<std::size_t>(j)] = (r - bins.near_m) / bins.bin_m - 0.5;
+  }
+  return pos;
+}
+}  // namespace
+
+std::vector<float> to_ground_range(std::span<const float> slant, int lines,
+                                   const SlantRangeBins& bins, const GroundRangeGrid& grid) {
+  RIS_CHECK(slant.size() == static_cast<std::size_t>(lines) * static_cast<std::size_t>(bins.count));
+  const std::vector<double> pos = bin_positions(bins, grid);
+  const std::size_t cols = static_cast<std::size_t>(grid.count);
+  std::vector<float> out(static_cast<std::size_t>(lines) * cols);
+  const int last = bins.count - 1;
+#pragma omp parallel for schedule(static)
+  for (int line = 0; line < lines; ++line) {
+    const float* row =
+        slant.data() + static_cast<std::size_t>(line) * static_cast<std::size_t>(bins.count);
+    float* dst = out.data() + static_cast<std::size_t>(line) * cols;
+    for (std::size_t j = 0; j < cols; ++j) {
+      const double x = pos[j];
+      if (x < -0.5 || x > last + 0.5) {
+        dst[j] = std::numeric_limits<float>::quiet_NaN();
+        continue;
+      }
+      // Half a bin at each end holds the end value.
+      const double xc = std::clamp(x, 0.0, double(last));
+      const int k = std::min(static_cast<int>(xc), std::max(last - 1, 0));
+      const double f = xc - k;
+      const float a = row[k], b = row[std::min(k + 1, last)];
+      dst[j] = static_cast<float>(a + f * (double(b) - double(a)));
+    }
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> to_ground_range_nearest(std::span<const std::uint8_t> slant, int lines,
+                                                  const SlantRangeBins& bins,
+                                                  const GroundRangeGrid& grid, std::uint8_t fill) {
+  RIS_CHECK(slant.size() == static_cast<std::size_t>(lines) * static_cast<std::size_t>(bins.count));
+  const std::vector<double> pos = bin_positions(bins, grid);
+  const std::size_t cols = static_cast<std::size_t>(grid.count);
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(lines) * cols, fill);
+#pragma omp parallel for schedule(static)
+  for (int line = 0; line < lines; ++line) {
+    const std::uint8_t* row =
+        slant.data() + static_cast<std::size_t>(line) * static_cast<std::size_t>(bins.count);
+    std::uint8_t* dst = out.data() + static_cast<std::size_t>(line) * cols;
+    for (std::size_t j = 0; j < cols; ++j) {
+      const double k = std::round(pos[j]);
+      if (k >= 0.0 && k < bins.count) dst[j] = row[static_cast<int>(k)];
+    }
+  }
+  return out;
+}
+
+}  // namespace ris
