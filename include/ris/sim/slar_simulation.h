@@ -1,0 +1,86 @@
+// A whole SLAR simulation, in two stages (DESIGN.md: each arrow is plain
+// data, so the cheap end can be re-run without the expensive start):
+//
+//   simulate_slar   scene + radar + sigma0 -> geometry, mean-power image,
+//                   masks, scene-grid maps (the seed's SLAR Geometry, Slope
+//                   and Shadow programs)
+//   render_slar     mean power -> speckle -> greytones, slant and ground range
+//                   (the seed's SLAR Greytone, run as often as wanted)
+//
+// The greytone switches of equation 15 act as ris/image/greytone_terms.h
+// prescribes: switched-off radar-equation factors are replaced by the
+// reference cell's while forming the image (transmit power, wavelength,
+// antenna gain, backscatter) or corrected per pixel afterwards (range, area);
+// k and M in the greytone map; fading by applying speckle or not.
+//
+// Example:
+//   ris::SlarSimulation sim = ris::simulate_slar(scene, radar, *sigma0, {});
+//   ris::SlarPictures pic = ris::render_slar(sim, 42);
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ris/backscatter/sigma0_source.h"
+#include "ris/geometry/scene_geometry_maps.h"
+#include "ris/geometry/slar_geometry.h"
+#include "ris/image/ground_range.h"
+#include "ris/image/slar_image.h"
+#include "ris/scene/scene.h"
+#include "ris/sensor/radar_derived.h"
+#include "ris/sensor/radar_params.h"
+#include "ris/sensor/track.h"
+
+namespace ris {
+
+struct SlarOptions {
+  // The backscatter file, named in error messages (a category it lacks).
+  std::string backscatter_file;
+  // Ground-range reference height h_ref; default: the median elevation of
+  // the scene's cells with data.
+  std::optional<double> reference_height_m;
+  // Called at the start of each stage (name, fraction of the run done).
+  std::function<void(std::string_view, double)> progress;
+};
+
+struct SlarSimulation {
+  RadarParams radar;  // as used (reference sigma0 resolved)
+  RadarDerived derived;
+  Track track;
+  SlarGeometry geometry;
+  SlarImage image;  // mean power with the switched factors applied
+  SceneGeometryMaps scene_maps;
+  GroundRangeGrid ground_grid;
+  std::string backscatter_description;
+  std::vector<std::uint16_t> categories;  // used by cells with data
+  std::vector<std::string> category_names;
+  bool range_corrected = false;  // range switch off: pixels carry R_1^-4
+  bool area_corrected = false;   // area switch off: pixels carry dA_1
+};
+
+// Throws InputError for bad input (terrain at or above the sensor, a swath
+// that misses the scene, a category without backscatter, ...).
+SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar,
+                             const Sigma0Source& sigma0, const SlarOptions& options = {});
+
+struct SlarPictures {
+  std::uint64_t seed = 0;
+  std::vector<float> speckled_power_w;    // lines x bins (mean power when fading is off)
+  std::vector<std::uint8_t> slant_grey;   // lines x bins
+  std::vector<float> ground_power_w;      // lines x ground_grid.count, speckled
+  std::vector<std::uint8_t> ground_mask;  // lines x ground_grid.count, pixel_flag bits
+  std::vector<std::uint8_t> ground_grey;
+  std::vector<double> looks;  // N per range bin
+  double reference_power_w = 0.0;
+  double reference_greytone = 0.0;
+  double greytones_per_decade = 0.0;
+  double film_offset = 0.0;
+};
+
+SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed);
+
+}  // namespace ris

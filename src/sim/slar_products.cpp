@@ -1,0 +1,302 @@
+#include "ris/sim/slar_products.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ris/image/shadow_map.h"
+#include "ris/io/atomic_file.h"
+#include "ris/io/raster_io.h"
+#include "ris/util/units.h"
+
+namespace ris {
+
+namespace {
+
+using nlohmann::json;
+
+const char* pattern_name(ElevationPattern::Kind k) {
+  switch (k) {
+    case ElevationPattern::Kind::uniform:
+      return "uniform";
+    case ElevationPattern::Kind::sinc2:
+      return "sinc2";
+    case ElevationPattern::Kind::gaussian:
+      return "gaussian";
+    case ElevationPattern::Kind::table:
+      return "table";
+  }
+  return "?";
+}
+
+json optional_json(const std::optional<double>& v) {
+  return v ? json(*v) : json(nullptr);
+}
+
+json track_json(const Track& t) {
+  return {{"start_x_m", t.start_x_m},
+          {"start_y_m", t.start_y_m},
+          {"along_x", t.along_x},
+          {"along_y", t.along_y},
+          {"cross_x", t.cross_x},
+          {"cross_y", t.cross_y},
+          {"length_m", t.length_m},
+          {"altitude_m", t.altitude_m},
+          {"heading_deg", rad_to_deg(std::atan2(t.along_x, t.along_y))},
+          {"look_side", t.look_side == LookSide::right ? "right" : "left"}};
+}
+
+json derived_json(const RadarDerived& d) {
+  return {{"wavelength_m", d.wavelength_m},
+          {"range_resolution_m", d.range_resolution_m},
+          {"range_bin_m", d.range_bin_m},
+          {"range_bins", d.range_bins},
+          {"near_slant_range_m", d.near_slant_range_m},
+          {"far_slant_range_m", d.far_slant_range_m},
+          {"near_ground_range_m", d.near_ground_range_m},
+          {"far_ground_range_m", d.far_ground_range_m},
+          {"swath_ground_m", d.swath_ground_m},
+          {"near_depression_deg", rad_to_deg(d.near_depression_rad)},
+          {"far_depression_deg", rad_to_deg(d.far_depression_rad)},
+          {"near_incidence_deg", rad_to_deg(d.near_incidence_rad)},
+          {"far_incidence_deg", rad_to_deg(d.far_incidence_rad)},
+          {"near_azimuth_footprint_m", d.near_azimuth_footprint_m},
+          {"far_azimuth_footprint_m", d.far_azimuth_footprint_m},
+          {"near_independent_samples_eq16", d.near_samples_eq16},
+          {"far_independent_samples_eq16", d.far_samples_eq16},
+          {"near_independent_samples", d.near_samples},
+          {"far_independent_samples", d.far_samples},
+          {"independent_samples_from_eq16", d.samples_from_eq16},
+          {"near_pulses_per_footprint", d.near_pulses_per_footprint},
+          {"far_pulses_per_footprint", d.far_pulses_per_footprint}};
+}
+
+// Slant-range rasters carry no map georeferencing (their axes are azimuth
+// line and slant range); their geometry goes into the file's metadata.
+RasterMetadata slant_metadata(const SlarImage& img, const std::string& product,
+                              const std::string& units) {
+  return {{"RIS_PRODUCT", product},
+          {"RIS_UNITS", units},
+          {"RIS_ROWS", "azimuth lines, track start first"},
+          {"RIS_COLUMNS", "slant-range bins, near range first"},
+          {"RIS_NEAR_SLANT_RANGE_M", fmt::format("{:.6f}", img.range.near_m)},
+          {"RIS_RANGE_BIN_M", fmt::format("{:.6f}", img.range.bin_m)},
+          {"RIS_LINE_SPACING_M", fmt::format("{:.6f}", img.line_spacing_m)},
+          {"RIS_VERSION", RIS_VERSION}};
+}
+
+}  // namespace
+
+json radar_params_json(const RadarParams& r) {
+  const ElevationPattern& e = r.elevation_pattern;
+  std::vector<double> table_look_deg;
+  for (double a : e.table_look_rad) table_look_deg.push_back(rad_to_deg(a));
+  const TrackSpec& t = r.track;
+  const ReferenceCell& ref = r.reference;
+  const GreytoneSwitches& sw = r.switches;
+  json track = {{"kind", t.kind == TrackSpec::Kind::endpoints ? "endpoints" : "heading_near_edge"},
+                {"altitude_m", t.altitude_m},
+                {"look_side", t.look_side == LookSide::right ? "right" : "left"}};
+  if (t.kind == TrackSpec::Kind::endpoints) {
+    track["start_x_m"] = t.start_x_m;
+    track["start_y_m"] = t.start_y_m;
+    track["end_x_m"] = t.end_x_m;
+    track["end_y_m"] = t.end_y_m;
+  } else {
+    track["heading_deg"] = rad_to_deg(t.heading_rad);
+    track["near_edge_ground_m"] = t.near_edge_ground_m;
+  }
+  return {
+      {"source_file", r.source_file},
+      {"name", r.name},
+      {"mode", "slar"},
+      {"frequency_hz", r.frequency_hz},
+      {"polarisation", std::string(to_string(r.polarisation))},
+      {"pulse_width_s", r.pulse_width_s},
+      {"near_slant_range_m", r.near_slant_range_m},
+      {"far_slant_range_m", r.far_slant_range_m},
+      {"range_bin_m", r.range_bin_m},
+      {"range_bins", r.range_bins},
+      {"azimuth_beamwidth_rad", r.azimuth_beamwidth_rad},
+      {"elevation_pattern",
+       {{"shape", pattern_name(e.kind)},
+        {"beamwidth_deg", rad_to_deg(e.beamwidth_rad)},
+        {"boresight_deg", rad_to_deg(e.boresight_rad)},
+        {"table_look_deg", table_look_deg},
+        {"table_gain", e.table_gain}}},
+      {"transmit_power_w", r.transmit_power_w},
+      {"peak_gain", r.peak_gain},
+      {"track", track},
+      {"speed_m_per_s", r.speed_m_per_s},
+      {"prf_hz", r.prf_hz},
+      {"independent_samples", r.independent_samples ? json(*r.independent_samples) : json("seed")},
+      {"azimuth_line_spacing_m", r.azimuth_line_spacing_m},
+      {"reference",
+       {{"auto", ref.automatic},
+        {"auto_greytone", ref.auto_greytone},
+        {"greytone", ref.greytone},
+        {"transmit_power_w", ref.transmit_power_w},
+        {"sigma0", ref.sigma0},
+        {"area_m2", ref.area_m2},
+        {"gain", ref.gain},
+        {"wavelength_m", ref.wavelength_m},
+        {"range_m", ref.range_m},
+        {"mean_power_w", optional_json(ref.mean_power_w)},
+        {"sigma0_category", ref.sigma0_category ? json(*ref.sigma0_category) : json(nullptr)},
+        {"sigma0_incidence_deg", rad_to_deg(ref.sigma0_incidence_rad)}}},
+      {"film",
+       {{"density_range", r.film.density_range},
+        {"gamma", r.film.gamma},
+        {"k_reference", r.film.k1},
+        {"k_simulated", r.film.k2},
+        {"m_reference", r.film.m1},
+        {"m_simulated", r.film.m2}}},
+      {"switches",
+       {{"transmit_power", sw.transmit_power},
+        {"wavelength", sw.wavelength},
+        {"antenna_gain", sw.antenna_gain},
+        {"backscatter", sw.backscatter},
+        {"area", sw.area},
+        {"range", sw.range},
+        {"k", sw.film_k},
+        {"m", sw.receiver_m},
+        {"fading", sw.fading}}},
+      {"fading", r.fading == FadingLaw::exact_gamma ? "exact" : "seed"}};
+}
+
+json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPictures& pic,
+                   const SlarRunInfo& info) {
+  float h_min = std::numeric_limits<float>::infinity(), h_max = -h_min;
+  for (std::size_t i = 0; i < scene.size(); ++i) {
+    if (!scene.valid[i]) continue;
+    h_min = std::min(h_min, scene.elevation_m[i]);
+    h_max = std::max(h_max, scene.elevation_m[i]);
+  }
+  json categories = json::array();
+  for (std::size_t i = 0; i < sim.categories.size(); ++i)
+    categories.push_back({{"id", sim.categories[i]}, {"name", sim.category_names[i]}});
+  const SlarGeometry& g = sim.geometry;
+  const SlarImage& img = sim.image;
+  const GroundRangeGrid& gr = sim.ground_grid;
+  const auto [looks_min, looks_max] = std::minmax_element(pic.looks.begin(), pic.looks.end());
+  return {
+      {"software", {{"name", "ris"}, {"version", RIS_VERSION}}},
+      {"mode", "slar"},
+      {"earth_model", "flat"},
+      {"inputs",
+       {{"scene",
+         {{"path", info.scene_path},
+          {"rows", scene.rows},
+          {"cols", scene.cols},
+          {"cell_x_m", scene.dx_m},
+          {"cell_y_m", scene.dy_m},
+          {"origin_x_m", scene.origin_x_m},
+          {"origin_y_m", scene.origin_y_m},
+          {"crs_wkt", scene.crs_wkt},
+          {"elevation_min_m", h_min},
+          {"elevation_max_m", h_max},
+          {"nodata_cells", g.nodata_cells},
+          {"categories", categories}}},
+        {"radar", radar_params_json(sim.radar)},
+        {"backscatter",
+         {{"path", info.backscatter_path}, {"description", sim.backscatter_description}}},
+        {"seed", info.seed},
+        {"threads", info.threads}}},
+      {"derived",
+       {{"radar", derived_json(sim.derived)},
+        {"track", track_json(sim.track)},
+        {"geometry",
+         {{"sampling", g.direct_sampling ? "direct (track along a grid axis: one sample per cell)"
+                                         : "bilinear (elevation and slope), nearest category"},
+          {"slope", "central differences of the elevation (one-sided next to no data)"},
+          {"lines", g.lines},
+          {"samples_per_line", g.samples},
+          {"line_spacing_m", g.line_spacing_m},
+          {"sample_step_m", g.sample_step_m},
+          {"first_sample_ground_range_m", g.first_sample_u_m},
+          {"nodata_samples", g.nodata_samples},
+          {"shadow_samples", g.shadow_samples},
+          {"back_facing_samples", g.back_facing_samples},
+          {"layover_samples", g.layover_samples}}},
+        {"image",
+         {{"lines", img.lines},
+          {"range_bins", img.bins},
+          {"near_slant_range_m", img.range.near_m},
+          {"range_bin_m", img.range.bin_m},
+          {"line_spacing_m", img.line_spacing_m},
+          {"samples_in_swath", img.samples_in_swath},
+          {"azimuth_footprint", "w(R) = R * azimuth_beamwidth at the bin centre"},
+          {"range_switch_applied", sim.range_corrected},
+          {"area_switch_applied", sim.area_corrected}}},
+        {"ground_range",
+         {{"reference_height_m", gr.reference_height_m},
+          {"near_ground_range_m", gr.near_m},
+          {"pixel_m", gr.spacing_m},
+          {"pixels", gr.count}}},
+        {"fading",
+         {{"applied", sim.radar.switches.fading},
+          {"law", sim.radar.fading == FadingLaw::exact_gamma ? "Gamma(N, 1/N)" : "equation 21"},
+          {"independent_samples_min", pic.looks.empty() ? 0.0 : *looks_min},
+          {"independent_samples_max", pic.looks.empty() ? 0.0 : *looks_max}}},
+        {"greytone",
+         {{"reference_power_w", pic.reference_power_w},
+          {"reference_greytone", pic.reference_greytone},
+          {"greytones_per_decade", pic.greytones_per_decade},
+          {"film_offset", pic.film_offset}}}}},
+      {"products",
+       {{"slant_range.png",
+         "greytones, slant range: rows azimuth lines (track start first), "
+         "columns range bins (near first)"},
+        {"ground_range.png", "greytones, ground range over the reference height"},
+        {"mean_power_slant.tif", "float32 mean received power (W) before speckle, slant range"},
+        {"speckled_power_slant.tif", "float32 received power (W) after fading, slant range"},
+        {"mask_slant.tif", "uint8 slant-range mask: 1 shadow, 2 layover, 4 no data"},
+        {"scene_mask.tif",
+         "uint8 on the scene grid: 1 shadow, 2 layover, 4 no data, "
+         "8 back-facing, 16 outside swath"},
+        {"local_incidence_deg.tif", "float32 local incidence angle (degrees) on the scene grid"},
+        {"shadowmap.txt", "the seed's shadow map: 9 no data, 0 shadow, 1-8 count, # more"},
+        {"metadata.json", "this file"}}}};
+}
+
+void write_slar_products(const std::filesystem::path& out_dir, const Scene& scene,
+                         const SlarSimulation& sim, const SlarPictures& pic,
+                         const SlarRunInfo& info) {
+  StagedDirectory dir(out_dir);
+  const SlarImage& img = sim.image;
+  write_png_gray(dir.path("slant_range.png"), pic.slant_grey.data(), img.bins, img.lines);
+  write_png_gray(dir.path("ground_range.png"), pic.ground_grey.data(), sim.ground_grid.count,
+                 img.lines);
+  write_geotiff<float>(dir.path("mean_power_slant.tif"), img.mean_power_w.data(), img.bins,
+                       img.lines, nullptr, std::nullopt,
+                       slant_metadata(img, "mean power before speckle", "W"), "mean_power_w");
+  write_geotiff<float>(dir.path("speckled_power_slant.tif"), pic.speckled_power_w.data(), img.bins,
+                       img.lines, nullptr, std::nullopt,
+                       slant_metadata(img, "power after fading", "W"), "speckled_power_w");
+  write_geotiff<std::uint8_t>(
+      dir.path("mask_slant.tif"), img.mask.data(), img.bins, img.lines, nullptr, std::nullopt,
+      slant_metadata(img, "mask: 1 shadow, 2 layover, 4 no data", "bits"), "mask");
+  const Georef georef{scene.geotransform(), scene.crs_wkt};
+  write_geotiff<std::uint8_t>(
+      dir.path("scene_mask.tif"), sim.scene_maps.mask.data(), scene.cols, scene.rows, &georef,
+      std::nullopt,
+      {{"RIS_PRODUCT",
+        "scene geometry mask: 1 shadow, 2 layover, 4 no data, 8 back-facing, 16 outside swath"},
+       {"RIS_VERSION", RIS_VERSION}},
+      "mask");
+  write_geotiff<float>(dir.path("local_incidence_deg.tif"),
+                       sim.scene_maps.local_incidence_deg.data(), scene.cols, scene.rows, &georef,
+                       std::numeric_limits<double>::quiet_NaN(),
+                       {{"RIS_PRODUCT", "local incidence angle"},
+                        {"RIS_UNITS", "degrees"},
+                        {"RIS_VERSION", RIS_VERSION}},
+                       "local_incidence_deg");
+  write_text_file_atomic(dir.path("shadowmap.txt"), shadow_map_text(img));
+  write_text_file_atomic(dir.path("metadata.json"),
+                         slar_metadata(scene, sim, pic, info).dump(2) + "\n");
+  dir.commit();
+}
+
+}  // namespace ris

@@ -1,0 +1,161 @@
+#include "ris/sim/slar_simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ris/backscatter/sigma0_lut.h"
+#include "ris/image/greytone.h"
+#include "ris/image/greytone_terms.h"
+#include "ris/image/speckle.h"
+#include "ris/sensor/elevation_gain.h"
+#include "ris/util/error.h"
+
+namespace ris {
+
+namespace {
+
+void report(const SlarOptions& o, std::string_view stage, double fraction) {
+  if (o.progress) o.progress(stage, fraction);
+}
+
+// Categories of the cells with data, sorted.
+std::vector<std::uint16_t> used_categories(const Scene& scene) {
+  std::vector<std::uint8_t> seen(65536, 0);
+  for (std::size_t i = 0; i < scene.size(); ++i)
+    if (scene.valid[i]) seen[scene.category[i]] = 1;
+  std::vector<std::uint16_t> out;
+  for (std::size_t c = 0; c < seen.size(); ++c)
+    if (seen[c]) out.push_back(static_cast<std::uint16_t>(c));
+  return out;
+}
+
+double median_valid_elevation(const Scene& scene) {
+  std::vector<float> h;
+  h.reserve(scene.size());
+  for (std::size_t i = 0; i < scene.size(); ++i)
+    if (scene.valid[i] && std::isfinite(scene.elevation_m[i])) h.push_back(scene.elevation_m[i]);
+  if (h.empty()) return 0.0;
+  const auto mid = h.begin() + static_cast<std::ptrdiff_t>(h.size() / 2);
+  std::nth_element(h.begin(), mid, h.end());
+  return *mid;
+}
+
+}  // namespace
+
+SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
+                             const Sigma0Source& sigma0, const SlarOptions& options) {
+  SlarSimulation sim;
+  sim.radar = radar_in;
+  RadarParams& radar = sim.radar;
+  sim.derived = derive(radar);
+  const std::string backscatter_file =
+      options.backscatter_file.empty() ? sigma0.description() : options.backscatter_file;
+  if (std::count(scene.valid.begin(), scene.valid.end(), 1) == 0) {
+    throw InputError("scene", "", "the scene has no cell with data");
+  }
+
+  // Geometry (the seed's SLAR Geometry, Slope and Shadow).
+  report(options, "geometry", 0.0);
+  sim.track = resolve_track(radar.track, scene, radar.source_file);
+  sim.geometry =
+      compute_slar_geometry(scene, sim.track, radar.azimuth_line_spacing_m, radar.source_file);
+
+  // sigma0 for every category the scene uses (and the reference's).
+  report(options, "backscatter", 0.3);
+  sim.categories = used_categories(scene);
+  for (std::uint16_t c : sim.categories) sim.category_names.push_back(sigma0.category_name(c));
+  std::vector<std::uint16_t> lut_categories = sim.categories;
+  if (radar.reference.sigma0_category) lut_categories.push_back(*radar.reference.sigma0_category);
+  const RadarBand band{radar.frequency_hz, radar.polarisation};
+  Sigma0Lut lut = Sigma0Lut::build(sigma0, band, lut_categories, backscatter_file);
+  resolve_reference_sigma0(radar, lut);
+  sim.backscatter_description = sigma0.description();
+
+  // Image formation with the switched-off factors at their reference values.
+  report(options, "image formation", 0.4);
+  const SwitchedRadarTerms terms = switched_terms(radar);
+  if (terms.constant_sigma0) {
+    lut = Sigma0Lut::build(ConstantSigma0(*terms.constant_sigma0), band, sim.categories,
+                           backscatter_file);
+  }
+  SlarImagingParams imaging;
+  imaging.range.near_m = sim.derived.near_slant_range_m;
+  imaging.range.bin_m = sim.derived.range_bin_m;
+  imaging.range.count = sim.derived.range_bins;
+  imaging.transmit_power_w = terms.transmit_power_w;
+  imaging.wavelength_m = terms.wavelength_m;
+  imaging.peak_gain = terms.peak_gain;
+  imaging.azimuth_beamwidth_rad = radar.azimuth_beamwidth_rad;
+  if (!terms.uniform_elevation) {
+    const ElevationGain gain(radar.elevation_pattern);
+    imaging.elevation_gain = [gain](double beta) { return gain(beta); };
+  }
+  sim.image = form_slar_image(sim.geometry, lut, imaging, radar.source_file);
+  sim.range_corrected = terms.reference_range_m.has_value();
+  sim.area_corrected = terms.reference_area_m2.has_value();
+  if (sim.range_corrected || sim.area_corrected) {
+    SlarImage& img = sim.image;
+#pragma omp parallel for schedule(static)
+    for (int line = 0; line < img.lines; ++line) {
+      for (int b = 0; b < img.bins; ++b) {
+        const std::size_t i = img.index(line, b);
+        const double f =
+            range_correction(terms, img.range.centre_m(b)) * area_correction(terms, img.area_m2[i]);
+        img.mean_power_w[i] = static_cast<float>(img.mean_power_w[i] * f);
+      }
+    }
+  }
+
+  // Products on the scene grid and the ground-range grid.
+  report(options, "scene maps", 0.8);
+  sim.scene_maps = scene_geometry_maps(scene, sim.geometry, sim.image.range);
+  const double h_ref =
+      options.reference_height_m ? *options.reference_height_m : median_valid_elevation(scene);
+  sim.ground_grid =
+      ground_range_grid(sim.image.range, sim.geometry.altitude_m, h_ref, sim.image.line_spacing_m);
+  return sim;
+}
+
+SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed) {
+  const SlarImage& img = sim.image;
+  const RadarParams& radar = sim.radar;
+  SlarPictures pic;
+  pic.seed = seed;
+  pic.looks.resize(static_cast<std::size_t>(img.bins));
+  for (int b = 0; b < img.bins; ++b)
+    pic.looks[static_cast<std::size_t>(b)] = independent_samples(radar, img.range.centre_m(b));
+
+  // Fading (speckle), keyed by (seed, pixel).
+  pic.speckled_power_w = img.mean_power_w;
+  if (radar.switches.fading) {
+    apply_fading(pic.speckled_power_w, img.lines, img.bins, pic.looks, radar.fading, seed);
+  }
+
+  // Greytones (equation 15): the reference from the mean power, so the grey
+  // scale does not depend on the fading seed.
+  std::vector<std::uint8_t> no_data(img.mask.size());
+  for (std::size_t i = 0; i < no_data.size(); ++i)
+    no_data[i] = (img.mask[i] & pixel_flag::kNoData) ? 1 : 0;
+  const GreytoneMap map = make_greytone_map(radar, img.mean_power_w, no_data);
+  pic.reference_power_w = map.reference_power_w();
+  pic.reference_greytone = map.reference_greytone();
+  pic.greytones_per_decade = map.greytones_per_decade();
+  pic.film_offset = map.film_offset();
+  pic.slant_grey.resize(img.mean_power_w.size());
+  greytones(pic.speckled_power_w, pic.slant_grey, map, no_data);
+
+  // Ground range: the speckled power resampled, then the same greytone map.
+  const GroundRangeGrid& grid = sim.ground_grid;
+  pic.ground_power_w = to_ground_range(pic.speckled_power_w, img.lines, img.range, grid);
+  pic.ground_mask =
+      to_ground_range_nearest(img.mask, img.lines, img.range, grid, pixel_flag::kNoData);
+  std::vector<std::uint8_t> ground_no_data(pic.ground_mask.size());
+  for (std::size_t i = 0; i < ground_no_data.size(); ++i)
+    ground_no_data[i] = (pic.ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
+  pic.ground_grey.resize(pic.ground_power_w.size());
+  greytones(pic.ground_power_w, pic.ground_grey, map, ground_no_data);
+  return pic;
+}
+
+}  // namespace ris
