@@ -9,6 +9,7 @@
 #include "ris/image/shadow_map.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/raster_io.h"
+#include "ris/sensor/radar_json.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -16,24 +17,6 @@ namespace ris {
 namespace {
 
 using nlohmann::json;
-
-const char* pattern_name(ElevationPattern::Kind k) {
-  switch (k) {
-    case ElevationPattern::Kind::uniform:
-      return "uniform";
-    case ElevationPattern::Kind::sinc2:
-      return "sinc2";
-    case ElevationPattern::Kind::gaussian:
-      return "gaussian";
-    case ElevationPattern::Kind::table:
-      return "table";
-  }
-  return "?";
-}
-
-json optional_json(const std::optional<double>& v) {
-  return v ? json(*v) : json(nullptr);
-}
 
 json track_json(const Track& t) {
   return {{"start_x_m", t.start_x_m},
@@ -46,31 +29,6 @@ json track_json(const Track& t) {
           {"altitude_m", t.altitude_m},
           {"heading_deg", rad_to_deg(std::atan2(t.along_x, t.along_y))},
           {"look_side", t.look_side == LookSide::right ? "right" : "left"}};
-}
-
-json derived_json(const RadarDerived& d) {
-  return {{"wavelength_m", d.wavelength_m},
-          {"range_resolution_m", d.range_resolution_m},
-          {"range_bin_m", d.range_bin_m},
-          {"range_bins", d.range_bins},
-          {"near_slant_range_m", d.near_slant_range_m},
-          {"far_slant_range_m", d.far_slant_range_m},
-          {"near_ground_range_m", d.near_ground_range_m},
-          {"far_ground_range_m", d.far_ground_range_m},
-          {"swath_ground_m", d.swath_ground_m},
-          {"near_depression_deg", rad_to_deg(d.near_depression_rad)},
-          {"far_depression_deg", rad_to_deg(d.far_depression_rad)},
-          {"near_incidence_deg", rad_to_deg(d.near_incidence_rad)},
-          {"far_incidence_deg", rad_to_deg(d.far_incidence_rad)},
-          {"near_azimuth_footprint_m", d.near_azimuth_footprint_m},
-          {"far_azimuth_footprint_m", d.far_azimuth_footprint_m},
-          {"near_independent_samples_eq16", d.near_samples_eq16},
-          {"far_independent_samples_eq16", d.far_samples_eq16},
-          {"near_independent_samples", d.near_samples},
-          {"far_independent_samples", d.far_samples},
-          {"independent_samples_from_eq16", d.samples_from_eq16},
-          {"near_pulses_per_footprint", d.near_pulses_per_footprint},
-          {"far_pulses_per_footprint", d.far_pulses_per_footprint}};
 }
 
 // Slant-range rasters carry no map georeferencing (their axes are azimuth
@@ -88,83 +46,6 @@ RasterMetadata slant_metadata(const SlarImage& img, const std::string& product,
 }
 
 }  // namespace
-
-json radar_params_json(const RadarParams& r) {
-  const ElevationPattern& e = r.elevation_pattern;
-  std::vector<double> table_look_deg;
-  for (double a : e.table_look_rad) table_look_deg.push_back(rad_to_deg(a));
-  const TrackSpec& t = r.track;
-  const ReferenceCell& ref = r.reference;
-  const GreytoneSwitches& sw = r.switches;
-  json track = {{"kind", t.kind == TrackSpec::Kind::endpoints ? "endpoints" : "heading_near_edge"},
-                {"altitude_m", t.altitude_m},
-                {"look_side", t.look_side == LookSide::right ? "right" : "left"}};
-  if (t.kind == TrackSpec::Kind::endpoints) {
-    track["start_x_m"] = t.start_x_m;
-    track["start_y_m"] = t.start_y_m;
-    track["end_x_m"] = t.end_x_m;
-    track["end_y_m"] = t.end_y_m;
-  } else {
-    track["heading_deg"] = rad_to_deg(t.heading_rad);
-    track["near_edge_ground_m"] = t.near_edge_ground_m;
-  }
-  return {
-      {"source_file", r.source_file},
-      {"name", r.name},
-      {"mode", "slar"},
-      {"frequency_hz", r.frequency_hz},
-      {"polarisation", std::string(to_string(r.polarisation))},
-      {"pulse_width_s", r.pulse_width_s},
-      {"near_slant_range_m", r.near_slant_range_m},
-      {"far_slant_range_m", r.far_slant_range_m},
-      {"range_bin_m", r.range_bin_m},
-      {"range_bins", r.range_bins},
-      {"azimuth_beamwidth_rad", r.azimuth_beamwidth_rad},
-      {"elevation_pattern",
-       {{"shape", pattern_name(e.kind)},
-        {"beamwidth_deg", rad_to_deg(e.beamwidth_rad)},
-        {"boresight_deg", rad_to_deg(e.boresight_rad)},
-        {"table_look_deg", table_look_deg},
-        {"table_gain", e.table_gain}}},
-      {"transmit_power_w", r.transmit_power_w},
-      {"peak_gain", r.peak_gain},
-      {"track", track},
-      {"speed_m_per_s", r.speed_m_per_s},
-      {"prf_hz", r.prf_hz},
-      {"independent_samples", r.independent_samples ? json(*r.independent_samples) : json("seed")},
-      {"azimuth_line_spacing_m", r.azimuth_line_spacing_m},
-      {"reference",
-       {{"auto", ref.automatic},
-        {"auto_greytone", ref.auto_greytone},
-        {"greytone", ref.greytone},
-        {"transmit_power_w", ref.transmit_power_w},
-        {"sigma0", ref.sigma0},
-        {"area_m2", ref.area_m2},
-        {"gain", ref.gain},
-        {"wavelength_m", ref.wavelength_m},
-        {"range_m", ref.range_m},
-        {"mean_power_w", optional_json(ref.mean_power_w)},
-        {"sigma0_category", ref.sigma0_category ? json(*ref.sigma0_category) : json(nullptr)},
-        {"sigma0_incidence_deg", rad_to_deg(ref.sigma0_incidence_rad)}}},
-      {"film",
-       {{"density_range", r.film.density_range},
-        {"gamma", r.film.gamma},
-        {"k_reference", r.film.k1},
-        {"k_simulated", r.film.k2},
-        {"m_reference", r.film.m1},
-        {"m_simulated", r.film.m2}}},
-      {"switches",
-       {{"transmit_power", sw.transmit_power},
-        {"wavelength", sw.wavelength},
-        {"antenna_gain", sw.antenna_gain},
-        {"backscatter", sw.backscatter},
-        {"area", sw.area},
-        {"range", sw.range},
-        {"k", sw.film_k},
-        {"m", sw.receiver_m},
-        {"fading", sw.fading}}},
-      {"fading", r.fading == FadingLaw::exact_gamma ? "exact" : "seed"}};
-}
 
 json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPictures& pic,
                    const SlarRunInfo& info) {
@@ -199,13 +80,13 @@ json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPict
           {"elevation_max_m", h_max},
           {"nodata_cells", g.nodata_cells},
           {"categories", categories}}},
-        {"radar", radar_params_json(sim.radar)},
+        {"radar", radar_to_json(sim.radar)},
         {"backscatter",
          {{"path", info.backscatter_path}, {"description", sim.backscatter_description}}},
         {"seed", info.seed},
         {"threads", info.threads}}},
       {"derived",
-       {{"radar", derived_json(sim.derived)},
+       {{"radar", derived_to_json(sim.derived)},
         {"track", track_json(sim.track)},
         {"geometry",
          {{"sampling", g.direct_sampling ? "direct (track along a grid axis: one sample per cell)"
@@ -269,9 +150,13 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
   write_png_gray(dir.path("slant_range.png"), pic.slant_grey.data(), img.bins, img.lines);
   write_png_gray(dir.path("ground_range.png"), pic.ground_grey.data(), sim.ground_grid.count,
                  img.lines);
-  write_geotiff<float>(dir.path("mean_power_slant.tif"), img.mean_power_w.data(), img.bins,
-                       img.lines, nullptr, std::nullopt,
-                       slant_metadata(img, "mean power before speckle", "W"), "mean_power_w");
+  // No-data pixels are NaN in the power rasters (the files' no-data value).
+  std::vector<float> mean = img.mean_power_w;
+  for (std::size_t i = 0; i < mean.size(); ++i)
+    if (img.mask[i] & pixel_flag::kNoData) mean[i] = std::numeric_limits<float>::quiet_NaN();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  write_geotiff<float>(dir.path("mean_power_slant.tif"), mean.data(), img.bins, img.lines, nullptr,
+                       nan, slant_metadata(img, "mean power before speckle", "W"), "mean_power_w");
   write_geotiff<float>(dir.path("speckled_power_slant.tif"), pic.speckled_power_w.data(), img.bins,
                        img.lines, nullptr, std::nullopt,
                        slant_metadata(img, "power after fading", "W"), "speckled_power_w");

@@ -6,8 +6,8 @@
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/image/greytone.h"
+#include "ris/image/greytone_image.h"
 #include "ris/image/greytone_terms.h"
-#include "ris/image/speckle.h"
 #include "ris/sensor/elevation_gain.h"
 #include "ris/util/error.h"
 
@@ -119,31 +119,23 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
 
 SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed) {
   const SlarImage& img = sim.image;
-  const RadarParams& radar = sim.radar;
   SlarPictures pic;
   pic.seed = seed;
-  pic.looks.resize(static_cast<std::size_t>(img.bins));
-  for (int b = 0; b < img.bins; ++b)
-    pic.looks[static_cast<std::size_t>(b)] = independent_samples(radar, img.range.centre_m(b));
-
-  // Fading (speckle), keyed by (seed, pixel).
-  pic.speckled_power_w = img.mean_power_w;
-  if (radar.switches.fading) {
-    apply_fading(pic.speckled_power_w, img.lines, img.bins, pic.looks, radar.fading, seed);
-  }
-
-  // Greytones (equation 15): the reference from the mean power, so the grey
-  // scale does not depend on the fading seed.
   std::vector<std::uint8_t> no_data(img.mask.size());
   for (std::size_t i = 0; i < no_data.size(); ++i)
     no_data[i] = (img.mask[i] & pixel_flag::kNoData) ? 1 : 0;
-  const GreytoneMap map = make_greytone_map(radar, img.mean_power_w, no_data);
-  pic.reference_power_w = map.reference_power_w();
-  pic.reference_greytone = map.reference_greytone();
-  pic.greytones_per_decade = map.greytones_per_decade();
-  pic.film_offset = map.film_offset();
-  pic.slant_grey.resize(img.mean_power_w.size());
-  greytones(pic.speckled_power_w, pic.slant_grey, map, no_data);
+
+  // Fading keyed by (seed, pixel) and greytones (equation 15), the reference
+  // from the mean power so the grey scale does not depend on the seed.
+  GreytoneImage g = make_greytone_image(sim.radar, img.mean_power_w, img.lines, img.bins,
+                                        img.range.near_m, img.range.bin_m, seed, no_data);
+  pic.looks = std::move(g.looks_per_bin);
+  pic.speckled_power_w = std::move(g.speckled_power_w);
+  pic.slant_grey = std::move(g.greytone);
+  pic.reference_power_w = g.map.reference_power_w();
+  pic.reference_greytone = g.map.reference_greytone();
+  pic.greytones_per_decade = g.map.greytones_per_decade();
+  pic.film_offset = g.map.film_offset();
 
   // Ground range: the speckled power resampled, then the same greytone map.
   const GroundRangeGrid& grid = sim.ground_grid;
@@ -154,7 +146,7 @@ SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed) {
   for (std::size_t i = 0; i < ground_no_data.size(); ++i)
     ground_no_data[i] = (pic.ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
   pic.ground_grey.resize(pic.ground_power_w.size());
-  greytones(pic.ground_power_w, pic.ground_grey, map, ground_no_data);
+  greytones(pic.ground_power_w, pic.ground_grey, g.map, ground_no_data);
   return pic;
 }
 

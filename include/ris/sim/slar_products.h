@@ -42,9 +42,6 @@ struct SlarRunInfo {
 nlohmann::json slar_metadata(const Scene& scene, const SlarSimulation& sim,
                              const SlarPictures& pictures, const SlarRunInfo& info);
 
-// Every RadarParams field, SI units named in the keys.
-nlohmann::json radar_params_json(const RadarParams& radar);
-
 void write_slar_products(const std::filesystem::path& out_dir, const Scene& scene,
                          const SlarSimulation& sim, const SlarPictures& pictures,
                          const SlarRunInfo& info);
