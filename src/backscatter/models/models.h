@@ -22,5 +22,15 @@ std::unique_ptr<BackscatterModel> make_constant_gamma(ConfigTable&, const ModelC
 std::unique_ptr<BackscatterModel> make_lambert(ConfigTable&, const ModelContext&);
 std::unique_ptr<BackscatterModel> make_oh1992(ConfigTable&, const ModelContext&);
 std::unique_ptr<BackscatterModel> make_water_cloud(ConfigTable&, const ModelContext&);
+std::unique_ptr<BackscatterModel> make_dubois1995(ConfigTable&, const ModelContext&);
+std::unique_ptr<BackscatterModel> make_spm(ConfigTable&, const ModelContext&);
+std::unique_ptr<BackscatterModel> make_ulaby_dobson(ConfigTable&, const ModelContext&);
+
+// The formulas, shared with the tests (each in its model's file).
+double dubois1995_sigma0(double eps_re, double ks, double wavelength_cm, double incidence_rad,
+                         Polarisation pol);
+double spm_sigma0(std::complex<double> eps, double k_per_m, double rms_height_m,
+                  double correlation_length_m, bool gaussian, double incidence_rad,
+                  Polarisation pol);
 
 }  // namespace ris::detail
