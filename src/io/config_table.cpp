@@ -34,6 +34,12 @@ bool ConfigTable::has(const std::string& key) const {
   return table_->contains(key);
 }
 
+std::vector<std::string> ConfigTable::keys() const {
+  std::vector<std::string> out;
+  for (const auto& [k, v] : *table_) out.emplace_back(k.str());
+  return out;
+}
+
 void ConfigTable::mark_used(const std::string& key) {
   used_.insert(key);
 }

@@ -34,6 +34,9 @@ class ConfigTable {
   ConfigTable(const toml::table& table, std::string file, std::string path);
 
   bool has(const std::string& key) const;
+  // Every key present, in file order (for tables keyed by the user, such as
+  // id -> name maps).
+  std::vector<std::string> keys() const;
 
   // Required values: throw InputError when missing or of the wrong type.
   double get_double(const std::string& key);

@@ -1,0 +1,228 @@
+#include "ris/image/scene_preview.h"
+
+#include <cairo.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ris/image/category_palette.h"
+#include "ris/image/hillshade.h"
+#include "ris/io/atomic_file.h"
+#include "ris/scene/scene_stats.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+
+namespace ris {
+
+std::vector<std::uint8_t> shaded_category_rgb(const Scene& scene, const ScenePreviewOptions& opt) {
+  const std::vector<float> shade = hillshade(scene, opt.light_azimuth_deg, opt.light_altitude_deg);
+  // Flat ground shades to sin(altitude); dividing by it keeps flat cells at
+  // their category colour. A floor of 0.25 keeps shaded slopes readable.
+  const double flat = std::sin(deg_to_rad(opt.light_altitude_deg));
+  std::vector<std::uint8_t> rgb(scene.size() * 3);
+  for (std::size_t i = 0; i < scene.size(); ++i) {
+    Rgb8 c = kNoDataColour;
+    double k = 1.0;
+    if (scene.valid[i]) {
+      c = category_colour(scene.category[i]);
+      k = 0.25 + 0.75 * static_cast<double>(shade[i]) / flat;
+    }
+    auto scaled = [k](std::uint8_t v) {
+      return static_cast<std::uint8_t>(std::clamp(std::lround(v * k), 0L, 255L));
+    };
+    rgb[3 * i] = scaled(c.r);
+    rgb[3 * i + 1] = scaled(c.g);
+    rgb[3 * i + 2] = scaled(c.b);
+  }
+  return rgb;
+}
+
+namespace {
+
+struct CairoSurface {
+  cairo_surface_t* s = nullptr;
+  ~CairoSurface() {
+    if (s != nullptr) cairo_surface_destroy(s);
+  }
+};
+struct CairoContext {
+  cairo_t* c = nullptr;
+  ~CairoContext() {
+    if (c != nullptr) cairo_destroy(c);
+  }
+};
+
+// A "nice" length (1, 2 or 5 times a power of ten) no longer than max_m.
+double nice_length(double max_m) {
+  const double p = std::pow(10.0, std::floor(std::log10(max_m)));
+  for (double m : {5.0, 2.0, 1.0}) {
+    if (m * p <= max_m) return m * p;
+  }
+  return p;
+}
+
+void text(cairo_t* cr, double x, double y, double size, const std::string& s, bool bold = false) {
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  cairo_move_to(cr, x, y);
+  cairo_show_text(cr, s.c_str());
+}
+
+}  // namespace
+
+void write_scene_preview(const Scene& scene, const std::filesystem::path& path,
+                         const ScenePreviewOptions& opt) {
+  scene.validate(path.string());
+  const std::vector<std::uint8_t> rgb = shaded_category_rgb(scene, opt);
+
+  // Map size: average whole blocks of `down` cells, or repeat each cell `up` times.
+  const int longer = std::max(scene.cols, scene.rows);
+  const int down = std::max(1, (longer + opt.max_map_px - 1) / std::max(1, opt.max_map_px));
+  const int up = down > 1 ? 1 : std::max(1, opt.min_map_px / longer);
+  const int map_w = (scene.cols / down) * up;
+  const int map_h = (scene.rows / down) * up;
+  RIS_CHECK(map_w > 0 && map_h > 0);
+
+  const SceneStats st = scene_stats(scene);
+  const int margin = 16;
+  const int legend_w = 300;
+  const int line_h = 20;
+  const int legend_lines =
+      9 + static_cast<int>(std::min<std::size_t>(st.category_counts.size(), 24));
+  const int width = margin + map_w + margin + legend_w;
+  const int height = std::max(margin + map_h + 56, margin + legend_lines * line_h + margin);
+
+  CairoSurface map;
+  map.s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, map_w, map_h);
+  {
+    cairo_surface_flush(map.s);
+    unsigned char* data = cairo_image_surface_get_data(map.s);
+    const int stride = cairo_image_surface_get_stride(map.s);
+    const int mc = scene.cols / down;
+    const int mr = scene.rows / down;
+    for (int r = 0; r < mr; ++r) {
+      for (int c = 0; c < mc; ++c) {
+        double sum[3] = {0, 0, 0};
+        for (int i = 0; i < down; ++i) {
+          for (int j = 0; j < down; ++j) {
+            const std::size_t k = 3 * scene.index(r * down + i, c * down + j);
+            for (int b = 0; b < 3; ++b) sum[b] += rgb[k + static_cast<std::size_t>(b)];
+          }
+        }
+        const double n = double(down) * down;
+        const auto px = (static_cast<std::uint32_t>(std::lround(sum[0] / n)) << 16) |
+                        (static_cast<std::uint32_t>(std::lround(sum[1] / n)) << 8) |
+                        static_cast<std::uint32_t>(std::lround(sum[2] / n));
+        for (int i = 0; i < up; ++i) {
+          auto* row = reinterpret_cast<std::uint32_t*>(
+              data + static_cast<std::ptrdiff_t>(r * up + i) * stride);
+          for (int j = 0; j < up; ++j) row[c * up + j] = px;
+        }
+      }
+    }
+    cairo_surface_mark_dirty(map.s);
+  }
+
+  CairoSurface page;
+  page.s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+  CairoContext ctx;
+  ctx.c = cairo_create(page.s);
+  cairo_t* cr = ctx.c;
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  cairo_set_source_surface(cr, map.s, margin, margin);
+  cairo_paint(cr);
+  cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+  cairo_set_line_width(cr, 1.0);
+  cairo_rectangle(cr, margin - 0.5, margin - 0.5, map_w + 1, map_h + 1);
+  cairo_stroke(cr);
+
+  // Scale bar under the map: a round length about a quarter of the width.
+  const double m_per_px = scene.dx_m * down / up;
+  const double bar_m = nice_length(map_w * m_per_px / 4.0);
+  const double bar_px = bar_m / m_per_px;
+  const double by = margin + map_h + 22;
+  cairo_set_line_width(cr, 3.0);
+  cairo_move_to(cr, margin, by);
+  cairo_line_to(cr, margin + bar_px, by);
+  cairo_stroke(cr);
+  const std::string bar_label =
+      bar_m >= 1000.0 ? fmt::format("{:g} km", bar_m / 1000.0) : fmt::format("{:g} m", bar_m);
+  text(cr, margin, by + 18, 12,
+       fmt::format("{}  ({:g} ft)", bar_label, std::round(bar_m / kFeetToMetres)));
+
+  // North arrow at the map's top-right corner (row 0 is north).
+  const double ax = margin + map_w - 20;
+  const double ay = margin + 14;
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_move_to(cr, ax, ay);
+  cairo_line_to(cr, ax - 7, ay + 18);
+  cairo_line_to(cr, ax + 7, ay + 18);
+  cairo_close_path(cr);
+  cairo_fill_preserve(cr);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, 1.0);
+  cairo_stroke(cr);
+  text(cr, ax - 5, ay + 34, 13, "N", true);
+
+  // Legend.
+  double x = margin + map_w + margin;
+  double y = margin + 14;
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  text(cr, x, y, 16, opt.title.empty() ? "scene" : opt.title, true);
+  y += line_h + 4;
+  const double ft = kFeetToMetres;
+  text(cr, x, y, 12, fmt::format("{} columns x {} rows", scene.cols, scene.rows));
+  y += line_h;
+  text(cr, x, y, 12,
+       fmt::format("cell {:g} m ({:g} ft)", scene.dx_m, std::round(scene.dx_m / ft * 100) / 100));
+  y += line_h;
+  text(cr, x, y, 12,
+       fmt::format("elevation {:.0f} .. {:.0f} m ({:.0f} .. {:.0f} ft)", st.min_elevation_m,
+                   st.max_elevation_m, st.min_elevation_m / ft, st.max_elevation_m / ft));
+  y += line_h;
+  text(cr, x, y, 12,
+       fmt::format("relief lit from {:g} deg, {:g} deg high", opt.light_azimuth_deg,
+                   opt.light_altitude_deg));
+  y += line_h;
+  if (st.nodata_cells > 0) {
+    text(cr, x, y, 12, fmt::format("no data: {} cells", st.nodata_cells));
+    y += line_h;
+  }
+  y += 6;
+  text(cr, x, y, 13, "category (share of cells)", true);
+  y += line_h;
+  std::size_t shown = 0;
+  for (const auto& [id, n] : st.category_counts) {
+    if (shown == 24) {
+      text(cr, x, y, 12, fmt::format("... and {} more", st.category_counts.size() - shown));
+      break;
+    }
+    const Rgb8 c = category_colour(id);
+    cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0);
+    cairo_rectangle(cr, x, y - 12, 22, 14);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    cairo_stroke(cr);
+    const auto name = opt.category_names.find(id);
+    const std::string label = name != opt.category_names.end()
+                                  ? fmt::format("{} {}", id, name->second)
+                                  : fmt::format("{}", id);
+    text(cr, x + 30, y, 12,
+         fmt::format("{}  ({:.1f}%)", label,
+                     100.0 * static_cast<double>(n) / static_cast<double>(st.valid_cells)));
+    y += line_h;
+    ++shown;
+  }
+  cairo_surface_flush(page.s);
+
+  AtomicPath out(path);
+  if (cairo_surface_write_to_png(page.s, out.temp_path().c_str()) != CAIRO_STATUS_SUCCESS) {
+    throw InputError(path.string(), "", "cannot write the PNG (is the folder writable?)");
+  }
+  out.commit();
+}
+
+}  // namespace ris
