@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "ris/io/raster_io.h"
 #include "ris/io/scene_io.h"
@@ -136,6 +137,46 @@ TEST(SceneCli, UnreadableOrNonRasterFileIsAnError) {
   r = test::run_ris("scene preview " + q(dir / "notes.tif") + " -o " + q(dir / "p.png"));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_FALSE(fs::exists(dir / "p.png"));
+}
+
+TEST(SceneCli, ElevationRasterWithCategoryRaster) {
+  test::TempDir dir;
+  const int cols = 30, rows = 20;
+  std::vector<float> dem(cols * rows, 5.0f);
+  dem[7] = 25.0f;
+  std::vector<std::uint16_t> cats(cols * rows, 3);
+  const Georef g{{1000.0, 10.0, 0.0, 5000.0, 0.0, -10.0}, ""};
+  write_geotiff<float>(dir / "dem.tif", dem.data(), cols, rows, &g);
+  write_geotiff<std::uint16_t>(dir / "cat.tif", cats.data(), cols, rows, &g);
+  const Georef other{{1000.0, 20.0, 0.0, 5000.0, 0.0, -20.0}, ""};
+  write_geotiff<std::uint16_t>(dir / "cat20.tif", cats.data(), cols, rows, &other);
+
+  auto r =
+      test::run_ris("scene info " + q(dir / "dem.tif") + " --categories " + q(dir / "cat.tif"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("size: 30 columns x 20 rows"));
+  EXPECT_THAT(r.output, HasSubstr("elevation: 5 .. 25 m"));
+  EXPECT_THAT(r.output, HasSubstr("      3:       600"));
+  // A category raster on another grid: refused, no picture.
+  r = test::run_ris("scene preview " + q(dir / "dem.tif") + " --categories " +
+                    q(dir / "cat20.tif") + " -o " + q(dir / "p.png"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_THAT(r.output, HasSubstr("cat20.tif"));
+  EXPECT_FALSE(fs::exists(dir / "p.png"));
+  // `scene build` takes descriptions only.
+  r = test::run_ris("scene build " + q(dir / "dem.tif") + " -o " + q(dir / "s.tif"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_THAT(r.output, HasSubstr("scene description"));
+  EXPECT_FALSE(fs::exists(dir / "s.tif"));
+}
+
+TEST(SceneCli, ObjectsListsEveryType) {
+  const auto r = test::run_ris("scene objects");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* t :
+       {"patch", "box", "wedge", "pyramid", "hemisphere", "cylinder", "tower", "checkerboard"}) {
+    EXPECT_THAT(r.output, HasSubstr(t));
+  }
 }
 
 }  // namespace

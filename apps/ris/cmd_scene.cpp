@@ -3,6 +3,7 @@
 //   ris scene build [SCENE.toml] -o scene.tif   TOML description -> GeoTIFF scene
 //   ris scene info [FILE]                       size, cell size, CRS, elevation, categories
 //   ris scene preview [FILE] -o preview.png     shaded relief + category colours + legend
+//   ris scene objects                           the object types of scene descriptions
 //
 // FILE is a scene description (.toml) or any raster GDAL reads (a ris scene
 // GeoTIFF or an elevation model). Without FILE the standard scene is used.
@@ -15,44 +16,25 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "command_registry.h"
 #include "ris/image/scene_preview.h"
 #include "ris/io/scene_io.h"
 #include "ris/scene/scene_builder.h"
+#include "ris/scene/scene_source.h"
 #include "ris/scene/scene_stats.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
 namespace {
 
-bool is_toml(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext == ".toml";
-}
+using ris::LoadedScene;
 
-// A scene from a description (built) or from a raster (read), with the
-// description's name and category labels when there is one.
-struct LoadedScene {
-  ris::Scene scene;
-  std::string name;
-  std::map<std::uint16_t, std::string> category_names;
-};
-
-LoadedScene load_scene(const std::string& path) {
-  LoadedScene out;
-  if (is_toml(path)) {
-    const ris::SceneDescription d = ris::read_scene_description(path);
-    out.scene = ris::build_scene(d);
-    out.name = d.name;
-    out.category_names = d.category_names;
-  } else {
-    out.scene = ris::read_scene(path);
-  }
-  return out;
+LoadedScene load_scene(const std::string& path, const std::string& categories) {
+  return ris::load_scene_source(
+      path, categories.empty() ? std::nullopt : std::optional<std::string>(categories));
 }
 
 std::string crs_name(const std::string& wkt) {
@@ -70,8 +52,8 @@ std::string crs_name(const std::string& wkt) {
   return name;
 }
 
-void print_info(const std::string& path) {
-  const LoadedScene loaded = load_scene(path);
+void print_info(const std::string& path, const std::string& categories) {
+  const LoadedScene loaded = load_scene(path, categories);
   const ris::Scene& s = loaded.scene;
   const std::string title = loaded.name.empty() ? "" : " (" + loaded.name + ")";
   const ris::SceneStats st = ris::scene_stats(s);
@@ -97,48 +79,76 @@ void print_info(const std::string& path) {
   }
 }
 
+struct SceneArgs {
+  std::string input = ris::app::default_scene_path();
+  std::string categories;  // optional category raster for an elevation raster
+  std::string output;
+};
+
+void add_input(CLI::App* cmd, SceneArgs& args) {
+  cmd->add_option("file", args.input,
+                  "Scene description (.toml) or raster (ris scene GeoTIFF or any DEM GDAL "
+                  "reads); default: the standard scene")
+      ->capture_default_str();
+  cmd->add_option("--categories", args.categories,
+                  "Category raster on the same grid as an elevation raster");
+}
+
 void add_scene(CLI::App& app) {
   auto* scene = app.add_subcommand("scene", "Build, describe and preview scenes");
   scene->require_subcommand(1);
 
   // scene build
   auto* build = scene->add_subcommand("build", "Build a scene description (TOML) into a GeoTIFF");
-  auto build_in = std::make_shared<std::string>(ris::app::default_scene_path());
-  auto build_out = std::make_shared<std::string>();
-  build->add_option("scene", *build_in, "Scene description (.toml); default: the standard scene")
+  auto build_args = std::make_shared<SceneArgs>();
+  build
+      ->add_option("scene", build_args->input,
+                   "Scene description (.toml); default: the standard scene")
       ->capture_default_str();
-  build->add_option("-o,--output", *build_out, "Output GeoTIFF (band 1 elevation, band 2 category)")
+  build
+      ->add_option("-o,--output", build_args->output,
+                   "Output GeoTIFF (band 1 elevation in metres, band 2 category)")
       ->required();
-  build->callback([build_in, build_out] {
-    const ris::Scene s = ris::build_scene_file(*build_in);
-    ris::write_scene_geotiff(s, *build_out);
-    spdlog::info("wrote {} ({} columns x {} rows)", *build_out, s.cols, s.rows);
+  build->callback([build_args] {
+    if (!ris::is_scene_description(build_args->input)) {
+      throw ris::InputError(build_args->input, "",
+                            "`scene build` takes a scene description (.toml); to turn a DEM "
+                            "into a scene use `ris scene import`");
+    }
+    const ris::Scene s = ris::build_scene_file(build_args->input);
+    ris::write_scene_geotiff(s, build_args->output);
+    spdlog::info("wrote {} ({} columns x {} rows)", build_args->output, s.cols, s.rows);
   });
 
   // scene info
   auto* info = scene->add_subcommand("info", "Describe a scene (.toml or raster)");
-  auto info_in = std::make_shared<std::string>(ris::app::default_scene_path());
-  info->add_option("file", *info_in, "Scene description (.toml) or raster; default: standard scene")
-      ->capture_default_str();
-  info->callback([info_in] { print_info(*info_in); });
+  auto info_args = std::make_shared<SceneArgs>();
+  add_input(info, *info_args);
+  info->callback([info_args] { print_info(info_args->input, info_args->categories); });
 
   // scene preview
   auto* preview = scene->add_subcommand(
       "preview", "Draw a scene: shaded relief in category colours, with a legend (PNG)");
-  auto prev_in = std::make_shared<std::string>(ris::app::default_scene_path());
-  auto prev_out = std::make_shared<std::string>();
-  preview
-      ->add_option("file", *prev_in, "Scene description (.toml) or raster; default: standard scene")
-      ->capture_default_str();
-  preview->add_option("-o,--output", *prev_out, "Output PNG")->required();
-  preview->callback([prev_in, prev_out] {
-    const LoadedScene loaded = load_scene(*prev_in);
+  auto prev_args = std::make_shared<SceneArgs>();
+  add_input(preview, *prev_args);
+  preview->add_option("-o,--output", prev_args->output, "Output PNG")->required();
+  preview->callback([prev_args] {
+    const LoadedScene loaded = load_scene(prev_args->input, prev_args->categories);
     ris::ScenePreviewOptions opt;
-    opt.title =
-        loaded.name.empty() ? std::filesystem::path(*prev_in).filename().string() : loaded.name;
+    opt.title = loaded.name.empty() ? std::filesystem::path(prev_args->input).filename().string()
+                                    : loaded.name;
     opt.category_names = loaded.category_names;
-    ris::write_scene_preview(loaded.scene, *prev_out, opt);
-    spdlog::info("wrote {}", *prev_out);
+    ris::write_scene_preview(loaded.scene, prev_args->output, opt);
+    spdlog::info("wrote {}", prev_args->output);
+  });
+
+  // scene objects
+  auto* objects = scene->add_subcommand(
+      "objects", "List the object types a scene description may use (docs/scene-format.md)");
+  objects->callback([] {
+    for (const ris::ObjectType& t : ris::object_types()) {
+      fmt::print("{:<13} {}\n", t.name, t.summary);
+    }
   });
 }
 

@@ -1,0 +1,34 @@
+// A scene from whatever file the user names: a scene description (.toml) is
+// built (scene_builder.h), anything else is read through GDAL (scene_io.h: a
+// ris scene GeoTIFF, or an elevation model with an optional category raster
+// on the same grid). Every command that takes a scene should load it here so
+// they all accept the same inputs.
+//
+// Example:
+//   ris::LoadedScene in = ris::load_scene_source(path);   // .toml or raster
+//   simulate(in.scene, ...);
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "ris/scene/scene.h"
+
+namespace ris {
+
+struct LoadedScene {
+  Scene scene;
+  std::string name;                                     // description's `name`, or ""
+  std::map<std::uint16_t, std::string> category_names;  // description's labels, or empty
+};
+
+// Whether a path names a scene description (extension .toml, any case).
+bool is_scene_description(const std::string& path);
+
+// category_path applies to rasters only (an InputError naming it otherwise).
+LoadedScene load_scene_source(const std::string& path,
+                              const std::optional<std::string>& category_path = std::nullopt);
+
+}  // namespace ris
