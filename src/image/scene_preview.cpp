@@ -15,6 +15,30 @@
 
 namespace ris {
 
+namespace {
+// A "nice" length (1, 2 or 5 times a power of ten) no longer than max_m.
+double nice_length(double max_m) {
+  const double p = std::pow(10.0, std::floor(std::log10(max_m)));
+  for (double m : {5.0, 2.0, 1.0}) {
+    if (m * p <= max_m) return m * p;
+  }
+  return p;
+}
+}  // namespace
+
+double preview_contour_interval_m(const ScenePreviewOptions& opt, double min_elevation_m,
+                                  double max_elevation_m) {
+  if (opt.contour_interval_m > 0.0) return opt.contour_interval_m;
+  const double range_m = max_elevation_m - min_elevation_m;
+  if (opt.contour_interval_m < 0.0 || !(range_m > 0.0) || !std::isfinite(range_m)) return 0.0;
+  // The smallest 1-2-5 interval giving at most 10 levels.
+  const double p = std::pow(10.0, std::floor(std::log10(range_m / 10.0)));
+  for (double m : {1.0, 2.0, 5.0, 10.0}) {
+    if (range_m / (m * p) <= 10.0) return m * p;
+  }
+  return 10.0 * p;
+}
+
 std::vector<std::uint8_t> shaded_category_rgb(const Scene& scene, const ScenePreviewOptions& opt) {
   const std::vector<float> shade = hillshade(scene, opt.light_azimuth_deg, opt.light_altitude_deg);
   // Flat ground shades to sin(altitude); dividing by it keeps flat cells at
@@ -35,6 +59,33 @@ std::vector<std::uint8_t> shaded_category_rgb(const Scene& scene, const ScenePre
     rgb[3 * i + 1] = scaled(c.g);
     rgb[3 * i + 2] = scaled(c.b);
   }
+  // Contours: darken the higher cell of each east or south neighbour pair
+  // whose elevations lie in different interval bands.
+  const SceneStats st = scene_stats(scene);
+  const double interval_m = preview_contour_interval_m(opt, st.min_elevation_m, st.max_elevation_m);
+  if (interval_m > 0.0) {
+    auto band = [&](std::size_t i) { return std::floor(scene.elevation_m[i] / interval_m); };
+    std::vector<std::uint8_t> on(scene.size(), 0);
+    for (int r = 0; r < scene.rows; ++r) {
+      for (int c = 0; c < scene.cols; ++c) {
+        const std::size_t i = scene.index(r, c);
+        if (!scene.valid[i]) continue;
+        for (const auto& [nr, nc] : {std::pair{r, c + 1}, std::pair{r + 1, c}}) {
+          if (!scene.contains(nr, nc)) continue;
+          const std::size_t j = scene.index(nr, nc);
+          if (!scene.valid[j] || band(i) == band(j)) continue;
+          on[scene.elevation_m[i] > scene.elevation_m[j] ? i : j] = 1;
+        }
+      }
+    }
+    for (std::size_t i = 0; i < scene.size(); ++i) {
+      if (!on[i]) continue;
+      for (int b = 0; b < 3; ++b) {
+        auto& v = rgb[3 * i + static_cast<std::size_t>(b)];
+        v = static_cast<std::uint8_t>(v * 0.45);
+      }
+    }
+  }
   return rgb;
 }
 
@@ -52,15 +103,6 @@ struct CairoContext {
     if (c != nullptr) cairo_destroy(c);
   }
 };
-
-// A "nice" length (1, 2 or 5 times a power of ten) no longer than max_m.
-double nice_length(double max_m) {
-  const double p = std::pow(10.0, std::floor(std::log10(max_m)));
-  for (double m : {5.0, 2.0, 1.0}) {
-    if (m * p <= max_m) return m * p;
-  }
-  return p;
-}
 
 void text(cairo_t* cr, double x, double y, double size, const std::string& s, bool bold = false) {
   cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
@@ -187,6 +229,12 @@ void write_scene_preview(const Scene& scene, const std::filesystem::path& path,
        fmt::format("relief lit from {:g} deg, {:g} deg high", opt.light_azimuth_deg,
                    opt.light_altitude_deg));
   y += line_h;
+  const double interval_m = preview_contour_interval_m(opt, st.min_elevation_m, st.max_elevation_m);
+  if (interval_m > 0.0) {
+    text(cr, x, y, 12,
+         fmt::format("contours every {:g} m ({:.4g} ft)", interval_m, interval_m / ft));
+    y += line_h;
+  }
   if (st.nodata_cells > 0) {
     text(cr, x, y, 12, fmt::format("no data: {} cells", st.nodata_cells));
     y += line_h;
