@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -177,6 +178,27 @@ TEST(SceneCli, ObjectsListsEveryType) {
        {"patch", "box", "wedge", "pyramid", "hemisphere", "cylinder", "tower", "checkerboard"}) {
     EXPECT_THAT(r.output, HasSubstr(t));
   }
+}
+
+TEST(SceneCli, TheDocumentedExampleBuilds) {
+  // The indented block under "## Example" in docs/scene-format.md.
+  const std::string doc =
+      test::read_file(fs::path(RIS_DATA_DIR).parent_path() / "docs" / "scene-format.md");
+  const std::size_t start = doc.find("## Example");
+  ASSERT_NE(start, std::string::npos);
+  const std::size_t end = doc.find("\n## ", start + 1);
+  std::string toml;
+  std::istringstream lines(doc.substr(start, end - start));
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("    ", 0) == 0) toml += line.substr(4) + "\n";
+  }
+  ASSERT_THAT(toml, HasSubstr("type = \"pyramid\""));
+  test::TempDir dir;
+  test::write_file(dir / "example.toml", toml);
+  const auto r = test::run_ris("scene info " + q(dir / "example.toml"));
+  ASSERT_EQ(r.exit_code, 0) << r.output << toml;
+  EXPECT_THAT(r.output, HasSubstr("size: 300 columns x 200 rows"));
+  EXPECT_THAT(r.output, HasSubstr("short corn"));
 }
 
 }  // namespace
