@@ -4,11 +4,54 @@
 #include <cctype>
 #include <filesystem>
 
+#include <gdal.h>
+#include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
+
+#include "ris/io/gdal_util.h"
 #include "ris/io/scene_io.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/util/error.h"
 
 namespace ris {
+
+std::map<std::string, std::string> scene_label_metadata(
+    const std::string& name, const std::map<std::uint16_t, std::string>& category_names) {
+  std::map<std::string, std::string> out;
+  if (!name.empty()) out[kSceneNameMetadata] = name;
+  if (!category_names.empty()) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [id, label] : category_names) j[std::to_string(id)] = label;
+    out[kCategoryNamesMetadata] = j.dump();
+  }
+  return out;
+}
+
+namespace {
+
+// Name and labels from a raster's metadata; a malformed item is ignored with
+// a warning (the labels only decorate pictures).
+void read_labels(const std::string& path, LoadedScene& out) {
+  const GdalDataset ds = open_raster(path);
+  if (const char* name = GDALGetMetadataItem(handle(ds), kSceneNameMetadata, nullptr)) {
+    out.name = name;
+  }
+  const char* names = GDALGetMetadataItem(handle(ds), kCategoryNamesMetadata, nullptr);
+  if (names == nullptr) return;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(names);
+    for (const auto& [key, value] : j.items()) {
+      const unsigned long id = std::stoul(key);
+      if (id <= kMaxCategory && value.is_string()) {
+        out.category_names[static_cast<std::uint16_t>(id)] = value.get<std::string>();
+      }
+    }
+  } catch (const std::exception& e) {
+    spdlog::warn("{}: ignoring malformed {} metadata ({})", path, kCategoryNamesMetadata, e.what());
+  }
+}
+
+}  // namespace
 
 bool is_scene_description(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -31,10 +74,10 @@ LoadedScene load_scene_source(const std::string& path,
     out.scene = build_scene(d);
     out.name = d.name;
     out.category_names = d.category_names;
-  } else if (category_path) {
-    out.scene = read_scene(path, std::filesystem::path(*category_path));
   } else {
-    out.scene = read_scene(path);
+    out.scene =
+        category_path ? read_scene(path, std::filesystem::path(*category_path)) : read_scene(path);
+    read_labels(path, out);
   }
   return out;
 }

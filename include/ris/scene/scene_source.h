@@ -24,10 +24,21 @@ struct LoadedScene {
   std::map<std::uint16_t, std::string> category_names;  // description's labels, or empty
 };
 
+// GeoTIFF metadata items that carry a description's name and category
+// labels into a built scene file, so pictures of it keep their legend:
+// RIS_SCENE_NAME (text) and RIS_CATEGORY_NAMES (a JSON object, id -> label).
+inline constexpr const char* kSceneNameMetadata = "RIS_SCENE_NAME";
+inline constexpr const char* kCategoryNamesMetadata = "RIS_CATEGORY_NAMES";
+
+// The metadata items above for a name and labels (empty ones left out).
+std::map<std::string, std::string> scene_label_metadata(
+    const std::string& name, const std::map<std::uint16_t, std::string>& category_names);
+
 // Whether a path names a scene description (extension .toml, any case).
 bool is_scene_description(const std::string& path);
 
-// category_path applies to rasters only (an InputError naming it otherwise).
+// A raster's name and labels come from the metadata items above when it has
+// them. category_path applies to rasters only (an InputError naming it otherwise).
 LoadedScene load_scene_source(const std::string& path,
                               const std::optional<std::string>& category_path = std::nullopt);
 
