@@ -135,17 +135,54 @@ TEST(Library, BadLibrariesNameFileAndKey) {
   EXPECT_NE(load_error("x", "lib.txt").find("expected a category library"), std::string::npos);
 }
 
-TEST(Library, ShippedKuGeometricCoversTheTenCategoriesAtXBand) {
+TEST(Library, ShippedKuGeometricCoversTheTenCategoriesFromLToKuBand) {
   auto src = load_sigma0_source(default_sigma0_library_path());
   std::vector<std::uint16_t> ids;
   for (std::uint16_t i = 1; i <= 10; ++i) ids.push_back(i);
   EXPECT_EQ(src->category_ids(), ids);
-  EXPECT_EQ(src->category_name(1), "wheat stubble");
-  EXPECT_EQ(src->category_name(10), "green wheat");
-  for (Polarisation p : {Polarisation::HH, Polarisation::VV}) {
-    const Sigma0Lut lut = Sigma0Lut::build(*src, RadarBand{8.6e9, p}, ids, "ku-geometric");
-    for (std::uint16_t c : ids) EXPECT_TRUE(lut.has(c));
+  const char* names[] = {"wheat stubble", "tall alfalfa", "short alfalfa", "short corn",
+                         "tall corn",     "short milo",   "tall milo",     "short soybeans",
+                         "tall soybeans", "green wheat"};
+  for (std::uint16_t i = 1; i <= 10; ++i) EXPECT_EQ(src->category_name(i), names[i - 1]);
+  // Every band from L to Ku, every polarisation: inside every component's
+  // validity range (a range violation would throw here).
+  for (double f : {1.0e9, 1.25e9, 3.2e9, 5.3e9, 8.6e9, 9.6e9, 13.5e9, 18.0e9}) {
+    for (Polarisation p : {Polarisation::HH, Polarisation::VV, Polarisation::HV}) {
+      const Sigma0Lut lut = Sigma0Lut::build(*src, RadarBand{f, p}, ids, "ku-geometric");
+      for (std::uint16_t c : ids) EXPECT_TRUE(lut.has(c));
+    }
   }
+  // Outside 1-18 GHz the library refuses (its stated validity range).
+  EXPECT_THROW(src->sigma0(5, 0.5, RadarBand{35e9, Polarisation::HH}), InputError);
+  // A dense canopy approaches the water cloud's opaque limit A cos(t): tall corn
+  // (W = 4.5 kg/m^2) at 8.6 GHz, 30 deg, within 0.3 dB of 0.228 cos 30 deg
+  // (-7.05 dB; A from Attema & Ulaby 1978 as documented in the library).
+  EXPECT_NEAR(db(src->sigma0(5, deg_to_rad(30.0), {8.6e9, Polarisation::HH})),
+              db(0.228 * std::cos(deg_to_rad(30.0))), 0.3);
+  // Cross-pol sits well below co-pol for every crop.
+  for (std::uint16_t c : ids) {
+    EXPECT_LT(src->sigma0(c, deg_to_rad(40.0), {5.3e9, Polarisation::HV}),
+              0.5 * src->sigma0(c, deg_to_rad(40.0), {5.3e9, Polarisation::VV}));
+  }
+}
+
+TEST(Library, ShippedGenericTerrainCoversIds20To27FromLToKuBand) {
+  auto src = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/generic-terrain.toml");
+  std::vector<std::uint16_t> ids;
+  for (std::uint16_t i = 20; i <= 27; ++i) ids.push_back(i);
+  EXPECT_EQ(src->category_ids(), ids);
+  EXPECT_EQ(src->category_name(20), "bare soil");
+  EXPECT_EQ(src->category_name(27), "snow");
+  for (double f : {1.0e9, 1.25e9, 5.3e9, 9.6e9, 18.0e9}) {
+    for (Polarisation p : {Polarisation::HH, Polarisation::VV, Polarisation::HV}) {
+      const Sigma0Lut lut = Sigma0Lut::build(*src, RadarBand{f, p}, ids, "generic-terrain");
+      for (std::uint16_t c : ids) EXPECT_TRUE(lut.has(c));
+    }
+  }
+  // Smooth surfaces (water, road) are at least 5 dB darker than rough ones off nadir.
+  const RadarBand x{9.6e9, Polarisation::VV};
+  EXPECT_LT(src->sigma0(23, deg_to_rad(40.0), x), 0.316 * src->sigma0(22, deg_to_rad(40.0), x));
+  EXPECT_LT(src->sigma0(25, deg_to_rad(40.0), x), 0.316 * src->sigma0(24, deg_to_rad(40.0), x));
 }
 
 TEST(Library, ShippedTableMatchesTheLibraryItWasGeneratedFrom) {

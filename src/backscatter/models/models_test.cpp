@@ -239,6 +239,15 @@ TEST(WaterCloud, LimitsAndAHandValue) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "m.ground.permittivity");
   }
+  // A and B as power laws in frequency: A = 0.2 (f / 10 GHz)^1 is 0.1 at 5 GHz,
+  // so an opaque canopy gives 0.1 cos(t).
+  auto law = model(
+      "name = \"water_cloud\", A = { value = 0.2, frequency = \"10 GHz\", "
+      "exponent = 1.0 }, B = { value = 1e6, frequency = \"1 GHz\", exponent = 0.5 }, "
+      "V1 = 1, V2 = 1, " +
+      ground);
+  EXPECT_NEAR(law->sigma0(deg_to_rad(30.0), RadarBand{5e9, Polarisation::VV}),
+              0.1 * std::cos(deg_to_rad(30.0)), 1e-12);
   EXPECT_THROW(model("name = \"water_cloud\", A = -1, B = 0.5, V1 = 1, V2 = 1, " + ground),
                InputError);
   EXPECT_THROW(model("name = \"water_cloud\", A = 0.2, B = 0.5, V1 = 1, V2 = 1"), InputError);

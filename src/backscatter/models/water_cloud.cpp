@@ -10,7 +10,11 @@
 // MODEL.md section 4.
 // Parameters:
 //   A, B     fitted constants (>= 0); their units are the inverse of V1's and
-//            V2's (with V = vegetation water content in kg/m^2, B in m^2/kg)
+//            V2's (with V = vegetation water content in kg/m^2, B in m^2/kg).
+//            Either a number, or a power law in frequency (a ris extension,
+//            for one parameter set valid across bands):
+//              A = { value = 0.228, frequency = "8.6 GHz", exponent = 0.75 }
+//            meaning A(f) = value (f / frequency)^exponent.
 //   V1, V2   canopy descriptors (>= 0), e.g. vegetation water content or LAI
 //   ground   a table naming the ground model and its parameters
 // Validity: A and B are fitted per crop, band and polarisation; state the
@@ -33,9 +37,36 @@
 namespace ris::detail {
 namespace {
 
+// A constant or value * (f / f0)^exponent.
+struct PowerLaw {
+  double value = 0.0;
+  double f0_hz = 1.0;
+  double exponent = 0.0;
+  double at(double f_hz) const { return value * std::pow(f_hz / f0_hz, exponent); }
+  std::string describe() const {
+    if (exponent == 0.0) return fmt::format("{:g}", value);
+    return fmt::format("{:g} (f / {:g} GHz)^{:g}", value, f0_hz / 1e9, exponent);
+  }
+};
+
+PowerLaw get_power_law(ConfigTable& params, const std::string& key) {
+  if (!params.has(key)) params.fail(key, "missing required key");
+  if (params.raw(key)->is_table()) {
+    std::optional<ConfigTable> t = params.subtable(key);
+    PowerLaw p;
+    p.value = get_nonnegative(*t, "value");
+    p.f0_hz = t->get_quantity("frequency", Quantity::frequency);
+    if (!(p.f0_hz > 0.0)) t->fail("frequency", "expected a reference frequency > 0");
+    p.exponent = t->get_double("exponent");
+    t->finish();
+    return p;
+  }
+  return PowerLaw{get_nonnegative(params, key), 1.0, 0.0};
+}
+
 class WaterCloud final : public BackscatterModel {
  public:
-  WaterCloud(double a, double b, double v1, double v2, std::unique_ptr<BackscatterModel> ground)
+  WaterCloud(PowerLaw a, PowerLaw b, double v1, double v2, std::unique_ptr<BackscatterModel> ground)
       : a_(a), b_(b), v1_(v1), v2_(v2), ground_(std::move(ground)) {}
 
   void check_band(const RadarBand& band) const override { ground_->check_band(band); }
@@ -45,18 +76,19 @@ class WaterCloud final : public BackscatterModel {
     // At grazing incidence the path through the canopy is infinite: tau^2 = 0
     // and the canopy term A V1 cos(theta) vanishes too.
     if (c <= 1e-12) return 0.0;
-    const double tau2 = std::exp(-2.0 * b_ * v2_ / c);
-    return a_ * v1_ * c * (1.0 - tau2) + tau2 * ground_->sigma0(incidence_rad, band);
+    const double f = band.frequency_hz;
+    const double tau2 = std::exp(-2.0 * b_.at(f) * v2_ / c);
+    return a_.at(f) * v1_ * c * (1.0 - tau2) + tau2 * ground_->sigma0(incidence_rad, band);
   }
 
   std::string describe() const override {
-    return fmt::format("water_cloud A = {:g}, B = {:g}, V1 = {:g}, V2 = {:g} over {}", a_, b_, v1_,
-                       v2_, ground_->describe());
+    return fmt::format("water_cloud A = {}, B = {}, V1 = {:g}, V2 = {:g} over {}", a_.describe(),
+                       b_.describe(), v1_, v2_, ground_->describe());
   }
 
  private:
-  double a_;
-  double b_;
+  PowerLaw a_;
+  PowerLaw b_;
   double v1_;
   double v2_;
   std::unique_ptr<BackscatterModel> ground_;
@@ -65,8 +97,8 @@ class WaterCloud final : public BackscatterModel {
 }  // namespace
 
 std::unique_ptr<BackscatterModel> make_water_cloud(ConfigTable& params, const ModelContext& ctx) {
-  const double a = get_nonnegative(params, "A");
-  const double b = get_nonnegative(params, "B");
+  const PowerLaw a = get_power_law(params, "A");
+  const PowerLaw b = get_power_law(params, "B");
   const double v1 = get_nonnegative(params, "V1");
   const double v2 = get_nonnegative(params, "V2");
   std::optional<ConfigTable> ground = params.subtable("ground");
