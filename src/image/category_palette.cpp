@@ -43,22 +43,42 @@ Rgb8 from_hsv(double h, double s, double v) {
 }  // namespace
 
 Rgb8 category_colour(std::uint16_t category) {
-  // The seed's ten crops, in its Figure 3 order: colours that suggest the
-  // crop and stay distinct from their neighbours.
-  static constexpr std::array<Rgb8, 11> kCrops{{
-      {190, 190, 190},  // 0  unassigned / bare
-      {214, 188, 128},  // 1  wheat stubble: straw
-      {34, 112, 52},    // 2  tall alfalfa: dark green
-      {140, 206, 110},  // 3  short alfalfa: light green
-      {236, 214, 72},   // 4  short corn: yellow
-      {214, 140, 30},   // 5  tall corn: amber
-      {234, 150, 130},  // 6  short milo: salmon
-      {160, 52, 44},    // 7  tall milo: brick red
-      {150, 196, 234},  // 8  short soybeans: light blue
-      {44, 92, 176},    // 9  tall soybeans: blue
-      {52, 170, 156},   // 10 green wheat: teal
+  // The seed's ten crops (ids 1..10, its Figure 3 order) and the generic
+  // land-cover ids 20..27: the same colours as the shipped category
+  // libraries data/backscatter/ku-geometric.toml and generic-terrain.toml
+  // (a test keeps them in step), so a picture made without a library
+  // matches one made with it.
+  static constexpr std::array<Rgb8, 28> kKnown{{
+      {190, 190, 190},     // 0  unassigned: neutral grey
+      {0xc8, 0xb4, 0x6e},  // 1  wheat stubble
+      {0x1f, 0x7a, 0x3a},  // 2  tall alfalfa
+      {0x6c, 0xc4, 0x6a},  // 3  short alfalfa
+      {0xe8, 0xd0, 0x4a},  // 4  short corn
+      {0xb0, 0x8a, 0x1a},  // 5  tall corn
+      {0xe8, 0x9a, 0x5a},  // 6  short milo
+      {0xa8, 0x44, 0x1c},  // 7  tall milo
+      {0x9a, 0xc8, 0xe8},  // 8  short soybeans
+      {0x2a, 0x6a, 0xb0},  // 9  tall soybeans
+      {0x8e, 0xe0, 0x4a},  // 10 green wheat
+      {},
+      {},
+      {},
+      {},
+      {},
+      {},
+      {},
+      {},
+      {},                  // 11..19: generated below
+      {0xa0, 0x52, 0x2d},  // 20 bare soil
+      {0x7c, 0xfc, 0x00},  // 21 grass
+      {0x00, 0x64, 0x00},  // 22 forest
+      {0x1e, 0x64, 0xc8},  // 23 water
+      {0xb0, 0xb0, 0xb0},  // 24 urban
+      {0x40, 0x40, 0x40},  // 25 road
+      {0x8c, 0x8c, 0x78},  // 26 rock
+      {0xf0, 0xf8, 0xff},  // 27 snow
   }};
-  if (category < kCrops.size()) return kCrops[category];
+  if (category <= 10 || (category >= 20 && category < kKnown.size())) return kKnown[category];
   // Golden-angle hue walk, alternating brightness, for every other id.
   const double h = std::fmod(0.1 + 0.6180339887498949 * category, 1.0);
   const double v = (category % 2 == 0) ? 0.85 : 0.65;

@@ -9,6 +9,7 @@
 #include <set>
 #include <tuple>
 
+#include "ris/backscatter/library.h"
 #include "ris/image/category_palette.h"
 #include "ris/image/hillshade.h"
 #include "ris/io/raster_io.h"
@@ -27,6 +28,24 @@ TEST(CategoryPalette, CropsAreDistinctAndStable) {
     EXPECT_EQ(c.r, again.r);
   }
   EXPECT_EQ(seen.size(), 41u);  // no two of the first 41 ids share a colour
+}
+
+TEST(CategoryPalette, MatchesTheShippedCategoryLibraries) {
+  for (const char* lib : {"ku-geometric.toml", "generic-terrain.toml"}) {
+    const auto src = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/" + lib);
+    int checked = 0;
+    for (std::uint16_t id = 0; id < 64; ++id) {
+      if (!src->has_category(id)) continue;
+      const auto lib_colour = src->category_colour(id);
+      ASSERT_TRUE(lib_colour.has_value()) << lib << " " << id;
+      const Rgb8 c = category_colour(id);
+      EXPECT_EQ(c.r, (*lib_colour)[0]) << lib << " " << id;
+      EXPECT_EQ(c.g, (*lib_colour)[1]) << lib << " " << id;
+      EXPECT_EQ(c.b, (*lib_colour)[2]) << lib << " " << id;
+      ++checked;
+    }
+    EXPECT_GE(checked, 8) << lib;
+  }
 }
 
 TEST(Hillshade, TiltedPlaneMatchesTheAnalyticCosine) {

@@ -3,10 +3,14 @@
 //
 // Ids 1..10 are the seed's ten crops (Figure 3 of its Appendix B: wheat
 // stubble, tall alfalfa, short alfalfa, short corn, tall corn, short milo,
-// tall milo, short soybeans, tall soybeans, green wheat) and get hand-picked,
-// distinct colours; 0 is neutral grey; any other id gets a colour from a
-// golden-angle walk round the hue circle, so it is stable and neighbouring
-// ids differ.
+// tall milo, short soybeans, tall soybeans, green wheat) and 20..27 the
+// generic land covers (bare soil, grass, forest, water, urban, road, rock,
+// snow): they get the colours of the shipped category libraries
+// (data/backscatter/*.toml). 0 is neutral grey; any other id gets a colour
+// from a golden-angle walk round the hue circle, so it is stable and
+// neighbouring ids differ. A picture made with a category library should
+// prefer the library's colour (Sigma0Source::category_colour) and fall back
+// to this one.
 //
 // Example:
 //   ris::Rgb8 c = ris::category_colour(scene.category[i]);
