@@ -183,10 +183,18 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
   }
   img.samples_in_swath = in_swath;
   if (in_swath == 0) {
-    throw InputError(radar_file, "swath",
-                     fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the scene: "
-                                 "no scene point with data lies in it",
-                                 p.range.near_m, p.range.far_m()));
+    // Where the scene is, for the message.
+    float r_min = std::numeric_limits<float>::infinity(), r_max = -r_min;
+    for (std::size_t i = 0; i < g.flags.size(); ++i) {
+      if (g.flags[i] & (sample_flag::kNoData | sample_flag::kUnseen)) continue;
+      r_min = std::min(r_min, g.slant_range_m[i]);
+      r_max = std::max(r_max, g.slant_range_m[i]);
+    }
+    throw InputError(radar_file, "sweep_delay",
+                     fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the scene, "
+                                 "which spans slant range {:.1f} to {:.1f} m; expected a sweep "
+                                 "delay and length (or near range and range bins) that overlap it",
+                                 p.range.near_m, p.range.far_m(), r_min, r_max));
   }
 
   // Azimuth: per bin, a running sum over lines. Line j stands for the strip

@@ -85,7 +85,7 @@ struct SlarImage {
 };
 
 // Forms the image. Throws InputError naming radar_file when the swath misses
-// every scene sample with data (key "swath"), and when a visible element's
+// every scene sample with data (key "sweep_delay"), and when a visible element's
 // category is not in the lut (key "category").
 SlarImage form_slar_image(const SlarGeometry& geometry, const Sigma0Lut& lut,
                           const SlarImagingParams& params, const std::string& radar_file);
