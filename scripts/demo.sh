@@ -12,4 +12,10 @@ mkdir -p "$out"
 "$ris" scene preview -o "$out/ku-geometric-preview.png"
 "$ris" scene info "$out/ku-geometric.tif"
 
+# The seed's figure-4-5 SLAR simulation of the standard scene (docs/outputs.md):
+# greytone images in slant and ground range, power and mask GeoTIFFs, the
+# seed's shadow map and metadata.json, all in $out.
+"$ris" simulate --out "$out"
+
 echo "ris: demo outputs are in $(cd "$out" && pwd)"
+echo "ris:   SLAR images: $out/slant_range.png, $out/ground_range.png; shadow map: $out/shadowmap.txt"
