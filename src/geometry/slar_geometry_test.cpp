@@ -155,6 +155,55 @@ TEST(SlarGeometry, TrackHeadingEastOnTransposedSceneGivesTheSameGeometry) {
   }
 }
 
+TEST(SlarGeometry, TrackHeadingSouthOnSceneTurnedHalfwayGivesTheSameGeometry) {
+  // Scene C is A turned by 180 deg; a track heading south looks west at it.
+  Scene a = Scene::flat(12, 30, kCell, 0.0f, 1);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    a.elevation_m[i] = static_cast<float>(30.0 * std::cos(0.23 * double(i)));
+  Scene c = a;
+  for (int r = 0; r < a.rows; ++r)
+    for (int col = 0; col < a.cols; ++col)
+      c.elevation_m[c.index(a.rows - 1 - r, a.cols - 1 - col)] = a.elevation_m[a.index(r, col)];
+  TrackSpec spec;
+  spec.heading_rad = kPi;
+  spec.near_edge_ground_m = kNear;
+  spec.altitude_m = kH;
+  const SlarGeometry ga = compute_slar_geometry(a, north_track(a), 0.0, "radar.toml");
+  const SlarGeometry gc =
+      compute_slar_geometry(c, resolve_track(spec, c, "radar.toml"), 0.0, "radar.toml");
+  ASSERT_TRUE(gc.direct_sampling);
+  ASSERT_EQ(ga.flags.size(), gc.flags.size());
+  for (std::size_t i = 0; i < ga.flags.size(); ++i) {
+    EXPECT_NEAR(ga.slant_range_m[i], gc.slant_range_m[i], 1e-3);
+    EXPECT_NEAR(ga.local_incidence_rad[i], gc.local_incidence_rad[i], 1e-5);
+    EXPECT_EQ(ga.flags[i], gc.flags[i]);
+  }
+}
+
+TEST(SlarGeometry, LeftLookingTrackOnMirroredSceneGivesTheSameGeometry) {
+  Scene a = Scene::flat(12, 30, kCell, 0.0f, 1);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    a.elevation_m[i] = static_cast<float>(25.0 * std::sin(0.71 * double(i)));
+  Scene m = a;
+  for (int r = 0; r < a.rows; ++r)
+    for (int col = 0; col < a.cols; ++col)
+      m.elevation_m[m.index(r, a.cols - 1 - col)] = a.elevation_m[a.index(r, col)];
+  TrackSpec spec;
+  spec.heading_rad = 0.0;
+  spec.look_side = LookSide::left;
+  spec.near_edge_ground_m = kNear;
+  spec.altitude_m = kH;
+  const SlarGeometry ga = compute_slar_geometry(a, north_track(a), 0.0, "radar.toml");
+  const SlarGeometry gm =
+      compute_slar_geometry(m, resolve_track(spec, m, "radar.toml"), 0.0, "radar.toml");
+  ASSERT_EQ(ga.flags.size(), gm.flags.size());
+  for (std::size_t i = 0; i < ga.flags.size(); ++i) {
+    EXPECT_NEAR(ga.slant_range_m[i], gm.slant_range_m[i], 1e-3);
+    EXPECT_NEAR(ga.local_incidence_rad[i], gm.local_incidence_rad[i], 1e-5);
+    EXPECT_EQ(ga.flags[i], gm.flags[i]);
+  }
+}
+
 TEST(SlarGeometry, RotatedTrackUsesBilinearSamplingAtHalfCellSteps) {
   const Scene s = Scene::flat(40, 40, kCell, 5.0f, 2);
   TrackSpec spec;
