@@ -4,6 +4,7 @@
 //              --frequency "8.6 GHz" --pol HH,VV --angles 0:90:10
 //   ris sigma0 --model 'name = "oh1992", rms_height = "1 cm", permittivity = "15 - 4j"'
 //              --frequency "5.405 GHz" --pol HH,VV,HV --angles 30 --format json
+//   ris sigma0 --category all --pol HH,VV --plot sigma0.png
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
@@ -11,11 +12,14 @@
 
 #include <cmath>
 #include <functional>
+#include <iterator>
+#include <set>
 #include <sstream>
 
 #include "command_registry.h"
 #include "ris/backscatter/backscatter_model.h"
 #include "ris/backscatter/library.h"
+#include "ris/image/line_chart.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/config_table.h"
 #include "ris/util/error.h"
@@ -37,7 +41,10 @@ struct Options {
   std::string polarisations = "HH,VV";
   std::string angles = "0:90:5";
   std::string format = "table";
+  std::string plot;
+  std::string out;
   bool allow_extrapolation = false;
+  bool list_models = false;
 };
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -105,6 +112,15 @@ double to_db(double linear) {
 }
 
 void run(const Options& o) {
+  if (o.list_models) {
+    for (const ris::ModelInfo& m : ris::backscatter_model_names()) {
+      fmt::print("{:<16} {}\n", m.name, m.summary);
+    }
+    fmt::print(
+        "dielectric models (a soil model's permittivity table): dobson1985, "
+        "hallikainen1985, mironov2009\n");
+    return;
+  }
   const std::vector<double> angles = parse_angles_deg(o.angles);
   double frequency_hz = 0.0;
   try {
@@ -174,26 +190,32 @@ void run(const Options& o) {
     }
   }
 
-  // Output.
+  // Output: built as text, then printed or written atomically to --out.
+  std::string text;
   if (o.format == "csv") {
     // The sigma0 table format (include/ris/backscatter/sigma0_table.h), so the
     // output can be shipped as a table file.
-    fmt::print("# sigma0 table written by ris {} (ris sigma0)\n", RIS_VERSION);
-    fmt::print("# values below {:g} dB are written as {:g} dB\n", kFloorDb, kFloorDb);
+    fmt::format_to(std::back_inserter(text), "# sigma0 table written by ris {} (ris sigma0)\n",
+                   RIS_VERSION);
+    fmt::format_to(std::back_inserter(text), "# values below {:g} dB are written as {:g} dB\n",
+                   kFloorDb, kFloorDb);
     std::set<int> named;
     for (const Series& s : series) {
       if (named.insert(s.category).second) {
-        fmt::print("# category {}: {}\n", s.category, s.name);
+        fmt::format_to(std::back_inserter(text), "# category {}: {}\n", s.category, s.name);
       }
     }
     for (const Series& s : series)
-      fmt::print("#   model of category {} at {:g} GHz {}: {}\n", s.category,
-                 s.band.frequency_hz / 1e9, ris::to_string(s.band.polarisation), s.model);
-    fmt::print("category,frequency_ghz,polarisation,angle_deg,sigma0_db\n");
+      fmt::format_to(std::back_inserter(text), "#   model of category {} at {:g} GHz {}: {}\n",
+                     s.category, s.band.frequency_hz / 1e9, ris::to_string(s.band.polarisation),
+                     s.model);
+    fmt::format_to(std::back_inserter(text),
+                   "category,frequency_ghz,polarisation,angle_deg,sigma0_db\n");
     for (const Series& s : series) {
       for (size_t i = 0; i < angles.size(); ++i) {
-        fmt::print("{},{:g},{},{:g},{:.3f}\n", s.category, s.band.frequency_hz / 1e9,
-                   ris::to_string(s.band.polarisation), angles[i], s.sigma0_db[i]);
+        fmt::format_to(std::back_inserter(text), "{},{:g},{},{:g},{:.3f}\n", s.category,
+                       s.band.frequency_hz / 1e9, ris::to_string(s.band.polarisation), angles[i],
+                       s.sigma0_db[i]);
       }
     }
   } else if (o.format == "json") {
@@ -207,25 +229,63 @@ void run(const Options& o) {
                    {"angle_deg", angles},
                    {"sigma0_db", s.sigma0_db}});
     }
-    fmt::print("{}\n", j.dump(2));
+    fmt::format_to(std::back_inserter(text), "{}\n", j.dump(2));
   } else if (o.format == "table") {
-    fmt::print("sigma0 (dB) at {:g} GHz\n", frequency_hz / 1e9);
+    fmt::format_to(std::back_inserter(text), "sigma0 (dB) at {:g} GHz\n", frequency_hz / 1e9);
     for (const Series& s : series) {
-      fmt::print("  {:>3} {}: {} {}\n", s.category, ris::to_string(s.band.polarisation), s.name,
-                 s.model);
+      fmt::format_to(std::back_inserter(text), "  {:>3} {}: {} {}\n", s.category,
+                     ris::to_string(s.band.polarisation), s.name, s.model);
     }
-    fmt::print("{:>9}", "angle_deg");
+    fmt::format_to(std::back_inserter(text), "{:>9}", "angle_deg");
     for (const Series& s : series) {
-      fmt::print(" {:>9}", fmt::format("{}{}", s.category, ris::to_string(s.band.polarisation)));
+      fmt::format_to(std::back_inserter(text), " {:>9}",
+                     fmt::format("{}{}", s.category, ris::to_string(s.band.polarisation)));
     }
-    fmt::print("\n");
+    fmt::format_to(std::back_inserter(text), "\n");
     for (size_t i = 0; i < angles.size(); ++i) {
-      fmt::print("{:>9g}", angles[i]);
-      for (const Series& s : series) fmt::print(" {:>9.2f}", s.sigma0_db[i]);
-      fmt::print("\n");
+      fmt::format_to(std::back_inserter(text), "{:>9g}", angles[i]);
+      for (const Series& s : series)
+        fmt::format_to(std::back_inserter(text), " {:>9.2f}", s.sigma0_db[i]);
+      fmt::format_to(std::back_inserter(text), "\n");
     }
   } else {
     throw InputError("", "--format", "expected table, csv or json, got \"" + o.format + "\"");
+  }
+  if (o.out.empty()) {
+    fmt::print("{}", text);
+  } else {
+    ris::write_text_file_atomic(o.out, text);
+  }
+
+  if (!o.plot.empty()) {
+    // One colour per category (the library's display colour), one dash
+    // pattern per polarisation.
+    std::vector<ris::ChartSeries> curves;
+    for (const Series& s : series) {
+      ris::ChartSeries c;
+      c.label = s.category == 0 ? fmt::format("model {}", ris::to_string(s.band.polarisation))
+                                : fmt::format("{} {} {}", s.category, s.name,
+                                              ris::to_string(s.band.polarisation));
+      c.x = angles;
+      c.y = s.sigma0_db;
+      if (s.colour) {
+        c.colour = ris::Rgb8{(*s.colour)[0], (*s.colour)[1], (*s.colour)[2]};
+      } else {
+        c.colour = ris::category_colour(static_cast<std::uint16_t>(s.category));
+      }
+      c.dash =
+          static_cast<int>(std::find(pols.begin(), pols.end(), s.band.polarisation) - pols.begin());
+      curves.push_back(std::move(c));
+    }
+    ris::ChartSpec spec;
+    spec.title = fmt::format("Backscatter at {:g} GHz", frequency_hz / 1e9);
+    spec.x_label = "incidence angle (deg)";
+    spec.y_label = "sigma0 (dB)";
+    spec.y_floor = kFloorDb;
+    spec.x_min = angles.front();
+    spec.x_max = angles.back();
+    ris::write_line_chart_png(o.plot, spec, curves);
+    spdlog::info("wrote {}", o.plot);
   }
 }
 
@@ -251,6 +311,10 @@ void add_sigma0(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--format", opts->format, "Output: table, csv (the table file format) or json")
       ->capture_default_str();
+  cmd->add_option("--out,-o", opts->out, "Write the table/CSV/JSON to this file instead of stdout");
+  cmd->add_option("--plot", opts->plot,
+                  "Also draw sigma0 (dB) against incidence for every series into this PNG");
+  cmd->add_flag("--models", opts->list_models, "List the registered backscatter models and exit");
   cmd->add_flag("--allow-extrapolation", opts->allow_extrapolation,
                 "For --model: warn instead of failing outside the model's validity range");
   cmd->callback([opts] { run(*opts); });
