@@ -156,7 +156,7 @@ std::unique_ptr<Sigma0Source> load_library(const std::string& path) {
     allow_extrapolation = lib->get_bool_or("allow_extrapolation", false);
     lib->finish();
   }
-  std::map<std::string, std::shared_ptr<const Sigma0Table>> tables;
+  auto tables = std::make_shared<std::map<std::string, std::shared_ptr<const Sigma0Table>>>();
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
   std::vector<Category> categories;
   std::set<std::int64_t> seen;
@@ -180,7 +180,7 @@ std::unique_ptr<Sigma0Source> load_library(const std::string& path) {
     ctx.base_dir = base_dir;
     ctx.allow_extrapolation = t.get_bool_or("allow_extrapolation", allow_extrapolation);
     ctx.category_id = static_cast<int>(id);
-    ctx.table_cache = &tables;
+    ctx.table_cache = tables;
     if (auto m = t.subtable("model")) c.model = make_backscatter_model(*m, ctx);
     std::vector<ConfigTable> bands = t.table_array("band");
     for (ConfigTable& b : bands) {

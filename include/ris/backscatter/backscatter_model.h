@@ -33,8 +33,10 @@ struct ModelContext {
   std::string base_dir;              // folder that relative file names resolve against
   bool allow_extrapolation = false;  // out-of-validity inputs warn instead of failing
   int category_id = -1;              // the library category being built, or -1
-  // Tables already read, by resolved path (shared between categories); may be null.
-  std::map<std::string, std::shared_ptr<const Sigma0Table>>* table_cache = nullptr;
+  // Tables already read, by resolved path (shared between the categories of
+  // one library; shared ownership, so a model keeping a copy of its context
+  // never holds a dangling pointer); may be null.
+  std::shared_ptr<std::map<std::string, std::shared_ptr<const Sigma0Table>>> table_cache;
 };
 
 // Reports an input outside a model's validity range: an InputError naming the

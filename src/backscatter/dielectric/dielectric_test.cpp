@@ -34,7 +34,7 @@ TEST(Mironov2009, BelowTheBoundWaterLimitOnlyBoundWaterCounts) {
 }
 
 TEST(Hallikainen1985, TableVAtATabulatedFrequency) {
-  // Loam (sand 30.6 %, clay 13.5 %, Hallikainen et al. 1985 field 3) at mv = 0.2,
+  // A soil with sand 30.6 % and clay 13.5 % at mv = 0.2,
   // 1.4 GHz, from Table V by hand:
   //   eps'  = (2.862 - 0.012*30.6 + 0.001*13.5) + (3.803 + 0.462*30.6 - 0.341*13.5)*0.2
   //         + (119.006 - 0.500*30.6 + 0.633*13.5)*0.04 = 9.6657
