@@ -10,7 +10,9 @@
 // Empirical models and experimental observations", IEEE Trans. Geosci.
 // Remote Sens. GE-23(1), 25-34, Table V, as reproduced in open-source
 // implementations (a Python moisture_to_eps_hallikainen with all nine rows;
-// the 1.4, 4 and 6 GHz rows agree with M. Natali's lib_SOIL.py and wcm_swb).
+// the 1.4, 4 and 6 GHz rows agree with M. Natali's lib_SOIL.py and wcm_swb;
+// one other public transcription, a MATLAB penetration-depth script, has
+// c2 = -0.633 for eps' at 1.4 GHz: ris follows the three that agree on +0.633).
 // Between the tabulated frequencies ris interpolates eps' and eps''
 // linearly in frequency (the paper gives no rule; snapping to the nearest
 // frequency, as some implementations do, makes sigma0 jump between bands).
