@@ -11,8 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <iterator>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -169,13 +171,25 @@ void run(const Options& o) {
     if (o.categories == "all") {
       ids = src->category_ids();
     } else {
+      // Ids or names ("5,tall milo").
       for (const auto& c : split(o.categories, ',')) {
-        const double v = parse_double(c, "--category");
-        if (v < 1 || v > 65535 || v != std::floor(v) ||
-            !src->has_category(static_cast<std::uint16_t>(v))) {
-          throw InputError(path, "--category", fmt::format("no category {} in the file", c));
+        std::optional<std::uint16_t> id;
+        for (std::uint16_t known : src->category_ids()) {
+          if (src->category_name(known) == c) id = known;
         }
-        ids.push_back(static_cast<std::uint16_t>(v));
+        if (!id) {
+          char* end = nullptr;
+          const long v = std::strtol(c.c_str(), &end, 10);
+          if (end != c.c_str() && *end == '\0' && v >= 1 && v <= 65535 &&
+              src->has_category(static_cast<std::uint16_t>(v))) {
+            id = static_cast<std::uint16_t>(v);
+          }
+        }
+        if (!id) {
+          throw InputError(path, "--category",
+                           fmt::format("no category \"{}\" in the file (give ids or names)", c));
+        }
+        ids.push_back(*id);
       }
     }
     for (std::uint16_t id : ids) {
@@ -297,7 +311,8 @@ void add_sigma0(CLI::App& app) {
   cmd->add_option("--library", opts->library,
                   "Category library (.toml) or sigma0 table (.csv); default "
                   "data/backscatter/ku-geometric.toml");
-  cmd->add_option("--category", opts->categories, "Category ids, comma separated, or \"all\"")
+  cmd->add_option("--category", opts->categories,
+                  "Category ids or names, comma separated, or \"all\"")
       ->capture_default_str();
   cmd->add_option("--model", opts->model,
                   "A model with inline parameters instead of a library, as TOML key = value "
