@@ -2,7 +2,7 @@
 // G_e(beta) relative to boresight at look angle beta from nadir (MODEL.md
 // section 3; the radar equation uses G_e^2 and the radar's peak gain).
 //
-// Evaluated per sample without a virtual call: the shape is a enum switched
+// Evaluated per sample without a virtual call: the shape is an enum switched
 // on inline (DESIGN.md principle 5); a table is searched by bisection.
 //
 //   uniform   G_e = 1
