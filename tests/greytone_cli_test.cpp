@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "ris/io/raster_io.h"
+#include "ris/io/scene_io.h"
+#include "ris/scene/scene.h"
 #include "test_util.h"
 
 namespace ris {
@@ -59,6 +61,66 @@ TEST(GreytoneCli, SpeckledUniformAreaCentresOnTheAutoGreytone) {
                 .exit_code,
             0);
   EXPECT_NE(test::read_file(png), test::read_file(png2));
+}
+
+// Re-running the greytone stage on a simulation's saved mean power, with the
+// same radar and seed, reproduces the simulation's slant-range image; another
+// film changes it without a new simulation.
+TEST(GreytoneCli, ReproducesTheSimulationsSlantRangeImage) {
+  test::TempDir dir;
+  Scene scene = Scene::flat(40, 120, 10.0, 0.0f, 1);
+  for (int r = 10; r < 25; ++r) {
+    for (int c = 50; c < 70; ++c) scene.elevation_m[scene.index(r, c)] = 100.0f;
+  }
+  write_scene_geotiff(scene, dir / "scene.tif");
+  const std::string radar_text = R"(
+mode = "slar"
+frequency = "9.4 GHz"
+polarisation = "HH"
+pulse_width = "0.1 us"
+sweep_delay = "33.4 us"
+sweep_length = "8 us"
+azimuth_beamwidth = "5 mrad"
+independent_samples = 3
+[track]
+altitude = "3000 m"
+near_edge_distance = "4000 m"
+)";
+  test::write_file(dir / "radar.toml", radar_text);
+  test::write_file(dir / "library.toml", R"(
+[library]
+name = "test"
+[[category]]
+id = 1
+name = "grass"
+colour = "#30a030"
+[category.model]
+name = "constant_gamma"
+gamma_db = -12.0
+)");
+  const auto out = dir / "out";
+  const test::RunResult sim =
+      test::run_ris("simulate --scene " + (dir / "scene.tif").string() + " --radar " +
+                    (dir / "radar.toml").string() + " --backscatter " +
+                    (dir / "library.toml").string() + " --out " + out.string() + " --seed 11");
+  ASSERT_EQ(sim.exit_code, 0) << sim.output;
+  const auto again = dir / "again.png";
+  const std::string greytone = "greytone " + (out / "mean_power_slant.tif").string() + " --radar " +
+                               (dir / "radar.toml").string() + " --out ";
+  ASSERT_EQ(test::run_ris(greytone + again.string() + " --seed 11").exit_code, 0);
+  const RasterF64 a = read_raster_f64(out / "slant_range.png");
+  const RasterF64 b = read_raster_f64(again);
+  ASSERT_EQ(a.cols, b.cols);
+  ASSERT_EQ(a.rows, b.rows);
+  EXPECT_EQ(a.data, b.data);
+  // Another film (gamma 2 instead of 1): a new image from the same mean power.
+  test::write_file(dir / "film.toml", radar_text + "[film]\ngamma = 2.0\n");
+  const auto film = dir / "film.png";
+  ASSERT_EQ(test::run_ris("greytone " + (out / "mean_power_slant.tif").string() + " --radar " +
+                          (dir / "film.toml").string() + " --out " + film.string() + " --seed 11")
+                .exit_code,
+            0);
+  EXPECT_NE(read_raster_f64(film).data, a.data);
 }
 
 TEST(GreytoneCli, RasterThatDoesNotMatchTheRadarFails) {
