@@ -57,6 +57,9 @@ TEST(SceneCli, DefaultSceneBuildInfoPreview) {
   EXPECT_THAT(r.output, HasSubstr("(0 .. 2000 ft)"));
   EXPECT_THAT(r.output, HasSubstr("no-data cells: 0"));
   EXPECT_THAT(r.output, HasSubstr("categories: 10"));
+  // The description's name and labels travel in the GeoTIFF's metadata.
+  EXPECT_THAT(r.output, HasSubstr("(ku-geometric)"));
+  EXPECT_THAT(r.output, HasSubstr("short milo"));
   r = test::run_ris("scene info");  // the description itself, with names
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("ku-geometric"));

@@ -115,8 +115,11 @@ void add_scene(CLI::App& app) {
                             "`scene build` takes a scene description (.toml); to turn a DEM "
                             "into a scene use `ris scene import`");
     }
-    const ris::Scene s = ris::build_scene_file(build_args->input);
-    ris::write_scene_geotiff(s, build_args->output);
+    const ris::SceneDescription d = ris::read_scene_description(build_args->input);
+    const ris::Scene s = ris::build_scene(d);
+    // The name and labels travel in the file, so previews of it keep them.
+    ris::write_scene_geotiff(s, build_args->output,
+                             ris::scene_label_metadata(d.name, d.category_names));
     spdlog::info("wrote {} ({} columns x {} rows)", build_args->output, s.cols, s.rows);
   });
 

@@ -13,7 +13,8 @@
 
 namespace ris {
 
-void write_scene_geotiff(const Scene& scene, const std::filesystem::path& path) {
+void write_scene_geotiff(const Scene& scene, const std::filesystem::path& path,
+                         const RasterMetadata& extra_metadata) {
   scene.validate(path.string());
   const float nan = std::numeric_limits<float>::quiet_NaN();
   std::vector<float> elevation(scene.size());
@@ -24,9 +25,11 @@ void write_scene_geotiff(const Scene& scene, const std::filesystem::path& path) 
     category[i] = ok ? static_cast<float>(scene.category[i]) : nan;
   }
   Georef georef{scene.geotransform(), scene.crs_wkt};
-  write_geotiff_bands<float>(
-      path, {{elevation.data(), "elevation_m"}, {category.data(), "category"}}, scene.cols,
-      scene.rows, &georef, static_cast<double>(nan), {{"RIS_SCENE", "1"}});
+  RasterMetadata metadata = extra_metadata;
+  metadata["RIS_SCENE"] = "1";
+  write_geotiff_bands<float>(path,
+                             {{elevation.data(), "elevation_m"}, {category.data(), "category"}},
+                             scene.cols, scene.rows, &georef, static_cast<double>(nan), metadata);
 }
 
 namespace {

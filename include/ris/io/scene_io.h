@@ -19,11 +19,15 @@
 #include <optional>
 #include <string>
 
+#include "ris/io/raster_io.h"
 #include "ris/scene/scene.h"
 
 namespace ris {
 
-void write_scene_geotiff(const Scene& scene, const std::filesystem::path& path);
+// extra_metadata: items added to the file's metadata (provenance such as
+// RIS_SOURCE_DEM, RIS_FRAME; see ris/io/dem_import.h).
+void write_scene_geotiff(const Scene& scene, const std::filesystem::path& path,
+                         const RasterMetadata& extra_metadata = {});
 
 // Reads a ris scene file or an elevation raster (any GDAL format). With
 // category_path, categories come from band 1 of that raster, which must have
