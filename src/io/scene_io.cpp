@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 #include <gdal.h>
+#include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <limits>
 #include <vector>
 
+#include "ris/io/dem_import.h"
 #include "ris/io/gdal_util.h"
 #include "ris/io/raster_io.h"
 #include "ris/util/error.h"
@@ -98,6 +100,19 @@ void fill_categories(Scene& scene, const std::vector<float>& cat, const std::str
 Scene read_scene(const std::filesystem::path& path,
                  const std::optional<std::filesystem::path>& category_path) {
   const std::string p = path.string();
+  if (dem_needs_import(path)) {
+    // A geographic DEM: import on the fly (UTM zone of its centre, default cell size).
+    if (category_path) {
+      throw InputError(category_path->string(), "",
+                       "a category raster cannot be combined with the geographic DEM " + p +
+                           "; import it with: ris scene import " + p +
+                           " --landcover LC --mapping M -o scene.tif");
+    }
+    ImportedDem dem = import_dem(path);
+    spdlog::info("{}: imported into {} at {} m cells ({} no-data cells)", p, dem.frame,
+                 dem.scene.dx_m, dem.nodata_cells);
+    return std::move(dem.scene);
+  }
   GdalDataset ds = open_raster(p);
   const Grid g = grid_of(handle(ds));
   check_scene_fits_in_memory(g.rows, g.cols, p, "");

@@ -8,7 +8,9 @@
 //
 // Any other GDAL raster is read as an elevation model (band 1) with every
 // cell of category 0, or with categories from a second raster on exactly the
-// same grid.
+// same grid. A DEM in a geographic CRS (or in feet) is imported on the fly
+// with import_dem (ris/io/dem_import.h): reprojected into the UTM zone of its
+// centre at the default cell size.
 //
 // Example:
 //   ris::Scene s = ris::read_scene("scene.tif");
