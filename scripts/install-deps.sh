@@ -10,6 +10,7 @@ packages=(
   libfmt-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcairo2-dev fonts-dejavu-core
+  libkissfft-dev
   clang-format
 )
 

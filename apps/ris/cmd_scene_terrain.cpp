@@ -1,22 +1,31 @@
 // `ris scene import` and `ris scene fractal`: scenes from real DEMs and land
 // cover, and seeded fractal relief (docs/terrain.md). These attach to the
 // `scene` command group (apps/ris/cmd_scene.cpp); registered under a name that
-// sorts after "scene" so that group exists first.
+// sorts after "scene" so that the group exists first (and is created here
+// when it does not).
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "command_registry.h"
 #include "ris/io/dem_import.h"
 #include "ris/io/scene_io.h"
+#include "ris/scene/fractal_terrain.h"
+#include "ris/scene/geo_frame.h"
+#include "ris/scene/landcover.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
 namespace {
 
-// The `scene` group, created here when cmd_scene.cpp has not made it.
 CLI::App* scene_group(CLI::App& app) {
   auto found = app.get_subcommands([](CLI::App* sub) { return sub->get_name() == "scene"; });
   if (!found.empty()) return found.front();
@@ -25,50 +34,237 @@ CLI::App* scene_group(CLI::App& app) {
   return scene;
 }
 
-// A length option: a bare number in metres or "<number> <unit>".
-double parse_length(const std::string& text, const std::string& key) {
+// A quantity option: a bare number in the default unit or "<number> <unit>".
+double parse_option(const std::string& text, ris::Quantity q, const std::string& key) {
   try {
-    return ris::parse_quantity(text, ris::Quantity::length);
+    return ris::parse_quantity(text, q);
   } catch (const std::invalid_argument& e) {
     throw ris::InputError("", key, e.what());
   }
 }
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const auto b = item.find_first_not_of(' ');
+    const auto e = item.find_last_not_of(' ');
+    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
+  }
+  return out;
+}
+
+// Names of categories in a library, empty when the library is absent and
+// not needed (ids only).
+std::map<std::string, std::uint16_t> names_if_present(const std::string& library,
+                                                      bool explicit_library) {
+  if (explicit_library || std::filesystem::exists(library)) {
+    return ris::read_category_names(library);
+  }
+  return {};
+}
+
+// ---- ris scene import --------------------------------------------------
 
 struct ImportArgs {
   std::string dem;
   std::string output;
   std::string cell_size;
   std::string crs;
+  std::string landcover;
+  std::string mapping;
+  std::string default_category;
 };
 
 void run_import(const ImportArgs& args) {
+  if (args.landcover.empty() != args.mapping.empty()) {
+    throw ris::InputError("", args.landcover.empty() ? "--mapping" : "--landcover",
+                          "--landcover and --mapping go together (a land-cover raster and the "
+                          "file mapping its codes to categories)");
+  }
+  if (!args.default_category.empty() && args.mapping.empty()) {
+    throw ris::InputError("", "--default-category", "needs --landcover and --mapping");
+  }
+  // Check the mapping before the (slower) DEM import.
+  std::optional<ris::LandCoverMapping> mapping;
+  if (!args.mapping.empty()) {
+    mapping = ris::read_landcover_mapping(args.mapping);
+    if (!args.default_category.empty()) {
+      mapping->default_category =
+          ris::resolve_category(*mapping, args.default_category, "--default-category");
+    }
+  }
   ris::DemImportOptions options;
-  if (!args.cell_size.empty()) options.cell_size_m = parse_length(args.cell_size, "--cell-size");
+  if (!args.cell_size.empty()) {
+    options.cell_size_m = parse_option(args.cell_size, ris::Quantity::length, "--cell-size");
+  }
   if (!args.crs.empty()) options.crs = args.crs;
   ris::ImportedDem dem = ris::import_dem(args.dem, options);
-  ris::write_scene_geotiff(dem.scene, args.output, dem.metadata);
-  fmt::print("{}: {} x {} cells of {} m in {}; {} no-data cells; heights: {}\n", args.output,
-             dem.scene.cols, dem.scene.rows, dem.scene.dx_m, dem.frame, dem.nodata_cells,
-             dem.vertical_datum);
+  ris::RasterMetadata metadata = dem.metadata;
+  std::string landcover_note;
+  if (mapping) {
+    ris::LandCoverStats st = ris::apply_landcover(dem.scene, args.landcover, *mapping);
+    metadata.insert(st.metadata.begin(), st.metadata.end());
+    // Cells without land cover may have been masked: recount.
+    metadata["RIS_NODATA_CELLS"] = std::to_string(ris::count_nodata(dem.scene));
+    landcover_note =
+        fmt::format("; land cover: {} cells mapped, {} defaulted, {} without cover",
+                    st.mapped_cells, st.default_cells, st.fill_cells + st.unfilled_cells);
+  }
+  ris::write_scene_geotiff(dem.scene, args.output, metadata);
+  fmt::print("{}: {} x {} cells of {} m in {}; {} no-data cells; heights: {}{}\n", args.output,
+             dem.scene.cols, dem.scene.rows, dem.scene.dx_m, dem.frame,
+             ris::count_nodata(dem.scene), dem.vertical_datum, landcover_note);
+}
+
+// ---- ris scene fractal -------------------------------------------------
+
+struct FractalArgs {
+  std::string output;
+  std::string size = "512";
+  std::string cell_size = "30 m";
+  std::string relief = "1000 m";
+  std::string base = "0 m";
+  double hurst = 0.8;
+  std::uint64_t seed = 1;
+  std::string category = "0";
+  std::string patches;
+  std::string patch_size = "500 m";
+  std::string library;
+  std::string centre;
+};
+
+std::pair<int, int> parse_size(const std::string& text) {
+  int cols = 0, rows = 0;
+  char x = 0;
+  std::istringstream in(text);
+  if (text.find('x') != std::string::npos) {
+    in >> cols >> x >> rows;
+  } else {
+    in >> cols;
+    rows = cols;
+  }
+  if (in.fail() || !in.eof() || cols < 2 || rows < 2) {
+    throw ris::InputError(
+        "", "--size", fmt::format("expected COLSxROWS or N (cells, at least 2), got \"{}\"", text));
+  }
+  return {cols, rows};
+}
+
+void run_fractal(const FractalArgs& args) {
+  ris::FractalParams p;
+  p.source = "ris scene fractal";
+  std::tie(p.cols, p.rows) = parse_size(args.size);
+  p.cell_m = parse_option(args.cell_size, ris::Quantity::length, "--cell-size");
+  p.relief_m = parse_option(args.relief, ris::Quantity::length, "--relief");
+  p.base_m = parse_option(args.base, ris::Quantity::length, "--base");
+  p.hurst = args.hurst;
+  p.seed = args.seed;
+  const std::string library =
+      args.library.empty() ? ris::app::data_path("backscatter/generic-terrain.toml") : args.library;
+  const auto names = names_if_present(library, !args.library.empty());
+  p.category = ris::parse_category(args.category, names, "--category");
+  for (const std::string& item : split_list(args.patches)) {
+    p.patch_categories.push_back(ris::parse_category(item, names, "--patches"));
+  }
+  if (!p.patch_categories.empty()) {
+    p.patch_size_m = parse_option(args.patch_size, ris::Quantity::length, "--patch-size");
+  }
+  ris::Scene scene = ris::fractal_terrain(p);
+
+  // Optionally placed on the Earth: centred on a latitude/longitude in the
+  // WGS 84 UTM zone there, on a grid aligned to whole cells.
+  if (!args.centre.empty()) {
+    const auto parts = split_list(args.centre);
+    double lat = NAN, lon = NAN;
+    if (parts.size() == 2) {
+      lat = parse_option(parts[0], ris::Quantity::dimensionless, "--centre");
+      lon = parse_option(parts[1], ris::Quantity::dimensionless, "--centre");
+    }
+    if (!(std::abs(lat) <= 90.0) || !(std::abs(lon) <= 180.0)) {
+      throw ris::InputError("", "--centre", "expected LAT,LON in degrees (e.g. --centre 46.5,8.0)");
+    }
+    scene.crs_wkt = ris::utm_wkt_for(lon, lat);
+    auto [x, y] = ris::GeoFrame(scene.crs_wkt, "--centre").scene_from_lonlat(lon, lat);
+    scene.origin_x_m = std::round((x - 0.5 * scene.cols * p.cell_m) / p.cell_m) * p.cell_m;
+    scene.origin_y_m = std::round((y + 0.5 * scene.rows * p.cell_m) / p.cell_m) * p.cell_m;
+  }
+
+  const int max_lag = std::min(64, std::min(p.rows, p.cols) / 8);
+  const double h_est = max_lag >= 16 ? ris::estimate_hurst(scene, 8, max_lag) : NAN;
+  std::string patch_list;
+  for (auto c : p.patch_categories)
+    patch_list += (patch_list.empty() ? "" : ",") + std::to_string(c);
+  ris::RasterMetadata metadata = {
+      {"RIS_GENERATOR", "ris scene fractal (spectral synthesis of fBm)"},
+      {"RIS_FRACTAL", fmt::format("seed={} hurst={} relief_m={} base_m={} cell_m={} size={}x{}",
+                                  p.seed, p.hurst, p.relief_m, p.base_m, p.cell_m, p.cols, p.rows)},
+      {"RIS_FRACTAL_CATEGORIES",
+       patch_list.empty() ? std::to_string(p.category)
+                          : fmt::format("patches of {} m from {}", p.patch_size_m, patch_list)},
+      {"RIS_VERTICAL_DATUM", "local: elevation above the scene's flat datum"},
+      {"RIS_NODATA_CELLS", "0"},
+  };
+  ris::write_scene_geotiff(scene, args.output, metadata);
+  fmt::print(
+      "{}: {} x {} cells of {} m, heights {} to {} m, Hurst exponent {} (variogram "
+      "estimate {:.2f}), seed {}\n",
+      args.output, p.cols, p.rows, p.cell_m, p.base_m, p.base_m + p.relief_m, p.hurst, h_est,
+      p.seed);
 }
 
 void add_scene_terrain(CLI::App& app) {
   CLI::App* scene = scene_group(app);
 
-  auto args = std::make_shared<ImportArgs>();
+  auto ia = std::make_shared<ImportArgs>();
   auto* import = scene->add_subcommand(
       "import",
       "Import a DEM (any GDAL raster; geographic DEMs are reprojected into the UTM zone of "
-      "their centre) as a scene GeoTIFF");
-  import->add_option("dem", args->dem, "Elevation raster (GeoTIFF, SRTM .hgt, ...)")->required();
-  import->add_option("-o,--output", args->output, "Scene GeoTIFF to write")->required();
-  import->add_option("--cell-size", args->cell_size,
+      "their centre) and optional land cover as a scene GeoTIFF");
+  import->add_option("dem", ia->dem, "Elevation raster (GeoTIFF, SRTM .hgt, ...)")->required();
+  import->add_option("-o,--output", ia->output, "Scene GeoTIFF to write")->required();
+  import->add_option("--cell-size", ia->cell_size,
                      "Output cell size (\"30\", \"30 m\", \"100 ft\"); default: the DEM's "
                      "posting in metres, rounded to two significant digits");
-  import->add_option("--crs", args->crs,
+  import->add_option("--crs", ia->crs,
                      "CRS of the DEM when the file has none (EPSG:4326, WKT, PROJ string)");
-  import->callback([args] { run_import(*args);
+  import->add_option("--landcover", ia->landcover,
+                     "Categorical land-cover raster (any CRS), resampled by nearest neighbour");
+  import->add_option("--mapping", ia->mapping,
+                     "TOML file mapping land-cover codes to categories (data/landcover/*.toml)");
+  import->add_option("--default-category", ia->default_category,
+                     "Category (name or id) of land-cover codes the mapping does not list");
+  import->callback([ia] { run_import(*ia);
 });
+
+auto fa = std::make_shared<FractalArgs>();
+auto* fractal = scene->add_subcommand(
+    "fractal", "Generate seeded fractal terrain (fBm with a Hurst exponent) as a scene GeoTIFF");
+fractal->add_option("-o,--output", fa->output, "Scene GeoTIFF to write")->required();
+fractal->add_option("--size", fa->size, "Cells: N (square) or COLSxROWS")->capture_default_str();
+fractal->add_option("--cell-size", fa->cell_size, "Cell size")->capture_default_str();
+fractal->add_option("--relief", fa->relief, "Highest minus lowest elevation")
+    ->capture_default_str();
+fractal->add_option("--base", fa->base, "Lowest elevation")->capture_default_str();
+fractal
+    ->add_option("--hurst", fa->hurst,
+                 "Hurst exponent in (0, 1): 0.9 smooth hills, 0.3 rough ground")
+    ->capture_default_str();
+fractal->add_option("--seed", fa->seed, "Random seed (same seed, same scene)")
+    ->capture_default_str();
+fractal->add_option("--category", fa->category, "Category of every cell (name or id)")
+    ->capture_default_str();
+fractal->add_option("--patches", fa->patches,
+                    "Land-cover patches: comma-separated categories (names or ids)");
+fractal->add_option("--patch-size", fa->patch_size, "Mean patch spacing")->capture_default_str();
+fractal->add_option("--library", fa->library,
+                    "Category library for names (default: data/backscatter/"
+                    "generic-terrain.toml)");
+fractal->add_option("--centre", fa->centre,
+                    "LAT,LON: place the scene there, in the WGS 84 UTM zone (default: a "
+                    "local frame with the south-west corner at 0,0)");
+fractal->callback([fa] { run_fractal(*fa); });
 }  // namespace
 
 const ris::app::Registration reg{"scene_terrain", add_scene_terrain};

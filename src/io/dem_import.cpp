@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 #include <gdal.h>
 #include <gdal_alg.h>
-#include <gdal_utils.h>
 #include <ogr_spatialref.h>
 #include <spdlog/spdlog.h>
 
@@ -27,15 +26,6 @@ std::string srs_name(const OGRSpatialReference& srs) {
   const char* auth = srs.GetAuthorityName(nullptr);
   const char* code = srs.GetAuthorityCode(nullptr);
   if (auth != nullptr && code != nullptr) out += fmt::format(" ({}:{})", auth, code);
-  return out;
-}
-
-std::string wkt_of(const OGRSpatialReference& srs) {
-  char* text = nullptr;
-  const char* const options[] = {"FORMAT=WKT2_2019", nullptr};
-  srs.exportToWkt(&text, options);
-  std::string out = text != nullptr ? text : "";
-  CPLFree(text);
   return out;
 }
 
@@ -184,59 +174,10 @@ TargetGrid plan_warp(GDALDatasetH src, const std::array<double, 6>& src_gt,
   return g;
 }
 
-// Warps band 1 of `src` onto the target grid with the given resampling,
-// Float32, no-data NaN, into memory.
-GdalDataset warp(GDALDatasetH src, const std::string& src_wkt, const std::string& target_wkt,
-                 const TargetGrid& g, const char* resampling, const std::string& path) {
-  const auto num = [](double v) { return fmt::format("{:.17g}", v); };
-  std::vector<std::string> args = {"-of", "MEM", "-s_srs", src_wkt, "-t_srs", target_wkt, "-te",
-                                   num(g.min_x), num(g.max_y - g.rows * g.cell_m),
-                                   num(g.min_x + g.cols * g.cell_m), num(g.max_y), "-ts",
-                                   std::to_string(g.cols), std::to_string(g.rows), "-r", resampling,
-                                   "-ot", "Float32", "-dstnodata", "nan",
-                                   // Exact PROJ transformation at every cell: the default
-                                   // approximation allows 1/8 cell of error.
-                                   "-et", "0"};
-  int has_nodata = 0;
-  GDALGetRasterNoDataValue(GDALGetRasterBand(src, 1), &has_nodata);
-  const GDALDataType type = GDALGetRasterDataType(GDALGetRasterBand(src, 1));
-  if (has_nodata == 0 && (type == GDT_Float32 || type == GDT_Float64)) {
-    args.insert(args.end(), {"-srcnodata", "nan"});
-  }
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  GDALWarpAppOptions* wopts = GDALWarpAppOptionsNew(argv.data(), nullptr);
-  RIS_CHECK(wopts != nullptr);
-  int usage_error = 0;
-  GDALDatasetH srcs[] = {src};
-  CPLErrorReset();
-  GDALDatasetH out = GDALWarp("", nullptr, 1, srcs, wopts, &usage_error);
-  GDALWarpAppOptionsFree(wopts);
-  if (out == nullptr) {
-    throw InputError(path, "", "GDAL's warper failed to reproject the DEM: " + last_gdal_error());
-  }
-  return GdalDataset(out);
-}
-
-// A virtual dataset of band 1 alone (GDAL 3.6's warper has no band option),
-// so multi-band rasters warp only their elevation band.
-GdalDataset first_band_only(GDALDatasetH src, const std::string& path) {
-  std::vector<std::string> args = {"-of", "VRT", "-b", "1"};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  GDALTranslateOptions* topts = GDALTranslateOptionsNew(argv.data(), nullptr);
-  RIS_CHECK(topts != nullptr);
-  GDALDatasetH out = GDALTranslate("", src, topts, nullptr);
-  GDALTranslateOptionsFree(topts);
-  if (out == nullptr) throw InputError(path, "", "cannot select band 1: " + last_gdal_error());
-  return GdalDataset(out);
-}
-
 }  // namespace
 
 int utm_zone_of_longitude(double lon_deg) {
+  // Same rule as utm_wkt_for (ris/scene/geo_frame.h).
   double lon = std::fmod(lon_deg + 180.0, 360.0);
   if (lon < 0.0) lon += 360.0;
   return std::clamp(static_cast<int>(std::floor(lon / 6.0)) + 1, 1, 60);
@@ -267,7 +208,6 @@ ImportedDem import_dem(const std::filesystem::path& dem_path, const DemImportOpt
                      fmt::format("expected a positive cell size, got {} m", *options.cell_size_m));
   }
   GdalDataset src = open_raster(path);
-  if (GDALGetRasterCount(handle(src)) > 1) src = first_band_only(handle(src), path);
   GDALDatasetH ds = handle(src);
   const int src_cols = GDALGetRasterXSize(ds);
   const int src_rows = GDALGetRasterYSize(ds);
@@ -360,8 +300,9 @@ ImportedDem import_dem(const std::filesystem::path& dem_path, const DemImportOpt
     const std::string src_wkt = wkt_of(horizontal);
     const std::string target_wkt = wkt_of(target);
     const TargetGrid g = plan_warp(ds, src_gt, horizontal, target, path, options);
-    GdalDataset smooth = warp(ds, src_wkt, target_wkt, g, "bilinear", path);
-    GdalDataset nearest = warp(ds, src_wkt, target_wkt, g, "near", path);
+    const WarpGrid grid{target_wkt, g.min_x, g.max_y, g.cell_m, g.cell_m, g.cols, g.rows};
+    GdalDataset smooth = warp_band1(ds, src_wkt, grid, "bilinear", "Float32", "nan", path);
+    GdalDataset nearest = warp_band1(ds, src_wkt, grid, "near", "Float32", "nan", path);
     heights = read_heights(handle(smooth), g.cols, g.rows, path);
     const std::vector<float> mask = read_heights(handle(nearest), g.cols, g.rows, path);
     // A cell is data only when the posting nearest its centre is data, so

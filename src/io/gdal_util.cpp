@@ -1,10 +1,14 @@
 #include "ris/io/gdal_util.h"
 
 #include <cpl_error.h>
+#include <fmt/format.h>
+#include <gdal_utils.h>
+#include <ogr_spatialref.h>
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
 #include <mutex>
+#include <vector>
 
 #include "ris/util/error.h"
 
@@ -43,6 +47,74 @@ GdalDataset open_raster(const std::string& path) {
     throw InputError(path, "", "the raster is empty (no bands or no pixels)");
   }
   return GdalDataset(ds);
+}
+
+std::string wkt_of(const OGRSpatialReference& srs) {
+  char* text = nullptr;
+  const char* const options[] = {"FORMAT=WKT2_2019", nullptr};
+  srs.exportToWkt(&text, options);
+  std::string out = text != nullptr ? text : "";
+  CPLFree(text);
+  return out;
+}
+
+namespace {
+// A GDAL utility options list from strings (argv style, null-terminated).
+struct Argv {
+  std::vector<std::string> args;
+  std::vector<char*> ptrs;
+  char** get() {
+    ptrs.clear();
+    for (auto& a : args) ptrs.push_back(a.data());
+    ptrs.push_back(nullptr);
+    return ptrs.data();
+  }
+};
+}  // namespace
+
+GdalDataset warp_band1(GDALDatasetH src, const std::string& src_wkt, const WarpGrid& grid,
+                       const std::string& resampling, const std::string& output_type,
+                       const std::string& dst_nodata, const std::string& path) {
+  const auto num = [](double v) { return fmt::format("{:.17g}", v); };
+  Argv argv;
+  argv.args = {"-of", "MEM", "-s_srs", src_wkt, "-t_srs", grid.crs_wkt, "-te", num(grid.min_x),
+               num(grid.max_y - grid.rows * grid.cell_y), num(grid.min_x + grid.cols * grid.cell_x),
+               num(grid.max_y), "-ts", std::to_string(grid.cols), std::to_string(grid.rows), "-r",
+               resampling, "-ot", output_type, "-dstnodata", dst_nodata,
+               // Exact PROJ transformation at every cell: the default
+               // approximation allows 1/8 cell of error.
+               "-et", "0"};
+  GDALRasterBandH band = GDALGetRasterBand(src, 1);
+  int has_nodata = 0;
+  GDALGetRasterNoDataValue(band, &has_nodata);
+  const GDALDataType type = GDALGetRasterDataType(band);
+  if (has_nodata == 0 && (type == GDT_Float32 || type == GDT_Float64)) {
+    argv.args.insert(argv.args.end(), {"-srcnodata", "nan"});
+  }
+  // Only band 1 (GDAL 3.6's gdalwarp has no band option): select it first.
+  GdalDataset band1;
+  GDALDatasetH input = src;
+  if (GDALGetRasterCount(src) > 1) {
+    Argv targv;
+    targv.args = {"-of", "VRT", "-b", "1"};
+    GDALTranslateOptions* topts = GDALTranslateOptionsNew(targv.get(), nullptr);
+    RIS_CHECK(topts != nullptr);
+    band1.reset(GDALTranslate("", src, topts, nullptr));
+    GDALTranslateOptionsFree(topts);
+    if (!band1) throw InputError(path, "", "cannot select band 1: " + last_gdal_error());
+    input = handle(band1);
+  }
+  GDALWarpAppOptions* wopts = GDALWarpAppOptionsNew(argv.get(), nullptr);
+  RIS_CHECK(wopts != nullptr);
+  int usage_error = 0;
+  GDALDatasetH srcs[] = {input};
+  CPLErrorReset();
+  GDALDatasetH out = GDALWarp("", nullptr, 1, srcs, wopts, &usage_error);
+  GDALWarpAppOptionsFree(wopts);
+  if (out == nullptr) {
+    throw InputError(path, "", "GDAL's warper failed: " + last_gdal_error());
+  }
+  return GdalDataset(out);
 }
 
 }  // namespace ris

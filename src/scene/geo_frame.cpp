@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <ogr_spatialref.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "ris/io/gdal_util.h"
@@ -85,6 +86,17 @@ const std::string& GeoFrame::geographic_crs_name() const {
 }
 const std::string& GeoFrame::scene_crs_name() const {
   return impl_->scene_name;
+}
+
+std::string utm_wkt_for(double lon_deg, double lat_deg) {
+  ensure_gdal_registered();
+  double lon = std::fmod(lon_deg + 180.0, 360.0);
+  if (lon < 0.0) lon += 360.0;
+  const int zone = std::clamp(static_cast<int>(std::floor(lon / 6.0)) + 1, 1, 60);
+  OGRSpatialReference srs;
+  // EPSG 326zz (north) and 327zz (south): WGS 84 / UTM zone zz.
+  srs.importFromEPSG((lat_deg >= 0.0 ? 32600 : 32700) + zone);
+  return wkt_of(srs);
 }
 
 }  // namespace ris

@@ -7,6 +7,8 @@
 #include <memory>
 #include <string>
 
+class OGRSpatialReference;
+
 namespace ris {
 
 // Registers GDAL's drivers once (thread-safe) and routes GDAL's own error
@@ -30,5 +32,25 @@ GdalDataset open_raster(const std::string& path);
 
 // The last GDAL error message, or "unknown GDAL error".
 std::string last_gdal_error();
+
+// WKT2 of a CRS, for GDAL options and scene files.
+std::string wkt_of(const OGRSpatialReference& srs);
+
+// A north-up target grid for warp_band1: north-west corner, cell size, size.
+struct WarpGrid {
+  std::string crs_wkt;
+  double min_x = 0.0, max_y = 0.0;
+  double cell_x = 1.0, cell_y = 1.0;
+  int cols = 0, rows = 0;
+};
+
+// Warps band 1 of `src` (whose CRS is given as src_wkt, horizontal only, so
+// that values are never shifted vertically) onto `grid` with GDAL's warper
+// into memory: resampling "near", "bilinear", ...; output type; destination
+// no-data ("nan" or a number). The transformation is exact at every cell
+// (gdalwarp -et 0). `path` names the source in errors.
+GdalDataset warp_band1(GDALDatasetH src, const std::string& src_wkt, const WarpGrid& grid,
+                       const std::string& resampling, const std::string& output_type,
+                       const std::string& dst_nodata, const std::string& path);
 
 }  // namespace ris

@@ -47,4 +47,8 @@ class GeoFrame {
   std::unique_ptr<Impl> impl_;
 };
 
+// WKT of the WGS 84 / UTM zone holding a longitude/latitude in degrees (plain
+// 6-degree zones, north or south by the latitude's sign).
+std::string utm_wkt_for(double lon_deg, double lat_deg);
+
 }  // namespace ris

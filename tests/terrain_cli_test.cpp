@@ -1,0 +1,126 @@
+// End-to-end runs of `ris scene import` and `ris scene fractal`.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "ris/io/raster_io.h"
+#include "test_util.h"
+
+namespace ris {
+namespace {
+
+const std::string kDem = std::string(RIS_TEST_DATA_DIR) + "/dem/";
+
+std::size_t nan_count(const RasterF64& r, int band) {
+  std::size_t n = 0;
+  const std::size_t cells = static_cast<std::size_t>(r.cols) * r.rows;
+  for (std::size_t i = 0; i < cells; ++i) n += std::isnan(r.data[band * cells + i]);
+  return n;
+}
+
+TEST(SceneImportCli, GeographicDemBecomesAUtmSceneWithItsNoDataCounted) {
+  test::TempDir dir;
+  const auto out = dir / "winnipeg.tif";
+  auto r = test::run_ris("scene import " + kDem + "winnipeg_dem.tif -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("UTM zone 14N"), std::string::npos) << r.output;
+  RasterF64 scene = read_raster_f64(out);
+  EXPECT_EQ(scene.bands, 2);
+  EXPECT_DOUBLE_EQ(scene.georef.geotransform[1], 25.0);
+  EXPECT_NE(scene.metadata.at("RIS_FRAME").find("UTM zone 14N"), std::string::npos);
+  EXPECT_EQ(scene.metadata.at("RIS_NODATA_CELLS"), std::to_string(nan_count(scene, 0)));
+  EXPECT_GT(nan_count(scene, 0), 0u);
+
+  auto coarse =
+      test::run_ris("scene import " + kDem + "winnipeg_dem.tif --cell-size \"0.1 km\" -o " +
+                    (dir / "coarse.tif").string());
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.output;
+  RasterF64 c = read_raster_f64(dir / "coarse.tif");
+  EXPECT_DOUBLE_EQ(c.georef.geotransform[1], 100.0);
+  EXPECT_NEAR(c.cols, scene.cols / 4.0, 1.0);
+}
+
+TEST(SceneImportCli, NoCrsRefusedWithoutPartialOutputThenAcceptedWithCrs) {
+  test::TempDir dir;
+  std::vector<float> h(30 * 20, 10.0f);
+  Georef g{{12.0, 1.0 / 3600, 0, 42.0, 0, -1.0 / 3600}, ""};
+  write_geotiff<float>(dir / "nocrs.tif", h.data(), 30, 20, &g);
+  const auto out = dir / "scene.tif";
+  auto r = test::run_ris("scene import " + (dir / "nocrs.tif").string() + " -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--crs"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  r = test::run_ris("scene import " + (dir / "nocrs.tif").string() + " --crs EPSG:4326 -o " +
+                    out.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+TEST(SceneImportCli, LandCoverCodesAreMappedOrListed) {
+  test::TempDir dir;
+  test::write_file(dir / "lib.toml",
+                   "[[category]]\nid = 1\nname = \"grass\"\n[[category]]\nid = 2\nname = "
+                   "\"forest\"\n");
+  test::write_file(dir / "map.toml",
+                   "[mapping]\nlibrary = \"lib.toml\"\n[classes]\n10 = \"forest\"\n");
+  // Land cover in lat/lon over the San Andreas DEM: code 10 west, 30 east.
+  const int cols = 120, rows = 260;
+  std::vector<std::uint16_t> codes(cols * rows);
+  for (int i = 0; i < cols * rows; ++i) codes[i] = (i % cols) < 60 ? 10 : 30;
+  Georef g{{-118.4402, 0.00025, 0, 34.2102, 0, -0.00028}, ""};
+  g.crs_wkt =
+      R"(GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563]],PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433],AUTHORITY["EPSG","4326"]])";
+  write_geotiff<std::uint16_t>(dir / "lc.tif", codes.data(), cols, rows, &g);
+  const std::string base = "scene import " + kDem + "SanAnd_dem.tif --landcover " +
+                           (dir / "lc.tif").string() + " --mapping " + (dir / "map.toml").string();
+  auto r = test::run_ris(base + " -o " + (dir / "a.tif").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("30 ("), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "a.tif"));
+
+  r = test::run_ris(base + " --default-category grass -o " + (dir / "b.tif").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  RasterF64 s = read_raster_f64(dir / "b.tif");
+  const std::size_t cells = static_cast<std::size_t>(s.cols) * s.rows;
+  std::size_t grass = 0, forest = 0;
+  for (std::size_t i = 0; i < cells; ++i) {
+    grass += s.data[cells + i] == 1.0;
+    forest += s.data[cells + i] == 2.0;
+  }
+  EXPECT_GT(grass, cells / 4);
+  EXPECT_GT(forest, cells / 4);
+  EXPECT_EQ(s.metadata.at("RIS_LANDCOVER"), "lc.tif");
+}
+
+TEST(SceneFractalCli, SameSeedSameSceneAndReliefAsAsked) {
+  test::TempDir dir;
+  const std::string args =
+      "scene fractal --size 96x64 --cell-size 10 --relief \"500 ft\" --hurst 0.6";
+  ASSERT_EQ(test::run_ris(args + " --seed 4 -o " + (dir / "a.tif").string()).exit_code, 0);
+  ASSERT_EQ(test::run_ris(args + " --seed 4 -o " + (dir / "b.tif").string()).exit_code, 0);
+  ASSERT_EQ(test::run_ris(args + " --seed 5 -o " + (dir / "c.tif").string()).exit_code, 0);
+  RasterF64 a = read_raster_f64(dir / "a.tif");
+  RasterF64 b = read_raster_f64(dir / "b.tif");
+  RasterF64 c = read_raster_f64(dir / "c.tif");
+  EXPECT_EQ(a.data, b.data);
+  EXPECT_NE(a.data, c.data);
+  ASSERT_EQ(a.cols, 96);
+  ASSERT_EQ(a.rows, 64);
+  double lo = 1e9, hi = -1e9;
+  for (int i = 0; i < 96 * 64; ++i) lo = std::min(lo, a.data[i]), hi = std::max(hi, a.data[i]);
+  EXPECT_NEAR(lo, 0.0, 1e-3);
+  EXPECT_NEAR(hi, 500 * 0.3048, 1e-3);
+
+  auto placed = test::run_ris(args + " --centre 46.5,8.0 -o " + (dir / "d.tif").string());
+  ASSERT_EQ(placed.exit_code, 0) << placed.output;
+  RasterF64 d = read_raster_f64(dir / "d.tif");
+  EXPECT_NE(d.georef.crs_wkt.find("UTM zone 32N"), std::string::npos);
+
+  auto bad = test::run_ris("scene fractal --hurst 1.5 -o " + (dir / "e.tif").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("--hurst"), std::string::npos) << bad.output;
+}
+
+}  // namespace
+}  // namespace ris
