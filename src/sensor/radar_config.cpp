@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "ris/io/config_table.h"
+#include "ris/sensor/geo_track.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -92,6 +93,7 @@ void parse_track(ConfigTable& t, TrackSpec& spec) {
   } else {
     t.fail("look_side", fmt::format("expected \"right\" or \"left\", got \"{}\"", look));
   }
+  if (parse_geo_track(t, spec)) return;  // latitude/longitude: ris/sensor/geo_track.h
   const bool endpoints = t.has("start") || t.has("end");
   const bool heading = t.has("heading") || t.has("near_edge_distance");
   if (endpoints && heading) {
@@ -349,6 +351,7 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
     auto track = t.subtable("track");
     if (!track) t.fail("track", "missing required table [track]");
     parse_track(*track, r.track);
+    if (r.track.geo) r.track.geo->near_slant_range_m = r.near_slant_range_m;
   }
   const double h_m = r.track.altitude_m;
   if (r.near_slant_range_m < h_m) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ris/sensor/geo_track.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -25,6 +26,9 @@ void set_look_direction(Track& t) {
 }  // namespace
 
 Track resolve_track(const TrackSpec& spec, const Scene& scene, const std::string& source_file) {
+  if (spec.geo) {  // latitude/longitude: into scene coordinates (ris/sensor/geo_track.h)
+    return resolve_track(scene_track_from_geo(spec, scene, source_file), scene, source_file);
+  }
   if (!(spec.altitude_m > 0.0) || !std::isfinite(spec.altitude_m)) {
     throw InputError(source_file, "altitude",
                      fmt::format("expected a positive altitude, got {} m", spec.altitude_m));

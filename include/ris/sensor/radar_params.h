@@ -30,6 +30,20 @@ struct ElevationPattern {
   std::vector<double> table_gain;      // table: one-way power gain, linear, relative
 };
 
+// A track given in latitude/longitude (degrees), resolved into scene
+// coordinates by ris/sensor/geo_track.h (added for geographic tracks;
+// TrackSpec::geo is empty for tracks in scene coordinates).
+struct GeoTrackSpec {
+  enum class Kind { endpoints, heading_near_range_point };
+  Kind kind = Kind::endpoints;
+  double start_lat_deg = 0.0, start_lon_deg = 0.0, end_lat_deg = 0.0, end_lon_deg = 0.0;
+  // heading_near_range_point: true heading (clockwise from geographic north)
+  // and the ground point at near slant range.
+  double heading_rad = 0.0;
+  double point_lat_deg = 0.0, point_lon_deg = 0.0;
+  double near_slant_range_m = 0.0;  // the radar's R_near, set by the parser
+};
+
 // How the flight track is given in the file; resolved against a scene into
 // a Track (ris/sensor/track.h) because "near edge" depends on the scene.
 struct TrackSpec {
@@ -44,6 +58,9 @@ struct TrackSpec {
   double near_edge_ground_m = 0.0;
   double altitude_m = 0.0;  // above the scene datum
   LookSide look_side = LookSide::right;
+  // Set when the file gives the track in latitude/longitude; resolve_track
+  // converts it (ris/sensor/geo_track.h) and the fields above then follow.
+  std::optional<GeoTrackSpec> geo;
 };
 
 // The reference ("calibrator") cell of the seed's equation 15.
