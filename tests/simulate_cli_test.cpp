@@ -71,9 +71,9 @@ gamma_db = -6.0
 )";
 
 const std::vector<std::string> kProducts = {
-    "slant_range.png",          "ground_range.png", "mean_power_slant.tif",
-    "speckled_power_slant.tif", "mask_slant.tif",   "scene_mask.tif",
-    "local_incidence_deg.tif",  "shadowmap.txt",    "metadata.json"};
+    "slant_range.png", "ground_range.png",   "mean_power_slant.tif",    "speckled_power_slant.tif",
+    "mask_slant.tif",  "scene_mask.tif",     "local_incidence_deg.tif", "shadowmap.txt",
+    "metadata.json",   "geocoded_power.tif", "geocoded_grey.tif"};
 
 struct Inputs {
   TempDir dir;

@@ -1,5 +1,6 @@
 // End-to-end runs of `ris scene import` and `ris scene fractal`.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -91,6 +92,51 @@ TEST(SceneImportCli, LandCoverCodesAreMappedOrListed) {
   EXPECT_GT(grass, cells / 4);
   EXPECT_GT(forest, cells / 4);
   EXPECT_EQ(s.metadata.at("RIS_LANDCOVER"), "lc.tif");
+}
+
+TEST(SimulateTerrainCli, GeographicDemSimulatesDirectlyWithAGeographicTrackAndGeocodedProducts) {
+  test::TempDir dir;
+  test::write_file(dir / "radar.toml", R"(name = "t"
+mode = "slar"
+frequency = "9.4 GHz"
+polarisation = "HH"
+pulse_width = "0.2 us"
+near_range = "10000 m"
+far_range = "14000 m"
+azimuth_beamwidth = "0.2 deg"
+[track]
+altitude = "3000 m"
+start_latlon = [34.13, -118.55]
+end_latlon = [34.22, -118.55]
+)");
+  const auto out = dir / "run";
+  auto r = test::run_ris("simulate --scene " + kDem + "SanAnd_dem.tif --radar " +
+                         (dir / "radar.toml").string() + " --backscatter " + RIS_DATA_DIR +
+                         "/backscatter/generic-terrain.toml --out " + out.string());
+  // Without land cover every cell is category 0, which the generic library lacks.
+  EXPECT_NE(r.exit_code, 0);
+  ASSERT_EQ(test::run_ris("scene import " + kDem + "SanAnd_dem.tif --category grass -o " +
+                          (dir / "grass.tif").string())
+                .exit_code,
+            0);
+  r = test::run_ris("simulate --scene " + (dir / "grass.tif").string() + " --radar " +
+                    (dir / "radar.toml").string() + " --backscatter " + RIS_DATA_DIR +
+                    "/backscatter/generic-terrain.toml --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  RasterF64 geo = read_raster_f64(out / "geocoded_power.tif");
+  RasterF64 scene = read_raster_f64(dir / "grass.tif");
+  EXPECT_EQ(geo.cols, scene.cols);
+  EXPECT_EQ(geo.georef.geotransform, scene.georef.geotransform);
+  EXPECT_NE(geo.georef.crs_wkt.find("UTM zone 11N"), std::string::npos);
+  std::size_t imaged = 0;
+  for (double v : geo.data) imaged += v > 0.0;
+  EXPECT_GT(imaged, static_cast<std::size_t>(geo.cols * geo.rows) / 2);
+  // The track in metadata also in latitude/longitude, back where it was given.
+  const auto meta = nlohmann::json::parse(test::read_file(out / "metadata.json"));
+  const auto& track = meta.at("derived").at("track");
+  EXPECT_NEAR(track.at("start_latlon")[0].get<double>(), 34.13, 1e-9);
+  EXPECT_NEAR(track.at("start_latlon")[1].get<double>(), -118.55, 1e-9);
+  EXPECT_NEAR(track.at("end_latlon")[0].get<double>(), 34.22, 1e-6);
 }
 
 TEST(SceneFractalCli, SameSeedSameSceneAndReliefAsAsked) {

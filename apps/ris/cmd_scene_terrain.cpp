@@ -75,6 +75,8 @@ struct ImportArgs {
   std::string landcover;
   std::string mapping;
   std::string default_category;
+  std::string category;
+  std::string library;
 };
 
 void run_import(const ImportArgs& args) {
@@ -100,6 +102,18 @@ void run_import(const ImportArgs& args) {
     options.cell_size_m = parse_option(args.cell_size, ris::Quantity::length, "--cell-size");
   }
   if (!args.crs.empty()) options.crs = args.crs;
+  if (!args.category.empty()) {
+    if (mapping) {
+      throw ris::InputError("", "--category",
+                            "--category is for DEMs without land cover (use the mapping's "
+                            "default or fill, or --default-category)");
+    }
+    const std::string library = args.library.empty()
+                                    ? ris::app::data_path("backscatter/generic-terrain.toml")
+                                    : args.library;
+    options.category = ris::parse_category(
+        args.category, names_if_present(library, !args.library.empty()), "--category");
+  }
   ris::ImportedDem dem = ris::import_dem(args.dem, options);
   ris::RasterMetadata metadata = dem.metadata;
   std::string landcover_note;
@@ -218,53 +232,59 @@ void add_scene_terrain(CLI::App& app) {
   CLI::App* scene = scene_group(app);
 
   auto ia = std::make_shared<ImportArgs>();
-  auto* import = scene->add_subcommand(
+  auto* import_cmd = scene->add_subcommand(
       "import",
       "Import a DEM (any GDAL raster; geographic DEMs are reprojected into the UTM zone of "
       "their centre) and optional land cover as a scene GeoTIFF");
-  import->add_option("dem", ia->dem, "Elevation raster (GeoTIFF, SRTM .hgt, ...)")->required();
-  import->add_option("-o,--output", ia->output, "Scene GeoTIFF to write")->required();
-  import->add_option("--cell-size", ia->cell_size,
-                     "Output cell size (\"30\", \"30 m\", \"100 ft\"); default: the DEM's "
-                     "posting in metres, rounded to two significant digits");
-  import->add_option("--crs", ia->crs,
-                     "CRS of the DEM when the file has none (EPSG:4326, WKT, PROJ string)");
-  import->add_option("--landcover", ia->landcover,
-                     "Categorical land-cover raster (any CRS), resampled by nearest neighbour");
-  import->add_option("--mapping", ia->mapping,
-                     "TOML file mapping land-cover codes to categories (data/landcover/*.toml)");
-  import->add_option("--default-category", ia->default_category,
-                     "Category (name or id) of land-cover codes the mapping does not list");
-  import->callback([ia] { run_import(*ia);
-});
+  import_cmd->add_option("dem", ia->dem, "Elevation raster (GeoTIFF, SRTM .hgt, ...)")->required();
+  import_cmd->add_option("-o,--output", ia->output, "Scene GeoTIFF to write")->required();
+  import_cmd->add_option("--cell-size", ia->cell_size,
+                         "Output cell size (\"30\", \"30 m\", \"100 ft\"); default: the DEM's "
+                         "posting in metres, rounded to two significant digits");
+  import_cmd->add_option("--crs", ia->crs,
+                         "CRS of the DEM when the file has none (EPSG:4326, WKT, PROJ string)");
+  import_cmd->add_option("--landcover", ia->landcover,
+                         "Categorical land-cover raster (any CRS), resampled by nearest neighbour");
+  import_cmd->add_option(
+      "--mapping", ia->mapping,
+      "TOML file mapping land-cover codes to categories (data/landcover/*.toml)");
+  import_cmd->add_option("--default-category", ia->default_category,
+                         "Category (name or id) of land-cover codes the mapping does not list");
+  import_cmd->add_option("--category", ia->category,
+                         "Category (name or id) of every cell when there is no land cover "
+                         "(default 0)");
+  import_cmd->add_option("--library", ia->library,
+                         "Category library for --category names (default: data/backscatter/"
+                         "generic-terrain.toml)");
+  import_cmd->callback([ia] { run_import(*ia); });
 
-auto fa = std::make_shared<FractalArgs>();
-auto* fractal = scene->add_subcommand(
-    "fractal", "Generate seeded fractal terrain (fBm with a Hurst exponent) as a scene GeoTIFF");
-fractal->add_option("-o,--output", fa->output, "Scene GeoTIFF to write")->required();
-fractal->add_option("--size", fa->size, "Cells: N (square) or COLSxROWS")->capture_default_str();
-fractal->add_option("--cell-size", fa->cell_size, "Cell size")->capture_default_str();
-fractal->add_option("--relief", fa->relief, "Highest minus lowest elevation")
-    ->capture_default_str();
-fractal->add_option("--base", fa->base, "Lowest elevation")->capture_default_str();
-fractal
-    ->add_option("--hurst", fa->hurst,
-                 "Hurst exponent in (0, 1): 0.9 smooth hills, 0.3 rough ground")
-    ->capture_default_str();
-fractal->add_option("--seed", fa->seed, "Random seed (same seed, same scene)")
-    ->capture_default_str();
-fractal->add_option("--category", fa->category, "Category of every cell (name or id)")
-    ->capture_default_str();
-fractal->add_option("--patches", fa->patches,
-                    "Land-cover patches: comma-separated categories (names or ids)");
-fractal->add_option("--patch-size", fa->patch_size, "Mean patch spacing")->capture_default_str();
-fractal->add_option("--library", fa->library,
-                    "Category library for names (default: data/backscatter/"
-                    "generic-terrain.toml)");
-fractal->add_option("--centre", fa->centre,
-                    "LAT,LON: place the scene there, in the WGS 84 UTM zone (default: a "
-                    "local frame with the south-west corner at 0,0)");
-fractal->callback([fa] { run_fractal(*fa); });
+  auto fa = std::make_shared<FractalArgs>();
+  auto* fractal = scene->add_subcommand(
+      "fractal", "Generate seeded fractal terrain (fBm with a Hurst exponent) as a scene GeoTIFF");
+  fractal->add_option("-o,--output", fa->output, "Scene GeoTIFF to write")->required();
+  fractal->add_option("--size", fa->size, "Cells: N (square) or COLSxROWS")->capture_default_str();
+  fractal->add_option("--cell-size", fa->cell_size, "Cell size")->capture_default_str();
+  fractal->add_option("--relief", fa->relief, "Highest minus lowest elevation")
+      ->capture_default_str();
+  fractal->add_option("--base", fa->base, "Lowest elevation")->capture_default_str();
+  fractal
+      ->add_option("--hurst", fa->hurst,
+                   "Hurst exponent in (0, 1): 0.9 smooth hills, 0.3 rough ground")
+      ->capture_default_str();
+  fractal->add_option("--seed", fa->seed, "Random seed (same seed, same scene)")
+      ->capture_default_str();
+  fractal->add_option("--category", fa->category, "Category of every cell (name or id)")
+      ->capture_default_str();
+  fractal->add_option("--patches", fa->patches,
+                      "Land-cover patches: comma-separated categories (names or ids)");
+  fractal->add_option("--patch-size", fa->patch_size, "Mean patch spacing")->capture_default_str();
+  fractal->add_option("--library", fa->library,
+                      "Category library for names (default: data/backscatter/"
+                      "generic-terrain.toml)");
+  fractal->add_option("--centre", fa->centre,
+                      "LAT,LON: place the scene there, in the WGS 84 UTM zone (default: a "
+                      "local frame with the south-west corner at 0,0)");
+  fractal->callback([fa] { run_fractal(*fa); });
 }  // namespace
 
 const ris::app::Registration reg{"scene_terrain", add_scene_terrain};

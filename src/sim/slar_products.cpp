@@ -6,10 +6,13 @@
 #include <cmath>
 #include <limits>
 
+#include "ris/image/geocode.h"
 #include "ris/image/shadow_map.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/raster_io.h"
+#include "ris/scene/geo_frame.h"
 #include "ris/sensor/radar_json.h"
+#include "ris/util/error.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -18,17 +21,33 @@ namespace {
 
 using nlohmann::json;
 
-json track_json(const Track& t) {
-  return {{"start_x_m", t.start_x_m},
-          {"start_y_m", t.start_y_m},
-          {"along_x", t.along_x},
-          {"along_y", t.along_y},
-          {"cross_x", t.cross_x},
-          {"cross_y", t.cross_y},
-          {"length_m", t.length_m},
-          {"altitude_m", t.altitude_m},
-          {"heading_deg", rad_to_deg(std::atan2(t.along_x, t.along_y))},
-          {"look_side", t.look_side == LookSide::right ? "right" : "left"}};
+json track_json(const Track& t, const Scene& scene) {
+  json j = {{"start_x_m", t.start_x_m},
+            {"start_y_m", t.start_y_m},
+            {"along_x", t.along_x},
+            {"along_y", t.along_y},
+            {"cross_x", t.cross_x},
+            {"cross_y", t.cross_y},
+            {"length_m", t.length_m},
+            {"altitude_m", t.altitude_m},
+            {"heading_deg", rad_to_deg(std::atan2(t.along_x, t.along_y))},
+            {"look_side", t.look_side == LookSide::right ? "right" : "left"}};
+  // The track's ends in latitude/longitude when the scene has a CRS
+  // (ris/scene/geo_frame.h).
+  if (!scene.crs_wkt.empty()) {
+    try {
+      const GeoFrame frame(scene.crs_wkt, "scene");
+      const auto [lon0, lat0] = frame.lonlat_from_scene(t.start_x_m, t.start_y_m);
+      const auto [x1, y1] = t.world_from_along_cross(t.length_m, 0.0);
+      const auto [lon1, lat1] = frame.lonlat_from_scene(x1, y1);
+      j["start_latlon"] = {lat0, lon0};
+      j["end_latlon"] = {lat1, lon1};
+      j["geographic_crs"] = frame.geographic_crs_name();
+    } catch (const InputError&) {
+      // A scene CRS that is not metric has no latitude/longitude to add.
+    }
+  }
+  return j;
 }
 
 // Slant-range rasters carry no map georeferencing (their axes are azimuth
@@ -87,7 +106,7 @@ json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPict
         {"threads", info.threads}}},
       {"derived",
        {{"radar", derived_to_json(sim.derived)},
-        {"track", track_json(sim.track)},
+        {"track", track_json(sim.track, scene)},
         {"geometry",
          {{"sampling", g.direct_sampling ? "direct (track along a grid axis: one sample per cell)"
                                          : "bilinear (elevation and slope), nearest category"},
@@ -138,6 +157,11 @@ json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPict
          "uint8 on the scene grid: 1 shadow, 2 layover, 4 no data, "
          "8 back-facing, 16 outside swath"},
         {"local_incidence_deg.tif", "float32 local incidence angle (degrees) on the scene grid"},
+        {"geocoded_power.tif",
+         "float32 power after fading on the scene grid (map geometry, scene CRS), NaN where no "
+         "pixel"},
+        {"geocoded_grey.tif",
+         "uint8 greytones on the scene grid (map geometry, scene CRS), 0 no pixel"},
         {"shadowmap.txt", "the seed's shadow map: 9 no data, 0 shadow, 1-8 count, # more"},
         {"metadata.json", "this file"}}}};
 }
@@ -178,6 +202,24 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
                         {"RIS_UNITS", "degrees"},
                         {"RIS_VERSION", RIS_VERSION}},
                        "local_incidence_deg");
+  // The image on the scene grid, georeferenced like the scene (ris/image/geocode.h).
+  write_geotiff<float>(
+      dir.path("geocoded_power.tif"),
+      geocode_slant_image(scene, sim.track, img, pic.speckled_power_w).data(), scene.cols,
+      scene.rows, &georef, std::numeric_limits<double>::quiet_NaN(),
+      {{"RIS_PRODUCT", "power after fading, geocoded onto the scene grid (nearest pixel)"},
+       {"RIS_UNITS", "W"},
+       {"RIS_VERSION", RIS_VERSION}},
+      "speckled_power_w");
+  write_geotiff<std::uint8_t>(
+      dir.path("geocoded_grey.tif"),
+      geocode_slant_grey(scene, sim.track, img, pic.slant_grey).data(), scene.cols, scene.rows,
+      &georef, 0.0,
+      {{"RIS_PRODUCT",
+        "slant-range greytones geocoded onto the scene grid (nearest pixel); 0 = "
+        "no pixel"},
+       {"RIS_VERSION", RIS_VERSION}},
+      "greytone");
   write_text_file_atomic(dir.path("shadowmap.txt"), shadow_map_text(img));
   write_text_file_atomic(dir.path("metadata.json"),
                          slar_metadata(scene, sim, pic, info).dump(2) + "\n");
