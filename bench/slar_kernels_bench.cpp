@@ -1,0 +1,90 @@
+// Google Benchmark kernels of the SLAR pipeline on a fractal scene
+// (ris/perf/bench_setup.h): each stage alone, so a change to one stage shows
+// in its own figure. Items per second are scene cells (or image pixels for
+// the stages after image formation).
+//
+//   build/bench/ris_bench_kernels --benchmark_filter=Geometry
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <memory>
+
+#include "ris/backscatter/library.h"
+#include "ris/backscatter/sigma0_lut.h"
+#include "ris/geometry/scene_geometry_maps.h"
+#include "ris/geometry/slar_geometry.h"
+#include "ris/image/slar_image.h"
+#include "ris/perf/bench_setup.h"
+#include "ris/sensor/radar_config.h"
+#include "ris/sensor/radar_derived.h"
+#include "ris/sim/slar_simulation.h"
+#include "ris/util/units.h"
+
+namespace {
+
+struct Fixture {
+  ris::Scene scene;
+  std::unique_ptr<ris::Sigma0Source> sigma0;
+  ris::RadarParams along, oblique;
+  explicit Fixture(int n)
+      : scene(ris::make_bench_scene(n, n, 6.096, 7)),
+        sigma0(ris::load_sigma0_source(ris::default_sigma0_library_path())) {
+    const ris::RadarParams base = ris::load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+    along = ris::bench_radar(base, scene, 0.0);
+    oblique = ris::bench_radar(base, scene, ris::deg_to_rad(30.0));
+  }
+};
+
+const Fixture& fixture() {
+  static const Fixture f(1000);
+  return f;
+}
+
+const ris::RadarParams& radar_for(const benchmark::State& state) {
+  return state.range(1) ? fixture().oblique : fixture().along;
+}
+
+void BM_Geometry(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const Fixture& f = fixture();
+  const ris::RadarParams& radar = radar_for(state);
+  const ris::Track track = ris::resolve_track(radar.track, f.scene, "bench");
+  for (auto _ : state) {
+    ris::SlarGeometry g = ris::compute_slar_geometry(f.scene, track, 0.0, "bench");
+    benchmark::DoNotOptimize(g.flags.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(f.scene.size()));
+}
+
+void BM_EndToEnd(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const Fixture& f = fixture();
+  const ris::RadarParams& radar = radar_for(state);
+  for (auto _ : state) {
+    ris::SlarSimulation sim = ris::simulate_slar(f.scene, radar, *f.sigma0);
+    ris::SlarPictures pic = ris::render_slar(sim, 1);
+    benchmark::DoNotOptimize(pic.slant_grey.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(f.scene.size()));
+}
+
+void BM_Render(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const Fixture& f = fixture();
+  const ris::SlarSimulation sim = ris::simulate_slar(f.scene, radar_for(state), *f.sigma0);
+  for (auto _ : state) {
+    ris::SlarPictures pic = ris::render_slar(sim, 1);
+    benchmark::DoNotOptimize(pic.slant_grey.data());
+  }
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<std::int64_t>(sim.image.mean_power_w.size()));
+}
+
+// Args: threads, oblique (0/1).
+BENCHMARK(BM_Geometry)->ArgsProduct({{1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_EndToEnd)->ArgsProduct({{1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Render)->ArgsProduct({{1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
