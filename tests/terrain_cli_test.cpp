@@ -163,6 +163,14 @@ TEST(SceneFractalCli, SameSeedSameSceneAndReliefAsAsked) {
   RasterF64 d = read_raster_f64(dir / "d.tif");
   EXPECT_NE(d.georef.crs_wkt.find("UTM zone 32N"), std::string::npos);
 
+  // Patches named from the generic terrain library, labelled in the file.
+  ASSERT_EQ(test::run_ris(args + " --patches forest,grass --patch-size 200 -o " +
+                          (dir / "p.tif").string())
+                .exit_code,
+            0);
+  RasterF64 p = read_raster_f64(dir / "p.tif");
+  EXPECT_NE(p.metadata.at("RIS_CATEGORY_NAMES").find("forest"), std::string::npos);
+
   auto bad = test::run_ris("scene fractal --hurst 1.5 -o " + (dir / "e.tif").string());
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.output.find("--hurst"), std::string::npos) << bad.output;

@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,6 +23,7 @@
 #include "ris/scene/fractal_terrain.h"
 #include "ris/scene/geo_frame.h"
 #include "ris/scene/landcover.h"
+#include "ris/scene/scene_source.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -63,6 +66,19 @@ std::map<std::string, std::uint16_t> names_if_present(const std::string& library
     return ris::read_category_names(library);
   }
   return {};
+}
+
+// Legend labels (RIS_CATEGORY_NAMES, ris/scene/scene_source.h) of the
+// categories a scene uses, from a library's names.
+ris::RasterMetadata category_labels(const std::string& scene_name, const ris::Scene& scene,
+                                    const std::map<std::string, std::uint16_t>& names) {
+  std::set<std::uint16_t> used;
+  for (std::size_t i = 0; i < scene.size(); ++i)
+    if (scene.valid[i]) used.insert(scene.category[i]);
+  std::map<std::uint16_t, std::string> labels;
+  for (const auto& [name, id] : names)
+    if (used.count(id) != 0) labels[id] = name;
+  return ris::scene_label_metadata(scene_name, labels);
 }
 
 // ---- ris scene import --------------------------------------------------
@@ -116,6 +132,15 @@ void run_import(const ImportArgs& args) {
   }
   ris::ImportedDem dem = ris::import_dem(args.dem, options);
   ris::RasterMetadata metadata = dem.metadata;
+  std::map<std::string, std::uint16_t> names;
+  if (mapping && !mapping->library.empty()) {
+    names = ris::read_category_names(mapping->library);
+  } else if (!args.category.empty()) {
+    names = names_if_present(args.library.empty()
+                                 ? ris::app::data_path("backscatter/generic-terrain.toml")
+                                 : args.library,
+                             !args.library.empty());
+  }
   std::string landcover_note;
   if (mapping) {
     ris::LandCoverStats st = ris::apply_landcover(dem.scene, args.landcover, *mapping);
@@ -126,6 +151,9 @@ void run_import(const ImportArgs& args) {
         fmt::format("; land cover: {} cells mapped, {} defaulted, {} without cover",
                     st.mapped_cells, st.default_cells, st.fill_cells + st.unfilled_cells);
   }
+  for (auto& [k, v] :
+       category_labels(std::filesystem::path(args.dem).stem().string(), dem.scene, names))
+    metadata[k] = v;
   ris::write_scene_geotiff(dem.scene, args.output, metadata);
   fmt::print("{}: {} x {} cells of {} m in {}; {} no-data cells; heights: {}{}\n", args.output,
              dem.scene.cols, dem.scene.rows, dem.scene.dx_m, dem.frame,
@@ -220,6 +248,9 @@ void run_fractal(const FractalArgs& args) {
       {"RIS_VERTICAL_DATUM", "local: elevation above the scene's flat datum"},
       {"RIS_NODATA_CELLS", "0"},
   };
+  for (auto& [k, v] : category_labels(
+           fmt::format("fractal terrain (seed {}, H = {})", p.seed, p.hurst), scene, names))
+    metadata[k] = v;
   ris::write_scene_geotiff(scene, args.output, metadata);
   fmt::print(
       "{}: {} x {} cells of {} m, heights {} to {} m, Hurst exponent {} (variogram "
