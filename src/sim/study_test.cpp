@@ -1,0 +1,277 @@
+// The frequency/polarisation study: band lists, category attribution,
+// contrast, and a synthetic scene whose best band is known by construction.
+#include "ris/sim/study.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+#include "ris/backscatter/library.h"
+#include "ris/util/error.h"
+#include "test_util.h"
+
+namespace ris {
+namespace {
+
+using test::TempDir;
+using test::write_file;
+
+template <typename F>
+std::string input_error(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+TEST(StudyBands, ParsesAListWithUnitsAndSpaces) {
+  const auto b = parse_study_bands(" 1.25 GHz:HH,8600 MHz : vv , 13 GHz:HV", "--bands");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_DOUBLE_EQ(b[0].frequency_hz, 1.25e9);
+  EXPECT_EQ(b[0].polarisation, Polarisation::HH);
+  EXPECT_DOUBLE_EQ(b[1].frequency_hz, 8.6e9);
+  EXPECT_EQ(b[1].polarisation, Polarisation::VV);
+  EXPECT_EQ(b[2].polarisation, Polarisation::HV);
+  EXPECT_EQ(b[1].label(), "8.6 GHz VV");
+  EXPECT_EQ(b[1].slug(), "8.6GHz_VV");
+}
+
+TEST(StudyBands, DefaultListIsSixBandsInsideTheStandardLibrary) {
+  const auto b = default_study_bands();
+  ASSERT_EQ(b.size(), 6u);
+  // The two the seed's figure 7 names.
+  EXPECT_NE(std::find(b.begin(), b.end(), StudyBand{8.6e9, Polarisation::HH}), b.end());
+  EXPECT_NE(std::find(b.begin(), b.end(), StudyBand{8.6e9, Polarisation::VV}), b.end());
+  for (const StudyBand& x : b) {
+    EXPECT_GE(x.frequency_hz, 1e9);
+    EXPECT_LE(x.frequency_hz, 18e9);
+  }
+}
+
+TEST(StudyBands, BadListsAreInputErrorsNamingTheOption) {
+  for (const char* bad : {"", "   ", "8.6 GHz", "8.6 GHz:XX", "fast:HH", "8.6 GHz:HH,",
+                          ",8.6 GHz:HH", "-1 GHz:HH", "0 GHz:VV", "8.6 parsecs:HH"}) {
+    EXPECT_THROW(parse_study_bands(bad, "--bands"), InputError) << bad;
+  }
+  const std::string dup =
+      input_error([] { parse_study_bands("8.6 GHz:HH, 8600 MHz:hh", "--bands"); });
+  EXPECT_NE(dup.find("duplicate band 8.6 GHz HH"), std::string::npos) << dup;
+  EXPECT_NE(input_error([] { parse_study_bands("", "--bands"); }).find("--bands"),
+            std::string::npos);
+}
+
+CategoryStats stats(std::uint16_t c, std::int64_t n, double mean, double sd, double p) {
+  return CategoryStats{c, "c" + std::to_string(c), n, mean, sd, p};
+}
+
+TEST(StudyContrast, PooledSeparabilityAndPowerRatio) {
+  // |100 - 120| / sqrt((10^2 + 20^2) / 2) = 20 / 15.811 = 1.26491
+  const PairContrast c = study_contrast(stats(3, 10, 100, 10, 4e-12), stats(1, 10, 120, 20, 1e-12));
+  EXPECT_EQ(c.a, 1);
+  EXPECT_EQ(c.b, 3);
+  EXPECT_NEAR(c.contrast, 1.26491, 1e-5);
+  EXPECT_NEAR(c.delta_db, 6.0206, 1e-4);  // 10 log10(4)
+  // Noiseless: the quantisation floor 1/sqrt(12).
+  EXPECT_NEAR(study_contrast(stats(1, 5, 100, 0, 1), stats(2, 5, 101, 0, 1)).contrast,
+              std::sqrt(12.0), 1e-12);
+  EXPECT_TRUE(
+      std::isnan(study_contrast(stats(1, 0, NAN, NAN, NAN), stats(2, 5, 1, 1, 1)).contrast));
+}
+
+TEST(StudyContrast, CategoryStatsOverAttributedPixelsOnly) {
+  const std::vector<std::int32_t> labels{1, 1, -1, 2, 2, 2, 7};
+  const std::vector<std::uint8_t> grey{10, 20, 200, 50, 50, 80, 90};
+  const std::vector<float> power{1, 3, 100, 2, 2, 2, 5};
+  const auto s = category_stats(labels, grey, power, {1, 2, 4}, {"a", "b", "d"});
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].pixels, 2);
+  EXPECT_DOUBLE_EQ(s[0].mean_grey, 15.0);
+  EXPECT_DOUBLE_EQ(s[0].std_grey, 5.0);
+  EXPECT_DOUBLE_EQ(s[0].mean_power_w, 2.0);
+  EXPECT_EQ(s[1].pixels, 3);
+  EXPECT_DOUBLE_EQ(s[1].mean_grey, 60.0);
+  EXPECT_EQ(s[2].pixels, 0);  // reported, empty
+  EXPECT_TRUE(std::isnan(s[2].mean_grey));
+}
+
+TEST(StudyContrast, ChoosesThePanelWhoseWorstPairIsBest) {
+  StudyResult r;
+  r.panels.resize(3);
+  r.panels[0].pairs = {{1, 2, 9.0, 0}, {1, 3, 0.1, 0}, {2, 3, 8.0, 0}};  // best pair, bad worst
+  r.panels[1].pairs = {{1, 2, 2.0, 0}, {1, 3, 1.5, 0}, {2, 3, 3.0, 0}};  // best worst pair
+  r.panels[2].pairs = {{1, 2, 1.0, 0}, {1, 3, NAN, 0}, {2, 3, 1.2, 0}};
+  choose_best(r);
+  EXPECT_EQ(r.best_panel, 1);
+  EXPECT_EQ(r.best_pair_panel, 0);
+  EXPECT_EQ(r.best_pair.a, 1);
+  EXPECT_EQ(r.best_pair.b, 2);
+  EXPECT_DOUBLE_EQ(r.panels[1].min_contrast, 1.5);
+  EXPECT_DOUBLE_EQ(r.panels[2].min_contrast, 1.0);  // NaN pairs ignored
+}
+
+// A flat scene of three azimuth blocks (30 rows each): categories 1, 2, 3.
+// Every block spans the whole swath, so each category sees the same ranges
+// and incidences and only sigma0 differs.
+Scene three_blocks() {
+  Scene s = Scene::flat(90, 200, 10.0, 0.0f, 1);
+  for (int r = 0; r < 90; ++r) {
+    for (int c = 0; c < 200; ++c)
+      s.category[s.index(r, c)] = static_cast<std::uint16_t>(1 + r / 30);
+  }
+  return s;
+}
+
+// Fading off, so greytones are deterministic; gamma 0.4 keeps a 6 dB step
+// inside the grey scale.
+const char* kRadar = R"(
+mode = "slar"
+frequency = "9.4 GHz"
+polarisation = "HH"
+pulse_width = "0.1 us"
+sweep_delay = "33.4 us"
+sweep_length = "10 us"
+azimuth_beamwidth = "5 mrad"
+[track]
+altitude = "3000 m"
+near_edge_distance = "4000 m"
+[film]
+gamma = 0.4
+[film.terms]
+fading = false
+)";
+
+// Known contrast per band (constant gamma, dB): grass -10 everywhere, soil -9
+// everywhere, crop -10 at L band, -4 at X band (8-9 GHz), -9.5 at Ku band
+// (12-14 GHz). Pairs (grass, crop, soil) in dB: L 0/1/1, X 6/5/1, Ku 0.5/0.5/1;
+// the worst pair is best at X band (1 dB), and the best pair is grass/crop at
+// X band (6 dB).
+const char* kLibrary = R"(
+[library]
+name = "three"
+[[category]]
+id = 1
+name = "grass"
+colour = "#30a030"
+[category.model]
+name = "constant_gamma"
+gamma_db = -10.0
+valid_frequency = ["1 GHz", "18 GHz"]
+[[category]]
+id = 2
+name = "crop"
+colour = "#a0a030"
+[category.model]
+name = "constant_gamma"
+gamma_db = -10.0
+[[category.band]]
+frequency = ["8 GHz", "9 GHz"]
+[category.band.model]
+name = "constant_gamma"
+gamma_db = -4.0
+[[category.band]]
+frequency = ["12 GHz", "14 GHz"]
+[category.band.model]
+name = "constant_gamma"
+gamma_db = -9.5
+[[category]]
+id = 3
+name = "soil"
+colour = "#a06030"
+[category.model]
+name = "constant_gamma"
+gamma_db = -9.0
+)";
+
+struct Synthetic {
+  TempDir dir;
+  std::string library = (dir / "three.toml").string();
+  toml::table radar = toml::parse(kRadar);
+  Synthetic() { write_file(library, kLibrary); }
+};
+
+TEST(Study, SyntheticSceneTheKnownBandAndPairWin) {
+  const Synthetic in;
+  const auto sigma0 = load_sigma0_source(in.library);
+  const Scene scene = three_blocks();
+  const auto bands = parse_study_bands("1.25 GHz:HH, 8.6 GHz:HH, 13 GHz:HH", "--bands");
+  const StudyResult r = run_study(scene, in.radar, "radar.toml", *sigma0, in.library, bands);
+  ASSERT_EQ(r.panels.size(), 3u);
+  EXPECT_EQ(r.categories, (std::vector<std::uint16_t>{1, 2, 3}));
+  EXPECT_EQ(r.best_panel, 1);
+  EXPECT_EQ(r.best_pair_panel, 1);
+  EXPECT_EQ(r.best_pair.a, 1);
+  EXPECT_EQ(r.best_pair.b, 2);
+
+  // Every block sees the same bins, so the mean-power ratio is the sigma0
+  // ratio exactly (float rounding only).
+  const std::map<std::pair<int, int>, std::array<double, 3>> expected_db{
+      {{1, 2}, {0.0, 6.0, 0.5}}, {{1, 3}, {1.0, 1.0, 1.0}}, {{2, 3}, {1.0, 5.0, 0.5}}};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const StudyPanel& p = r.panels[i];
+    ASSERT_EQ(p.pairs.size(), 3u);
+    ASSERT_EQ(p.stats.size(), 3u);
+    for (const PairContrast& c : p.pairs) {
+      EXPECT_NEAR(c.delta_db, expected_db.at({c.a, c.b})[i], 1e-3)
+          << p.band.label() << " " << c.a << "/" << c.b;
+    }
+    // Outer blocks have one boundary, the middle one two: equal outer counts.
+    EXPECT_EQ(p.stats[0].pixels, p.stats[2].pixels);
+    EXPECT_GT(p.stats[1].pixels, 0);
+    EXPECT_LT(p.stats[1].pixels, p.stats[0].pixels);
+    EXPECT_EQ(static_cast<int>(p.slant_grey.size()), p.lines * p.bins);
+  }
+  // Greytone contrast follows dB contrast: at X band grass/crop beats soil/crop.
+  EXPECT_GT(r.panels[1].pairs[0].contrast, r.panels[1].pairs[2].contrast);
+  EXPECT_NEAR(r.panels[0].pairs[0].contrast, 0.0, 1e-9);  // L band: grass = crop
+}
+
+TEST(Study, AttributionLeavesBlockBoundariesOut) {
+  const Synthetic in;
+  const auto sigma0 = load_sigma0_source(in.library);
+  const Scene scene = three_blocks();
+  const RadarParams radar = radar_for_band(in.radar, "radar.toml", {8.6e9, Polarisation::HH});
+  EXPECT_DOUBLE_EQ(radar.frequency_hz, 8.6e9);
+  const SlarSimulation sim = simulate_slar(scene, radar, *sigma0, {});
+  const std::vector<std::int32_t> label = pure_category_map(sim);
+  ASSERT_EQ(sim.image.lines, 90);
+  const auto line_labels = [&](int l) {
+    std::set<std::int32_t> s;
+    for (int k = 0; k < sim.image.bins; ++k) {
+      if (sim.image.mask[sim.image.index(l, k)] == 0) s.insert(label[sim.image.index(l, k)]);
+    }
+    return s;
+  };
+  // Block centres: wholly one category.
+  EXPECT_EQ(line_labels(45), (std::set<std::int32_t>{2}));
+  const auto a = line_labels(15), b = line_labels(74);
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(std::set<std::int32_t>({*a.begin(), *b.begin()}), (std::set<std::int32_t>{1, 3}));
+  // Next to a boundary the footprint (w = R phi = 25..33 m, 2.5-3.3 lines)
+  // mixes categories: nothing attributed.
+  for (int l : {28, 29, 30, 31, 58, 59, 60, 61}) {
+    EXPECT_EQ(line_labels(l), (std::set<std::int32_t>{-1})) << l;
+  }
+}
+
+TEST(Study, BandOutsideTheLibraryNamesBandAndCategory) {
+  const Synthetic in;
+  const auto sigma0 = load_sigma0_source(in.library);
+  const Scene scene = three_blocks();
+  const auto bands = parse_study_bands("8.6 GHz:HH, 20 GHz:VV", "--bands");
+  const std::string e =
+      input_error([&] { run_study(scene, in.radar, "radar.toml", *sigma0, in.library, bands); });
+  EXPECT_NE(e.find("20 GHz VV"), std::string::npos) << e;
+  EXPECT_NE(e.find("grass"), std::string::npos) << e;
+  EXPECT_NE(e.find("--bands"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace ris

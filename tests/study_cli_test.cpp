@@ -1,0 +1,155 @@
+// End-to-end: `ris study` on small hand-made inputs.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "ris/image/contact_sheet.h"
+#include "ris/io/raster_io.h"
+#include "ris/io/scene_io.h"
+#include "ris/scene/scene.h"
+#include "test_util.h"
+
+namespace ris {
+namespace {
+
+namespace fs = std::filesystem;
+using test::read_file;
+using test::run_ris;
+using test::TempDir;
+using test::write_file;
+
+// 60 rows x 200 columns of 10 m: rows 0-29 grass (1), rows 30-59 crop (2).
+Scene two_blocks() {
+  Scene s = Scene::flat(60, 200, 10.0, 0.0f, 1);
+  for (int r = 30; r < 60; ++r) {
+    for (int c = 0; c < 200; ++c) s.category[s.index(r, c)] = 2;
+  }
+  return s;
+}
+
+const char* kRadar = R"(
+mode = "slar"
+frequency = "9.4 GHz"
+polarisation = "HH"
+pulse_width = "0.1 us"
+sweep_delay = "33.4 us"
+sweep_length = "10 us"
+azimuth_beamwidth = "5 mrad"
+[track]
+altitude = "3000 m"
+near_edge_distance = "4000 m"
+)";
+
+const char* kLibrary = R"(
+[library]
+name = "two"
+[[category]]
+id = 1
+name = "grass"
+colour = "#30a030"
+[category.model]
+name = "constant_gamma"
+gamma_db = -12.0
+valid_frequency = ["1 GHz", "18 GHz"]
+[[category]]
+id = 2
+name = "crop"
+colour = "#a0a030"
+[category.model]
+name = "constant_gamma"
+gamma_db = -6.0
+)";
+
+struct Inputs {
+  TempDir dir;
+  std::string scene = (dir / "scene.tif").string();
+  std::string radar = (dir / "radar.toml").string();
+  std::string library = (dir / "library.toml").string();
+  Inputs() {
+    write_scene_geotiff(two_blocks(), scene);
+    write_file(radar, kRadar);
+    write_file(library, kLibrary);
+  }
+  std::string args(const fs::path& out, const std::string& bands) const {
+    return "study --scene " + scene + " --radar " + radar + " --backscatter " + library +
+           " --out " + out.string() + " --bands '" + bands + "'";
+  }
+};
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+TEST(StudyCli, WritesPanelsSheetCsvAndMetadata) {
+  const Inputs in;
+  TempDir work;
+  const fs::path out = work / "study";
+  const auto r = run_ris(in.args(out, "1.25 GHz:HH, 8.6 GHz:VV, 13 GHz:HV"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("best discriminated pair: grass / crop"), std::string::npos) << r.output;
+  const std::vector<std::string> panels = {"panel_1_1.25GHz_HH.png", "panel_2_8.6GHz_VV.png",
+                                           "panel_3_13GHz_HV.png"};
+  for (const auto& f : panels) EXPECT_TRUE(fs::exists(out / f)) << f;
+
+  // One row per (panel, category) and per (panel, pair), after a header.
+  const auto cats = lines_of(read_file(out / "categories.csv"));
+  ASSERT_EQ(cats.size(), 1u + 3u * 2u);
+  EXPECT_EQ(cats[0].rfind("panel,band,frequency_ghz,polarisation,category,name,pixels", 0), 0u);
+  EXPECT_EQ(cats[1].rfind("1,\"1.25 GHz HH\",1.25,HH,1,\"grass\",", 0), 0u) << cats[1];
+  EXPECT_EQ(cats[6].rfind("3,\"13 GHz HV\",13,HV,2,\"crop\",", 0), 0u) << cats[6];
+  const auto pairs = lines_of(read_file(out / "contrast.csv"));
+  ASSERT_EQ(pairs.size(), 1u + 3u);
+  // constant gamma -12 vs -6 dB in every band: 6 dB apart before speckle.
+  for (std::size_t i = 1; i < pairs.size(); ++i) {
+    EXPECT_NE(pairs[i].find(",6.00"), std::string::npos) << pairs[i];
+  }
+
+  const nlohmann::json meta = nlohmann::json::parse(read_file(out / "metadata.json"));
+  EXPECT_EQ(meta["bands"], nlohmann::json::array({"1.25 GHz HH", "8.6 GHz VV", "13 GHz HV"}));
+  EXPECT_EQ(meta["best_pair"]["name_a"], "grass");
+  ASSERT_EQ(meta["panels"].size(), 3u);
+  EXPECT_EQ(meta["panels"][1]["simulation"]["inputs"]["radar"]["polarisation"], "VV");
+
+  // The contact sheet: the layout of three panels of the panel size.
+  const RasterF64 p = read_raster_f64(out / panels[0]);
+  const std::vector<std::uint8_t> dummy(static_cast<std::size_t>(p.cols * p.rows));
+  const ContactSheetLayout l = contact_sheet_layout(
+      std::vector<ContactPanel>(3, ContactPanel{dummy.data(), p.cols, p.rows, ""}), {});
+  const RasterF64 sheet = read_raster_f64(out / "contact_sheet.png");
+  EXPECT_EQ(sheet.cols, l.width_px);
+  EXPECT_EQ(sheet.rows, l.height_px);
+  EXPECT_EQ(l.columns * l.rows, 3);
+}
+
+TEST(StudyCli, BadBandListsFailWithoutOutput) {
+  const Inputs in;
+  TempDir work;
+  const fs::path out = work / "study";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "empty band list"},
+      {"8.6 GHz", "no polarisation"},
+      {"8.6 GHz:HQ", "8.6 GHz:HQ"},
+      {"8.6 GHz:HH, 8.6 GHz:HH", "duplicate band 8.6 GHz HH"},
+      {"8.6 GHz:HH, 25 GHz:HH", "band 25 GHz HH is outside"},
+  };
+  for (const auto& [bands, message] : cases) {
+    const auto r = run_ris(in.args(out, bands));
+    EXPECT_NE(r.exit_code, 0) << bands;
+    EXPECT_NE(r.output.find(message), std::string::npos) << bands << ": " << r.output;
+    EXPECT_NE(r.output.find("--bands"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out)) << bands;
+  }
+  const auto r = run_ris(in.args(out, "8.6 GHz:HH, 25 GHz:HH"));
+  EXPECT_NE(r.output.find("grass"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace ris
