@@ -185,14 +185,19 @@ std::vector<std::int32_t> pure_category_map(const SlarSimulation& sim) {
       if ((img.mask[p] & (pixel_flag::kShadow | pixel_flag::kLayover | pixel_flag::kNoData)) != 0) {
         continue;
       }
+      // The whole footprint must lie on imaged lines, and every line of it
+      // must put elements of one category into this bin: a line with none
+      // (shadow, beyond the scene or the track's ends) would lower the power.
+      if (l - h < 0 || l + h >= lines) continue;
       std::int32_t cell = kEmpty;
-      for (int m = std::max(0, l - h); m <= std::min(lines - 1, l + h) && cell != kMixed; ++m) {
+      for (int m = l - h; m <= l + h; ++m) {
         const std::int32_t o = own[img.index(m, k)];
-        if (o == kMixed) {
+        if (o < 0) {
           cell = kMixed;
-        } else if (o != kEmpty) {
-          merge(cell, o);
+          break;
         }
+        merge(cell, o);
+        if (cell == kMixed) break;
       }
       label[p] = cell >= 0 ? cell : kEmpty;
     }

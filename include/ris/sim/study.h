@@ -16,7 +16,10 @@
 // span [min(R_near_end, R, R_far_end), max(...)] overlaps (slar_image.h) on
 // every azimuth line within the footprint half-width w(R)/2 = R phi / 2 of
 // its own line, plus one line (conservative: the image counts partial line
-// overlaps). Pixels flagged shadow, layover or no data are never attributed.
+// overlaps), and every line of that footprint window lies inside the image
+// and has such elements (a footprint that reaches past the track's ends, or
+// over a line with nothing in the bin, would lower the power). Pixels
+// flagged shadow, layover or no data are never attributed.
 // Statistics are taken on the panel's greytones (after speckle, as an
 // interpreter sees them) and on the mean power before speckle.
 //
