@@ -214,6 +214,8 @@ void fill_line(SlarGeometry& g, Sampler& sampler, int line, std::vector<float>& 
   }
 }
 
+}  // namespace
+
 void check_terrain_below_sensor(const Scene& scene, double altitude_m, const std::string& file) {
   std::size_t worst = scene.size();
   float max_h = -std::numeric_limits<float>::infinity();
@@ -234,13 +236,7 @@ void check_terrain_below_sensor(const Scene& scene, double altitude_m, const std
   }
 }
 
-}  // namespace
-
-SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, double line_spacing_m,
-                                   const std::string& radar_file) {
-  scene.validate("scene");
-  check_terrain_below_sensor(scene, track.altitude_m, radar_file);
-
+SlarGeometry slar_geometry_layout(const Scene& scene, const Track& track, double line_spacing_m) {
   SlarGeometry g;
   g.track = track;
   g.altitude_m = track.altitude_m;
@@ -262,6 +258,25 @@ SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, doubl
       u_max = std::max(u_max, u);
     }
   }
+  if (g.direct_sampling) {
+    g.sample_step_m = along_y ? scene.dx_m : scene.dy_m;
+    g.samples = along_y ? scene.cols : scene.rows;
+    g.first_sample_u_m = u_min + 0.5 * g.sample_step_m;  // nearest cell centre
+  } else {
+    g.sample_step_m = 0.5 * std::min(scene.dx_m, scene.dy_m);
+    const double u0 = std::max(u_min, 0.0) + 0.5 * g.sample_step_m;
+    g.first_sample_u_m = u0;
+    g.samples = u_max > u0 ? static_cast<int>(std::floor((u_max - u0) / g.sample_step_m)) + 1 : 1;
+  }
+  return g;
+}
+
+SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, double line_spacing_m,
+                                   const std::string& radar_file) {
+  scene.validate("scene");
+  check_terrain_below_sensor(scene, track.altitude_m, radar_file);
+  SlarGeometry g = slar_geometry_layout(scene, track, line_spacing_m);
+  const bool along_y = nearly(std::abs(track.along_y), 1.0);
 
   const SurfaceGradient grad = surface_gradient(scene);
   DirectSampler direct;
@@ -271,14 +286,7 @@ SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, doubl
     direct.grad = &grad;
     direct.cross_is_x = along_y;
     direct.u_grows_with_index = along_y ? track.cross_x > 0.0 : track.cross_y < 0.0;
-    g.sample_step_m = along_y ? scene.dx_m : scene.dy_m;
-    g.samples = along_y ? scene.cols : scene.rows;
-    g.first_sample_u_m = u_min + 0.5 * g.sample_step_m;  // nearest cell centre
   } else {
-    g.sample_step_m = 0.5 * std::min(scene.dx_m, scene.dy_m);
-    const double u0 = std::max(u_min, 0.0) + 0.5 * g.sample_step_m;
-    g.first_sample_u_m = u0;
-    g.samples = u_max > u0 ? static_cast<int>(std::floor((u_max - u0) / g.sample_step_m)) + 1 : 1;
     bilinear.scene = &scene;
     bilinear.grad = &grad;
     bilinear.track = &g.track;

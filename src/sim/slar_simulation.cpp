@@ -9,6 +9,7 @@
 #include "ris/image/greytone_image.h"
 #include "ris/image/greytone_terms.h"
 #include "ris/sensor/elevation_gain.h"
+#include "ris/sim/slar_line_blocks.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -56,10 +57,21 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   }
 
   // Geometry (the seed's SLAR Geometry, Slope and Shadow).
-  report(options, "geometry", 0.0);
   sim.track = resolve_track(radar.track, scene, radar.source_file);
-  sim.geometry =
-      compute_slar_geometry(scene, sim.track, radar.azimuth_line_spacing_m, radar.source_file);
+  // A track along a grid axis runs fused per line (ris/sim/slar_line_blocks.h:
+  // the same bytes without whole-scene geometry buffers) unless the caller
+  // wants the per-sample geometry.
+  const SlarGeometry layout = slar_geometry_layout(scene, sim.track, radar.azimuth_line_spacing_m);
+  const bool fused = !options.keep_geometry && fused_slar_applies(scene, layout);
+  if (fused) {
+    scene.validate("scene");
+    check_terrain_below_sensor(scene, sim.track.altitude_m, radar.source_file);
+    sim.geometry = layout;
+  } else {
+    report(options, "geometry", 0.0);
+    sim.geometry =
+        compute_slar_geometry(scene, sim.track, radar.azimuth_line_spacing_m, radar.source_file);
+  }
 
   // sigma0 for every category the scene uses (and the reference's).
   report(options, "backscatter", 0.3);
@@ -91,7 +103,13 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
     const ElevationGain gain(radar.elevation_pattern);
     imaging.elevation_gain = [gain](double beta) { return gain(beta); };
   }
-  sim.image = form_slar_image(sim.geometry, lut, imaging, radar.source_file);
+  if (fused) {
+    report(options, "geometry + image formation + scene maps (fused)", 0.4);
+    sim.image =
+        form_slar_image_fused(scene, sim.geometry, sim.scene_maps, lut, imaging, radar.source_file);
+  } else {
+    sim.image = form_slar_image(sim.geometry, lut, imaging, radar.source_file);
+  }
   sim.range_corrected = terms.reference_range_m.has_value();
   sim.area_corrected = terms.reference_area_m2.has_value();
   if (sim.range_corrected || sim.area_corrected) {
@@ -108,8 +126,11 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   }
 
   // Products on the scene grid and the ground-range grid.
-  report(options, "scene maps", 0.8);
-  sim.scene_maps = scene_geometry_maps(scene, sim.geometry, sim.image.range);
+  if (!fused) {
+    report(options, "scene maps", 0.8);
+    sim.scene_maps = scene_geometry_maps(scene, sim.geometry, sim.image.range);
+  }
+  report(options, "ground-range grid", 0.9);
   const double h_ref =
       options.reference_height_m ? *options.reference_height_m : median_valid_elevation(scene);
   sim.ground_grid =

@@ -94,6 +94,17 @@ inline bool sample_visible(std::uint8_t flags) {
                    sample_flag::kBackFacing)) == 0;
 }
 
+// Throws InputError naming radar_file and key "altitude" when valid terrain
+// reaches the sensor altitude (compute_slar_geometry's check).
+void check_terrain_below_sensor(const Scene& scene, double altitude_m,
+                                const std::string& radar_file);
+
+// The geometry's layout (track, lines, samples, spacing, first sample; no
+// per-sample arrays, counts 0) as compute_slar_geometry sets it: it needs
+// only the scene's grid, not its data (used by the fused and streamed
+// pipelines, ris/sim/slar_line_blocks.h).
+SlarGeometry slar_geometry_layout(const Scene& scene, const Track& track, double line_spacing_m);
+
 // Computes the geometry. line_spacing_m <= 0 means one scene cell (the cell
 // size along the track's nearer grid axis). Throws InputError naming
 // radar_file and key "altitude" when valid terrain reaches the sensor

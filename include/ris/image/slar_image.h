@@ -25,6 +25,7 @@
 //   ris::SlarImage img = ris::form_slar_image(geometry, lut, p, radar.source_file);
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -32,6 +33,7 @@
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/geometry/slar_geometry.h"
+#include "ris/util/units.h"
 
 namespace ris {
 
@@ -89,6 +91,72 @@ struct SlarImage {
 // category is not in the lut (key "category").
 SlarImage form_slar_image(const SlarGeometry& geometry, const Sigma0Lut& lut,
                           const SlarImagingParams& params, const std::string& radar_file);
+
+// Per-line range profiles before azimuth integration: what image formation
+// accumulates line by line (each line's elements spread over range bins), so
+// a fused or streamed pipeline (ris/sim/slar_line_blocks.h) can fill them a
+// block of lines at a time and share the azimuth step. All lines x bins.
+struct SlarLineProfiles {
+  int lines = 0;
+  int bins = 0;
+  std::vector<float> power_w;                // per line, summed P_i spread over bins
+  std::vector<float> area_m2;                // per line, summed visible area
+  std::vector<std::uint8_t> touch;           // slar_touch bits
+  std::vector<std::uint16_t> mapped_count;   // as SlarImage
+  std::vector<std::uint16_t> visible_count;  // as SlarImage
+  std::int64_t samples_in_swath = 0;
+
+  void allocate(int lines_, int bins_);
+  std::size_t index(int line, int bin) const {
+    return static_cast<std::size_t>(line) * static_cast<std::size_t>(bins) +
+           static_cast<std::size_t>(bin);
+  }
+};
+
+// Which kinds of element touch a (line, bin) of SlarLineProfiles::touch.
+namespace slar_touch {
+inline constexpr std::uint8_t kData = 1;
+inline constexpr std::uint8_t kVisible = 2;
+inline constexpr std::uint8_t kLayover = 4;
+}  // namespace slar_touch
+
+// Two-way gain G^2 = (peak x G_e(beta))^2 tabulated over beta in [0, 90 deg]
+// at 0.01 deg, linear interpolation; uniform() when the pattern is uniform
+// (the caller may then skip the look angle).
+class TwoWayGainTable {
+ public:
+  static constexpr int kSteps = 9000;
+  static constexpr double kStepRad = (kPi / 2.0) / kSteps;
+
+  TwoWayGainTable(const std::function<double(double)>& relative_gain, double peak_gain,
+                  const std::string& radar_file);
+  bool uniform() const { return uniform_; }
+  double at(double beta_rad) const {
+    const double pos = std::clamp(beta_rad / kStepRad, 0.0, double(kSteps));
+    const int i = std::min(static_cast<int>(pos), kSteps - 1);
+    const double f = pos - i;
+    const double* t = table_.data() + i;
+    return t[0] + f * (t[1] - t[0]);
+  }
+
+ private:
+  std::vector<double> table_;
+  bool uniform_ = false;
+};
+
+// One line's per-element accumulation state (per-thread scratch, allocated
+// once per thread).
+struct SlarLineAccumulator {
+  std::vector<double> acc, acc_area;
+  explicit SlarLineAccumulator(int bins)
+      : acc(static_cast<std::size_t>(bins)), acc_area(static_cast<std::size_t>(bins)) {}
+};
+
+// The azimuth step of form_slar_image: integrates the profiles over each
+// pixel's footprint w(R) = R phi (running sums over lines) into `img`
+// (mean_power_w, area_m2, mask; img.lines/bins/range already set).
+void integrate_slar_azimuth(const SlarLineProfiles& profiles, const SlarImagingParams& params,
+                            double line_spacing_m, SlarImage& img);
 
 // The SLAR azimuth footprint w(R) = R phi, metres.
 inline double slar_footprint_m(double slant_range_m, double azimuth_beamwidth_rad) {

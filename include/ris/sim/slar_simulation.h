@@ -45,6 +45,11 @@ struct SlarOptions {
   std::optional<double> reference_height_m;
   // Called at the start of each stage (name, fraction of the run done).
   std::function<void(std::string_view, double)> progress;
+  // Keep the per-sample geometry arrays in SlarSimulation::geometry. By
+  // default a track along a grid axis runs fused per line
+  // (ris/sim/slar_line_blocks.h) and `geometry` holds only its layout and
+  // counts (the products need no more); the images are the same bytes.
+  bool keep_geometry = false;
 };
 
 struct SlarSimulation {

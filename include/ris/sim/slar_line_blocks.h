@@ -1,0 +1,117 @@
+// The SLAR geometry, image-formation and scene-map stages fused per block of
+// azimuth lines, for a track along a grid axis (direct sampling, one line per
+// cell row or column): each line's geometry lives only in per-thread scratch
+// (no ~31 bytes/sample geometry buffers for the whole scene, no separate
+// slope raster), its elements go straight into the line's range profile
+// (ris/image/slar_image.h SlarLineProfiles), and its cells' scene-grid mask
+// and local incidence are written as the line is done.
+//
+// It does exactly what compute_slar_geometry + form_slar_image +
+// scene_geometry_maps do, in the same arithmetic, so the products are the
+// same bytes (tested: slar_line_blocks_test.cpp); simulate_slar takes this
+// path when it applies (fused_slar_applies) and the caller does not ask for
+// the full geometry (SlarOptions::keep_geometry).
+//
+// A block only needs the scene cells of its lines plus one cell of halo (for
+// the slope), given as a SceneWindow; this is what lets a scene larger than
+// memory stream through in blocks (ris/sim/slar_stream.h).
+//
+// Example:
+//   ris::SlarLineEngine engine(scene, layout, lut, imaging, radar_file);
+//   ris::SlarLineProfiles prof;  prof.allocate(layout.lines, imaging.range.count);
+//   ris::SceneGeometryMaps maps = ...;  // rows x cols
+//   engine.run(0, layout.lines, ris::SceneWindow::whole(scene), prof, maps_window, counts);
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "ris/backscatter/sigma0_lut.h"
+#include "ris/geometry/scene_geometry_maps.h"
+#include "ris/geometry/slar_geometry.h"
+#include "ris/image/slar_image.h"
+#include "ris/scene/scene.h"
+
+namespace ris {
+
+// A rectangle of scene cells held in memory: global rows [row0, row0 + rows),
+// columns [col0, col0 + cols), row-major with `cols` per row.
+struct SceneWindow {
+  int row0 = 0, col0 = 0, rows = 0, cols = 0;
+  const float* elevation_m = nullptr;
+  const std::uint16_t* category = nullptr;
+  const std::uint8_t* valid = nullptr;
+
+  static SceneWindow whole(const Scene& s) {
+    return {0, 0, s.rows, s.cols, s.elevation_m.data(), s.category.data(), s.valid.data()};
+  }
+  bool holds(int r, int c) const {
+    return r >= row0 && r < row0 + rows && c >= col0 && c < col0 + cols;
+  }
+  std::size_t index(int r, int c) const {
+    return static_cast<std::size_t>(r - row0) * static_cast<std::size_t>(cols) +
+           static_cast<std::size_t>(c - col0);
+  }
+};
+
+// Scene-grid outputs for a rectangle of cells (same layout as SceneWindow).
+struct SceneMapsWindow {
+  int row0 = 0, col0 = 0, rows = 0, cols = 0;
+  std::uint8_t* mask = nullptr;
+  float* local_incidence_deg = nullptr;
+  std::size_t index(int r, int c) const {
+    return static_cast<std::size_t>(r - row0) * static_cast<std::size_t>(cols) +
+           static_cast<std::size_t>(c - col0);
+  }
+};
+
+// Per-sample counts of SlarGeometry, plus the slant-range extent of the
+// samples with data (for the "swath misses the scene" message).
+struct SlarLineCounts {
+  std::int64_t nodata = 0, shadow = 0, back_facing = 0, layover = 0;
+  float r_min_m = 0.0f, r_max_m = 0.0f;  // +inf / -inf when none
+  SlarLineCounts();
+  void add(const SlarLineCounts& o);
+};
+
+// Whether the fused path reproduces the reference stages for this layout:
+// direct sampling with one line per row (track along y) or column.
+bool fused_slar_applies(const Scene& scene, const SlarGeometry& layout);
+
+class SlarLineEngine {
+ public:
+  // scene: its grid (rows, cols, cell size, origin); its arrays are not read
+  // (data comes in SceneWindows). layout: slar_geometry_layout(). Every
+  // category a window holds must be in lut (checked by the caller).
+  SlarLineEngine(const Scene& scene, const SlarGeometry& layout, const Sigma0Lut& lut,
+                 const SlarImagingParams& params, const std::string& radar_file);
+
+  // The scene rows x cols range a block of lines [line0, line1) reads,
+  // including the one-cell slope halo, clipped to the scene.
+  void window_for_lines(int line0, int line1, int& row0, int& rows, int& col0, int& cols) const;
+
+  // Processes lines [line0, line1) (OpenMP over lines, per-thread scratch):
+  // fills their rows of `prof` and the cells of `maps` those lines cover;
+  // adds to counts. `in` must hold window_for_lines(line0, line1).
+  void run(int line0, int line1, const SceneWindow& in, SlarLineProfiles& prof,
+           const SceneMapsWindow& maps, SlarLineCounts& counts) const;
+
+ private:
+  const Scene& scene_;
+  SlarGeometry g_;
+  const Sigma0Lut& lut_;
+  SlarImagingParams params_;
+  TwoWayGainTable gain2_;
+  bool cross_is_x_ = true;
+  bool u_grows_with_index_ = true;
+};
+
+// The whole fused run for an in-memory scene: fills `maps` (rows x cols),
+// sets layout's counts, returns the image as form_slar_image does (same
+// InputError for a swath that misses the scene). fused_slar_applies() must
+// hold; every category of a valid cell must be in lut.
+SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& layout, SceneGeometryMaps& maps,
+                                const Sigma0Lut& lut, const SlarImagingParams& params,
+                                const std::string& radar_file);
+
+}  // namespace ris
