@@ -26,6 +26,7 @@
 #include "ris/sim/slar_products.h"
 #include "ris/sim/slar_simulation.h"
 #include "ris/util/error.h"
+#include "ris/util/progress.h"
 #include "ris/util/units.h"
 
 namespace ris::app {
@@ -38,6 +39,7 @@ struct SimulateArgs {
   std::string out = "out";
   std::uint64_t seed = 1;
   int threads = 0;
+  bool quiet = false;
 };
 
 // A .toml scene is a description to build; anything else a raster to read.
@@ -56,13 +58,17 @@ void run_simulate(const SimulateArgs& a) {
   if (a.threads > 0) omp_set_num_threads(a.threads);
   const auto t0 = std::chrono::steady_clock::now();
 
-  // Progress only on a terminal: one line, rewritten per stage.
-  const bool tty = isatty(STDERR_FILENO) != 0;
+  // Progress only on a terminal and without --quiet (ris/util/progress.h):
+  // percent of the run by stage, rate and time remaining.
+  auto bar = std::make_shared<ProgressBar>("simulate", 100, "%", a.quiet);
+  auto done_pct = std::make_shared<std::int64_t>(0);
   SlarOptions options;
-  if (tty) {
-    options.progress = [](std::string_view stage, double fraction) {
-      fmt::print(stderr, "\rris: simulate: {:3.0f}% {:<24}", 100.0 * fraction, stage);
-      std::fflush(stderr);
+  if (bar->enabled()) {
+    options.progress = [bar, done_pct](std::string_view stage, double fraction) {
+      const auto pct = static_cast<std::int64_t>(100.0 * fraction);
+      bar->advance(pct - *done_pct);
+      *done_pct = pct;
+      bar->set_stage(std::string(stage));
     };
   }
   const auto stage = [&](std::string_view name, double fraction) {
@@ -84,7 +90,7 @@ void run_simulate(const SimulateArgs& a) {
   const SlarRunInfo info{a.scene, a.radar, backscatter, a.seed,
                          a.threads > 0 ? a.threads : omp_get_max_threads()};
   write_slar_products(a.out, scene, sim, pictures, info);
-  if (tty) fmt::print(stderr, "\r{:<60}\r", "");
+  bar->finish();
 
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -114,6 +120,7 @@ void add_simulate(CLI::App& app) {
   cmd->add_option("--out", args->out, "Output folder (written as a whole)")->capture_default_str();
   cmd->add_option("--seed", args->seed, "Fading seed")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
+  cmd->add_flag("--quiet", args->quiet, "No progress bar (it shows only on a terminal anyway)");
   cmd->callback([args] { run_simulate(*args); });
 }
 
