@@ -137,6 +137,9 @@ std::vector<std::int32_t> pure_category_map(const SlarSimulation& sim) {
   constexpr std::int32_t kEmpty = -1;
   constexpr std::int32_t kMixed = -2;
   const SlarGeometry& g = sim.geometry;
+  // Needs the per-sample geometry: simulate_slar with SlarOptions::keep_geometry.
+  RIS_CHECK(g.flags.size() ==
+            static_cast<std::size_t>(g.lines) * static_cast<std::size_t>(g.samples));
   const SlarImage& img = sim.image;
   RIS_CHECK(g.lines == img.lines);
   const int lines = img.lines;
@@ -325,6 +328,7 @@ StudyResult run_study(const Scene& scene, const toml::table& radar_doc,
     const StudyBand& band = bands[i];
     SlarOptions slar;
     slar.backscatter_file = backscatter_file;
+    slar.keep_geometry = true;  // the attribution reads the per-sample geometry
     if (options.progress) {
       slar.progress = [&](std::string_view stage, double f) {
         options.progress(fmt::format("{} ({})", band.label(), stage), (double(i) + f) / n_bands);

@@ -240,7 +240,9 @@ TEST(Study, AttributionLeavesBlockBoundariesOut) {
   const Scene scene = three_blocks();
   const RadarParams radar = radar_for_band(in.radar, "radar.toml", {8.6e9, Polarisation::HH});
   EXPECT_DOUBLE_EQ(radar.frequency_hz, 8.6e9);
-  const SlarSimulation sim = simulate_slar(scene, radar, *sigma0, {});
+  SlarOptions keep;
+  keep.keep_geometry = true;  // pure_category_map reads the per-sample geometry
+  const SlarSimulation sim = simulate_slar(scene, radar, *sigma0, keep);
   const std::vector<std::int32_t> label = pure_category_map(sim);
   ASSERT_EQ(sim.image.lines, 90);
   const auto line_labels = [&](int l) {

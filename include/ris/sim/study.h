@@ -96,6 +96,7 @@ RadarParams radar_for_band(const toml::table& radar_doc, const std::string& rada
 
 // lines x bins: the category a slant-range pixel is attributed to, or -1
 // (see the header comment).
+// sim must keep its per-sample geometry (SlarOptions::keep_geometry).
 std::vector<std::int32_t> pure_category_map(const SlarSimulation& sim);
 
 struct CategoryStats {
