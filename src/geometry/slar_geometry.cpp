@@ -6,7 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "ris/geometry/line_scan.h"
 #include "ris/geometry/surface_gradient.h"
+#include "ris/geometry/terrain_sample.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -14,16 +16,6 @@ namespace ris {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-
-// What a sampler returns for one ground point.
-struct TerrainSample {
-  bool inside = false;  // within the scene
-  bool valid = false;   // has data
-  float height_m = 0.0f;
-  float dz_dx = 0.0f;
-  float dz_dy = 0.0f;
-  std::uint16_t category = 0;
-};
 
 // Track along a grid axis: samples are cells. The line picks the nearest row
 // (or column) of cells, sample j the j-th cell in increasing u.
@@ -81,40 +73,10 @@ struct BilinearSampler {
   }
 
   TerrainSample at(int j) const {
-    TerrainSample ts;
     const double u = first_u_m + j * step_m;
     const double x = line_x + u * track->cross_x;
     const double y = line_y + u * track->cross_y;
-    const auto [cf, rf] = scene->grid_from_world(x, y);
-    const int cols = scene->cols, rows = scene->rows;
-    if (!(cf >= 0.0 && cf <= cols && rf >= 0.0 && rf <= rows)) return ts;
-    ts.inside = true;
-    // Cell centres sit at integer + 0.5; clamp to the outermost centres.
-    const double px = std::clamp(cf - 0.5, 0.0, double(cols - 1));
-    const double py = std::clamp(rf - 0.5, 0.0, double(rows - 1));
-    const int c0 = std::min(static_cast<int>(px), std::max(cols - 2, 0));
-    const int r0 = std::min(static_cast<int>(py), std::max(rows - 2, 0));
-    const int c1 = std::min(c0 + 1, cols - 1), r1 = std::min(r0 + 1, rows - 1);
-    const double fx = px - c0, fy = py - r0;
-    const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
-    const std::size_t idx[4] = {scene->index(r0, c0), scene->index(r0, c1), scene->index(r1, c0),
-                                scene->index(r1, c1)};
-    double h = 0.0, gx = 0.0, gy = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      if (w[k] <= 0.0) continue;
-      if (!scene->valid[idx[k]]) return ts;  // touches no data
-      h += w[k] * scene->elevation_m[idx[k]];
-      gx += w[k] * grad->dz_dx[idx[k]];
-      gy += w[k] * grad->dz_dy[idx[k]];
-    }
-    const int cn = std::min(static_cast<int>(cf), cols - 1);
-    const int rn = std::min(static_cast<int>(rf), rows - 1);
-    ts.valid = true;
-    ts.height_m = static_cast<float>(h);
-    ts.dz_dx = static_cast<float>(gx);
-    ts.dz_dy = static_cast<float>(gy);
-    ts.category = scene->category[scene->index(rn, cn)];
-    return ts;
+    return bilinear_terrain_sample(*scene, grad, x, y);
   }
 };
 
@@ -147,71 +109,32 @@ void fill_line(SlarGeometry& g, Sampler& sampler, int line, std::vector<float>& 
       g.flags[i] = f;
       continue;
     }
-    const double h = ts.height_m;
-    const double D = H - h;  // > 0: checked before
-    const double R = std::hypot(u, D);
-    // Slope along the look direction g and the facet normal's length
-    // |(-dz/dx, -dz/dy, 1)| (MODEL.md section 2-3).
-    const double dh_du = double(ts.dz_dx) * t.cross_x + double(ts.dz_dy) * t.cross_y;
-    const double n_len = std::sqrt(1.0 + double(ts.dz_dx) * ts.dz_dx + double(ts.dz_dy) * ts.dz_dy);
-    // cos(theta_l) = n . l with l = (-u g + D z) / R: the along-track slope
-    // tilts n but is orthogonal to l, so only dh/du enters the numerator.
-    const double cos_l = (u * dh_du + D) / (R * n_len);
-    if (cos_l <= 0.0) f |= sample_flag::kBackFacing;
+    const SampleLook look = look_at(ts, u, H, t.cross_x, t.cross_y);  // H > h: checked before
+    if (look.cos_local <= 0.0) f |= sample_flag::kBackFacing;
     g.height_m[i] = ts.height_m;
-    g.slant_range_m[i] = static_cast<float>(R);
-    g.incidence_rad[i] = static_cast<float>(std::atan2(u, D));
-    g.local_incidence_rad[i] = static_cast<float>(std::acos(std::clamp(cos_l, -1.0, 1.0)));
-    g.area_m2[i] = static_cast<float>(element_m2 * n_len);
-    dh_du_scratch[static_cast<std::size_t>(j)] = static_cast<float>(dh_du);
+    g.slant_range_m[i] = static_cast<float>(look.slant_range_m);
+    g.incidence_rad[i] = static_cast<float>(look.incidence_rad);
+    g.local_incidence_rad[i] = static_cast<float>(local_incidence_rad(look));
+    g.area_m2[i] = static_cast<float>(element_m2 * look.normal_length);
+    dh_du_scratch[static_cast<std::size_t>(j)] = static_cast<float>(look.dh_du);
     g.category[i] = ts.category;
     g.flags[i] = f;
   }
 
-  // The element's ends: heights halfway to the neighbours with data.
-  constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
-  const double half_step = 0.5 * g.sample_step_m;
-  const auto has_data = [&](int j) {
-    return j >= 0 && j < g.samples && !(g.flags[base + static_cast<std::size_t>(j)] & kSkip);
-  };
-  for (int j = 0; j < g.samples; ++j) {
-    const std::size_t i = base + static_cast<std::size_t>(j);
-    if (!has_data(j)) continue;
-    const double h = g.height_m[i];
-    const double slope_half = dh_du_scratch[static_cast<std::size_t>(j)] * half_step;
-    const double h_near = has_data(j - 1) ? 0.5 * (h + g.height_m[i - 1]) : h - slope_half;
-    const double h_far = has_data(j + 1) ? 0.5 * (h + g.height_m[i + 1]) : h + slope_half;
-    const double u = g.sample_u_m(j);
-    g.range_near_end_m[i] = static_cast<float>(std::hypot(u - half_step, H - h_near));
-    g.range_far_end_m[i] = static_cast<float>(std::hypot(u + half_step, H - h_far));
-  }
-
-  // Cast shadow: t(u) = u / (H - h); a point is shadowed when a nearer point
-  // has a larger t (MODEL.md section 2).
-  double max_t = -std::numeric_limits<double>::infinity();
-  for (int j = 0; j < g.samples; ++j) {
-    const std::size_t i = base + static_cast<std::size_t>(j);
-    if (g.flags[i] & kSkip) continue;
-    const double tt = g.sample_u_m(j) / (H - double(g.height_m[i]));
-    if (max_t > tt) g.flags[i] |= sample_flag::kShadow;
-    max_t = std::max(max_t, tt);
-  }
-  // Layover, SNAP definition: near to far keeping the largest R, a smaller R
-  // is layover; far to near keeping the smallest R, a larger R is layover.
-  float max_r = -std::numeric_limits<float>::infinity();
-  for (int j = 0; j < g.samples; ++j) {
-    const std::size_t i = base + static_cast<std::size_t>(j);
-    if (g.flags[i] & kSkip) continue;
-    if (g.slant_range_m[i] < max_r) g.flags[i] |= sample_flag::kLayover;
-    max_r = std::max(max_r, g.slant_range_m[i]);
-  }
-  float min_r = std::numeric_limits<float>::infinity();
-  for (int j = g.samples - 1; j >= 0; --j) {
-    const std::size_t i = base + static_cast<std::size_t>(j);
-    if (g.flags[i] & kSkip) continue;
-    if (g.slant_range_m[i] > min_r) g.flags[i] |= sample_flag::kLayover;
-    min_r = std::min(min_r, g.slant_range_m[i]);
-  }
+  // The element's ends, then the shadow and layover scans (shared with PPI
+  // rays: ris/geometry/line_scan.h).
+  const LineSamples ls{g.samples,
+                       g.first_sample_u_m,
+                       g.sample_step_m,
+                       H,
+                       &g.height_m[base],
+                       &g.slant_range_m[base],
+                       &g.range_near_end_m[base],
+                       &g.range_far_end_m[base],
+                       dh_du_scratch.data(),
+                       &g.flags[base]};
+  line_element_ends(ls);
+  mark_shadow_and_layover(ls);
 }
 
 }  // namespace

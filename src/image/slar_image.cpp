@@ -88,10 +88,20 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
   prof.allocate(img.lines, bins);
   std::int64_t in_swath = 0;
 
+  // Point returns by line (indices into p.point_returns, sorted by line).
+  std::vector<std::size_t> target_order(p.point_returns.size());
+  for (std::size_t t = 0; t < target_order.size(); ++t) target_order[t] = t;
+  std::stable_sort(target_order.begin(), target_order.end(), [&](std::size_t a, std::size_t b) {
+    return p.point_returns[a].line < p.point_returns[b].line;
+  });
+  const bool range_window = p.range_window_bins > 0.0;
+
 #pragma omp parallel reduction(+ : in_swath)
   {
     // Per-thread scratch, allocated once.
     SlarLineAccumulator scratch(bins);
+    std::vector<double> cum_range(range_window ? static_cast<std::size_t>(bins) + 1 : 0);
+    std::vector<double> cum_range_area(cum_range.size());
 #pragma omp for schedule(dynamic, 8)
     for (int line = 0; line < g.lines; ++line) {
       std::fill(scratch.acc.begin(), scratch.acc.end(), 0.0);
@@ -106,6 +116,40 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
             g.incidence_rad[i], g.local_incidence_rad[i], g.area_m2[i], g.category[i],
             prof.touch.data() + row, prof.mapped_count.data() + row,
             prof.visible_count.data() + row, scratch.acc.data(), scratch.acc_area.data());
+      }
+      // Point scatterers on this line: their power in the bin of their range.
+      const auto first =
+          std::lower_bound(target_order.begin(), target_order.end(), line,
+                           [&](std::size_t t, int l) { return p.point_returns[t].line < l; });
+      for (auto it = first; it != target_order.end() && p.point_returns[*it].line == line; ++it) {
+        const PointReturn& pr = p.point_returns[*it];
+        const double pos = (pr.slant_range_m - ctx.near_m) * ctx.inv_dr;
+        if (!(pos >= 0.0 && pos < bins)) continue;
+        const double r2 = pr.slant_range_m * pr.slant_range_m;
+        scratch.acc[static_cast<std::size_t>(pos)] +=
+            ctx.k_radar * gain2.at(pr.look_rad) * pr.rcs_m2 / (r2 * r2);
+      }
+      // SAR: a range resolution cell other than the bin integrates the
+      // bin-wise profile over [centre - W/2, centre + W/2] (bin units).
+      if (range_window) {
+        cum_range[0] = cum_range_area[0] = 0.0;
+        for (std::size_t b = 0; b < static_cast<std::size_t>(bins); ++b) {
+          cum_range[b + 1] = cum_range[b] + scratch.acc[b];
+          cum_range_area[b + 1] = cum_range_area[b] + scratch.acc_area[b];
+        }
+        const auto integral = [bins](const std::vector<double>& c, double x) {
+          const double y = std::clamp(x, 0.0, double(bins));
+          const int i = std::min(static_cast<int>(y), bins - 1);
+          const std::size_t ii = static_cast<std::size_t>(i);
+          return c[ii] + (y - i) * (c[ii + 1] - c[ii]);
+        };
+        const double half_w = 0.5 * p.range_window_bins;
+        for (int b = 0; b < bins; ++b) {
+          const double a = b + 0.5 - half_w, e = b + 0.5 + half_w;
+          scratch.acc[static_cast<std::size_t>(b)] = integral(cum_range, e) - integral(cum_range, a);
+          scratch.acc_area[static_cast<std::size_t>(b)] =
+              integral(cum_range_area, e) - integral(cum_range_area, a);
+        }
       }
       for (int b = 0; b < bins; ++b) {
         const std::size_t bb = static_cast<std::size_t>(b);
@@ -177,7 +221,10 @@ void integrate_slar_azimuth(const SlarLineProfiles& prof, const SlarImagingParam
         return c[ii] + f * (c[ii + 1] - c[ii]);
       };
       const double half =
-          0.5 * slar_footprint_m(p.range.centre_m(b), p.azimuth_beamwidth_rad) / line_spacing_m;
+          p.azimuth_window_lines > 0.0
+              ? 0.5 * p.azimuth_window_lines
+              : 0.5 * slar_footprint_m(p.range.centre_m(b), p.azimuth_beamwidth_rad) /
+                    line_spacing_m;
       for (int k = 0; k < n; ++k) {
         const double a = k - half, e = k + half;
         const std::size_t pix = img.index(k, b);

@@ -127,6 +127,101 @@ void parse_track(ConfigTable& t, TrackSpec& spec) {
   t.finish();
 }
 
+// [sar]: resolutions from the bandwidth and antenna length (or given),
+// looks, noise and the coherent switch.
+void parse_sar(ConfigTable& t, RadarParams& r) {
+  SarParams& p = r.sar;
+  if (one_of(t, {"bandwidth", "range_resolution"}, true) == "bandwidth") {
+    p.bandwidth_hz = get_positive(t, "bandwidth", Quantity::frequency, "Hz");
+    p.range_resolution_m = kSpeedOfLight_m_per_s / (2.0 * p.bandwidth_hz);  // c / (2B)
+  } else {
+    p.range_resolution_m = get_positive(t, "range_resolution", Quantity::length, "m");
+  }
+  if (t.has("antenna_length")) {
+    p.antenna_length_m = get_positive(t, "antenna_length", Quantity::length, "m");
+  }
+  if (t.has("azimuth_resolution")) {
+    p.azimuth_resolution_m = get_positive(t, "azimuth_resolution", Quantity::length, "m");
+  } else if (p.antenna_length_m > 0.0) {
+    p.azimuth_resolution_m = 0.5 * p.antenna_length_m;  // stripmap: L / 2
+  } else {
+    t.fail("antenna_length",
+           "missing: give antenna_length (resolution L / 2) or "
+           "azimuth_resolution");
+  }
+  const auto looks = [&](const char* key) {
+    const std::int64_t n = t.get_int_or(key, 1);
+    if (n < 1 || n > 1000) t.fail(key, fmt::format("expected 1 to 1000 looks, got {}", n));
+    return static_cast<int>(n);
+  };
+  p.range_looks = looks("range_looks");
+  p.azimuth_looks = looks("azimuth_looks");
+  if (auto nesz = linear_or_db(t, "nesz")) p.nesz = *nesz;
+  p.coherent = t.get_bool_or("coherent", false);
+  t.finish();
+}
+
+// [site]: the radar's ground position and its antenna height.
+void parse_site(ConfigTable& t, PpiParams& p) {
+  std::vector<double> xy = t.get_quantity_array("position", Quantity::length);
+  if (xy.size() != 2 || !std::isfinite(xy[0]) || !std::isfinite(xy[1])) {
+    t.fail("position", "expected [x, y] in scene metres (2 finite values)");
+  }
+  p.site_x_m = xy[0];
+  p.site_y_m = xy[1];
+  if (one_of(t, {"altitude", "height"}, true) == "altitude") {
+    p.altitude_m = get_positive(t, "altitude", Quantity::length, "m");
+  } else {
+    p.height_above_ground_m = get_positive(t, "height", Quantity::length, "m");
+  }
+  t.finish();
+}
+
+// [scan]: sector, ray spacing and the scope's presentation.
+void parse_scan(std::optional<ConfigTable>& t, RadarParams& r, const std::string& file) {
+  PpiParams& p = r.ppi;
+  const double half_beam = 0.5 * r.azimuth_beamwidth_rad;
+  p.scan_width_rad = 2.0 * kPi;
+  p.ray_spacing_rad = half_beam;
+  if (t) {
+    p.scan_start_rad = t->get_quantity_or("start", Quantity::angle, 0.0);
+    if (!std::isfinite(p.scan_start_rad)) t->fail("start", "expected a finite angle");
+    p.scan_width_rad = t->get_quantity_or("width", Quantity::angle, 2.0 * kPi);
+    if (!(p.scan_width_rad > 0.0) || !(p.scan_width_rad <= 2.0 * kPi + 1e-9)) {
+      t->fail("width", fmt::format("expected a scan sector wider than 0 and at most 360 deg, got "
+                                   "{:.3f} deg",
+                                   rad_to_deg(p.scan_width_rad)));
+    }
+    p.ray_spacing_rad = t->get_quantity_or("ray_spacing", Quantity::angle, half_beam);
+    if (!(p.ray_spacing_rad > 0.0) || p.ray_spacing_rad > half_beam * (1.0 + 1e-9)) {
+      t->fail("ray_spacing",
+              fmt::format("expected a ray spacing above 0 and at most half the azimuth "
+                          "beamwidth ({:.4f} deg), got {:.4f} deg",
+                          rad_to_deg(half_beam), rad_to_deg(p.ray_spacing_rad)));
+    }
+    if (t->has("range_rings")) {
+      p.ring_spacing_m = get_positive(*t, "range_rings", Quantity::length, "m");
+    }
+    if (t->has("pixel")) p.scope_pixel_m = get_positive(*t, "pixel", Quantity::length, "m");
+    const std::string pres = t->get_string_or("presentation", "slant");
+    if (pres == "slant") {
+      p.presentation = PpiPresentation::slant;
+    } else if (pres == "ground") {
+      p.presentation = PpiPresentation::ground;
+    } else {
+      t->fail("presentation", fmt::format("expected \"slant\" or \"ground\", got \"{}\"", pres));
+    }
+    t->finish();
+  }
+  if (p.scope_pixel_m <= 0.0) p.scope_pixel_m = r.range_bin_m;
+  // A full circle is split into whole rays; a sector's rays cover it.
+  const int rays = static_cast<int>(std::ceil(p.scan_width_rad / p.ray_spacing_rad - 1e-9));
+  if (rays > 2000000) {
+    throw InputError(file, "scan.ray_spacing", fmt::format("{} rays: too many", rays));
+  }
+  p.ray_spacing_rad = p.scan_width_rad / rays;
+}
+
 void parse_pattern(ConfigTable& t, ElevationPattern& p, double default_boresight_rad) {
   const std::string shape = t.get_string_or("shape", "uniform");
   if (shape == "uniform") {
@@ -219,7 +314,11 @@ void parse_reference(std::optional<ConfigTable>& t, const RadarParams& r, Refere
   ref.wavelength_m = r.wavelength_m();
   ref.gain = r.peak_gain;
   ref.range_m = mid_r_m;
-  ref.area_m2 = mid_r_m * r.azimuth_beamwidth_rad * r.range_bin_m / std::max(sin_theta, 1e-6);
+  // SAR: the multilooked resolution cell rho_a L_a x rho_r L_r instead.
+  const double az_m = r.mode == RadarMode::sar ? r.sar.azimuth_resolution_looks_m()
+                                               : mid_r_m * r.azimuth_beamwidth_rad;
+  const double rg_m = r.mode == RadarMode::sar ? r.sar.range_resolution_looks_m() : r.range_bin_m;
+  ref.area_m2 = az_m * rg_m / std::max(sin_theta, 1e-6);
   ref.sigma0 = 1.0;
   ref.automatic = true;
   ref.greytone = ref.auto_greytone = 128.0;
@@ -281,8 +380,17 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
   r.name = t.get_string_or("name", "");
 
   const std::string mode = t.get_string("mode");
-  if (mode != "slar") t.fail("mode", fmt::format("expected \"slar\", got \"{}\"", mode));
-  r.mode = RadarMode::slar;
+  if (mode == "slar") {
+    r.mode = RadarMode::slar;
+  } else if (mode == "sar") {
+    r.mode = RadarMode::sar;
+  } else if (mode == "ppi") {
+    r.mode = RadarMode::ppi;
+  } else {
+    t.fail("mode", fmt::format("expected \"slar\", \"sar\" or \"ppi\", got \"{}\"", mode));
+  }
+  const bool sar = r.mode == RadarMode::sar;
+  const bool ppi = r.mode == RadarMode::ppi;
 
   r.frequency_hz = get_positive(t, "frequency", Quantity::frequency, "Hz");
   try {
@@ -290,17 +398,38 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
   } catch (const std::invalid_argument& e) {
     t.fail("polarisation", e.what());
   }
-  r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
-  r.range_bin_m = t.get_quantity_or("range_bin", Quantity::length,
-                                    kSpeedOfLight_m_per_s * r.pulse_width_s / 2.0);
+  // SAR: the range resolution comes from the chirp bandwidth, so the pulse
+  // width is optional; the [sar] table is read first for the default bin.
+  if (sar) {
+    if (t.has("pulse_width")) r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
+    auto st = t.subtable("sar");
+    if (!st) t.fail("sar", "mode = \"sar\" needs a [sar] table (bandwidth, antenna_length, ...)");
+    parse_sar(*st, r);
+  } else {
+    if (t.has("sar")) t.fail("sar", "a [sar] table needs mode = \"sar\"");
+    r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
+  }
+  const double default_bin_m =
+      sar ? r.sar.range_resolution_m : kSpeedOfLight_m_per_s * r.pulse_width_s / 2.0;
+  r.range_bin_m = t.get_quantity_or("range_bin", Quantity::length, default_bin_m);
   positive(t, "range_bin", r.range_bin_m, "m");
 
   // Near range: R_near = c t_delay / 2 (MODEL.md section 2), or given.
+  // A PPI sweep may start at zero range (a ground radar sees from its mast).
+  const auto non_negative = [&](const char* key, Quantity q) {
+    const double v = t.get_quantity(key, q);
+    if (!(v >= 0.0) || !std::isfinite(v))
+      t.fail(key, fmt::format("expected a value >= 0, got {}", v));
+    return v;
+  };
   if (one_of(t, {"sweep_delay", "near_range"}, true) == "sweep_delay") {
-    r.near_slant_range_m =
-        kSpeedOfLight_m_per_s * get_positive(t, "sweep_delay", Quantity::time, "s") / 2.0;
+    r.near_slant_range_m = kSpeedOfLight_m_per_s *
+                           (ppi ? non_negative("sweep_delay", Quantity::time)
+                                : get_positive(t, "sweep_delay", Quantity::time, "s")) /
+                           2.0;
   } else {
-    r.near_slant_range_m = get_positive(t, "near_range", Quantity::length, "m");
+    r.near_slant_range_m = ppi ? non_negative("near_range", Quantity::length)
+                               : get_positive(t, "near_range", Quantity::length, "m");
   }
   // Far range: R_far = R_near + c t_sweep / 2, or given, or a number of bins.
   const std::string far_key = one_of(t, {"sweep_length", "far_range", "range_bins"}, true);
@@ -336,7 +465,16 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
     r.range_bins = static_cast<int>(bins);
   }
 
-  r.azimuth_beamwidth_rad = get_positive(t, "azimuth_beamwidth", Quantity::angle, "rad");
+  // SAR: the real antenna's beamwidth defaults to lambda / L (lambda / (2
+  // rho_a) when only the resolution is given); it sets the elevation-free
+  // reference cell only, never the SAR's azimuth resolution.
+  if (sar && !t.has("azimuth_beamwidth")) {
+    const double length_m =
+        r.sar.antenna_length_m > 0.0 ? r.sar.antenna_length_m : 2.0 * r.sar.azimuth_resolution_m;
+    r.azimuth_beamwidth_rad = r.wavelength_m() / length_m;
+  } else {
+    r.azimuth_beamwidth_rad = get_positive(t, "azimuth_beamwidth", Quantity::angle, "rad");
+  }
   if (r.azimuth_beamwidth_rad >= kPi) {
     t.fail("azimuth_beamwidth", "expected a beamwidth below 180 deg");
   }
@@ -346,15 +484,27 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
   if (!std::isfinite(gain_db)) t.fail("antenna_gain_db", "expected a finite number of dB");
   r.peak_gain = std::pow(10.0, gain_db / 10.0);
 
-  // Track (with altitude and look side).
-  {
+  // Track (with altitude and look side); PPI: the site and the scan.
+  if (ppi) {
+    if (t.has("track")) t.fail("track", "a PPI radar has [site] and [scan], not [track]");
+    auto site = t.subtable("site");
+    if (!site) t.fail("site", "mode = \"ppi\" needs a [site] table (x, y, altitude or height)");
+    parse_site(*site, r.ppi);
+    r.track.altitude_m = r.ppi.altitude_m ? *r.ppi.altitude_m : *r.ppi.height_above_ground_m;
+    auto scan = t.subtable("scan");
+    std::optional<ConfigTable> none;
+    parse_scan(scan ? scan : none, r, t.file());
+  } else {
+    for (const char* k : {"site", "scan"}) {
+      if (t.has(k)) t.fail(k, fmt::format("a [{}] table needs mode = \"ppi\"", k));
+    }
     auto track = t.subtable("track");
     if (!track) t.fail("track", "missing required table [track]");
     parse_track(*track, r.track);
     if (r.track.geo) r.track.geo->near_slant_range_m = r.near_slant_range_m;
   }
   const double h_m = r.track.altitude_m;
-  if (r.near_slant_range_m < h_m) {
+  if (!ppi && r.near_slant_range_m < h_m) {
     t.fail(t.has("sweep_delay") ? "sweep_delay" : "near_range",
            fmt::format("near slant range {:.1f} m is shorter than the altitude {:.1f} m: the sweep "
                        "would start before the ground return",
@@ -383,6 +533,11 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
     } else {
       t.fail("independent_samples", "expected \"seed\" or a number >= 1");
     }
+  }
+
+  // SAR: a pixel averages L_r L_a independent looks (unless given).
+  if (sar && !r.independent_samples) {
+    r.independent_samples = double(r.sar.range_looks) * double(r.sar.azimuth_looks);
   }
 
   // Elevation pattern; the default boresight points at mid-swath (flat ground).

@@ -31,7 +31,10 @@ RadarDerived derive(const RadarParams& radar) {
   const double h_m = radar.track.altitude_m;
   const double phi = radar.azimuth_beamwidth_rad;
   d.wavelength_m = radar.wavelength_m();
-  d.range_resolution_m = kSpeedOfLight_m_per_s * radar.pulse_width_s / 2.0;
+  // SAR: c / (2 B) from the chirp bandwidth (single look); others: c tau / 2.
+  d.range_resolution_m = radar.mode == RadarMode::sar
+                             ? radar.sar.range_resolution_m
+                             : kSpeedOfLight_m_per_s * radar.pulse_width_s / 2.0;
   d.range_bin_m = radar.range_bin_m;
   d.range_bins = radar.range_bins;
   d.near_slant_range_m = radar.near_slant_range_m;
@@ -43,8 +46,12 @@ RadarDerived derive(const RadarParams& radar) {
   d.far_depression_rad = depression_rad(d.far_slant_range_m, h_m);
   d.near_incidence_rad = kPi / 2 - d.near_depression_rad;
   d.far_incidence_rad = kPi / 2 - d.far_depression_rad;
-  d.near_azimuth_footprint_m = d.near_slant_range_m * phi;
-  d.far_azimuth_footprint_m = d.far_slant_range_m * phi;
+  // SAR: the (multilooked) azimuth resolution is the same at every range.
+  const bool sar = radar.mode == RadarMode::sar;
+  d.near_azimuth_footprint_m =
+      sar ? radar.sar.azimuth_resolution_looks_m() : d.near_slant_range_m * phi;
+  d.far_azimuth_footprint_m =
+      sar ? radar.sar.azimuth_resolution_looks_m() : d.far_slant_range_m * phi;
   d.near_samples_eq16 = independent_samples_eq16(d.near_slant_range_m, phi, d.wavelength_m);
   d.far_samples_eq16 = independent_samples_eq16(d.far_slant_range_m, phi, d.wavelength_m);
   d.near_samples = independent_samples(radar, d.near_slant_range_m);

@@ -19,46 +19,15 @@ const char* pattern_name(ElevationPattern::Kind k) {
   return "?";
 }
 
+nlohmann::json finish_common(nlohmann::json& j, const RadarParams& r);
+
 // JSON has no NaN: an unresolved value is written as null.
 nlohmann::json number(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
-}  // namespace
-
-nlohmann::json radar_to_json(const RadarParams& r) {
+// The keys every mode shares, after the mode's own.
+nlohmann::json finish_common(nlohmann::json& j, const RadarParams& r) {
   using nlohmann::json;
-  json j;
-  j["source_file"] = r.source_file;
-  j["name"] = r.name;
-  j["mode"] = "slar";
-  j["frequency_hz"] = r.frequency_hz;
-  j["wavelength_m"] = r.wavelength_m();
-  j["polarisation"] = std::string(to_string(r.polarisation));
-  j["pulse_width_s"] = r.pulse_width_s;
-  j["near_slant_range_m"] = r.near_slant_range_m;
-  j["far_slant_range_m"] = r.far_slant_range_m;
-  j["range_bin_m"] = r.range_bin_m;
-  j["range_bins"] = r.range_bins;
-  j["azimuth_beamwidth_rad"] = r.azimuth_beamwidth_rad;
-  j["transmit_power_w"] = r.transmit_power_w;
-  j["peak_gain"] = r.peak_gain;
-  const ElevationPattern& p = r.elevation_pattern;
-  j["elevation_pattern"] = {{"shape", pattern_name(p.kind)},
-                            {"beamwidth_rad", p.beamwidth_rad},
-                            {"boresight_rad", p.boresight_rad},
-                            {"table_look_rad", p.table_look_rad},
-                            {"table_gain", p.table_gain}};
-  const TrackSpec& t = r.track;
-  json track = {{"altitude_m", t.altitude_m},
-                {"look_side", t.look_side == LookSide::right ? "right" : "left"}};
-  if (t.kind == TrackSpec::Kind::endpoints) {
-    track["start_m"] = {t.start_x_m, t.start_y_m};
-    track["end_m"] = {t.end_x_m, t.end_y_m};
-  } else {
-    track["heading_rad"] = t.heading_rad;
-    track["near_edge_distance_m"] = t.near_edge_ground_m;
-  }
-  j["track"] = track;
   j["speed_m_per_s"] = r.speed_m_per_s > 0.0 ? json(r.speed_m_per_s) : json(nullptr);
   j["prf_hz"] = r.prf_hz > 0.0 ? json(r.prf_hz) : json(nullptr);
   j["independent_samples"] =
@@ -100,6 +69,74 @@ nlohmann::json radar_to_json(const RadarParams& r) {
                  {"m", s.receiver_m},
                  {"fading", s.fading}}}};
   return j;
+}
+
+}  // namespace
+
+nlohmann::json radar_to_json(const RadarParams& r) {
+  using nlohmann::json;
+  json j;
+  j["source_file"] = r.source_file;
+  j["name"] = r.name;
+  j["mode"] = r.mode == RadarMode::slar ? "slar" : (r.mode == RadarMode::sar ? "sar" : "ppi");
+  j["frequency_hz"] = r.frequency_hz;
+  j["wavelength_m"] = r.wavelength_m();
+  j["polarisation"] = std::string(to_string(r.polarisation));
+  j["pulse_width_s"] = r.pulse_width_s;
+  j["near_slant_range_m"] = r.near_slant_range_m;
+  j["far_slant_range_m"] = r.far_slant_range_m;
+  j["range_bin_m"] = r.range_bin_m;
+  j["range_bins"] = r.range_bins;
+  j["azimuth_beamwidth_rad"] = r.azimuth_beamwidth_rad;
+  j["transmit_power_w"] = r.transmit_power_w;
+  j["peak_gain"] = r.peak_gain;
+  const ElevationPattern& p = r.elevation_pattern;
+  j["elevation_pattern"] = {{"shape", pattern_name(p.kind)},
+                            {"beamwidth_rad", p.beamwidth_rad},
+                            {"boresight_rad", p.boresight_rad},
+                            {"table_look_rad", p.table_look_rad},
+                            {"table_gain", p.table_gain}};
+  if (r.mode == RadarMode::sar) {
+    const SarParams& s = r.sar;
+    j["sar"] = {
+        {"bandwidth_hz", s.bandwidth_hz > 0.0 ? json(s.bandwidth_hz) : json(nullptr)},
+        {"range_resolution_m", s.range_resolution_m},
+        {"antenna_length_m", s.antenna_length_m > 0.0 ? json(s.antenna_length_m) : json(nullptr)},
+        {"azimuth_resolution_m", s.azimuth_resolution_m},
+        {"range_looks", s.range_looks},
+        {"azimuth_looks", s.azimuth_looks},
+        {"nesz", s.nesz ? json(*s.nesz) : json(nullptr)},
+        {"nesz_db", s.nesz ? json(10.0 * std::log10(*s.nesz)) : json(nullptr)},
+        {"coherent", s.coherent}};
+  }
+  if (r.mode == RadarMode::ppi) {
+    const PpiParams& pp = r.ppi;
+    json site = {{"position_m", {pp.site_x_m, pp.site_y_m}}};
+    if (pp.altitude_m) site["altitude_m"] = *pp.altitude_m;
+    if (pp.height_above_ground_m) site["height_above_ground_m"] = *pp.height_above_ground_m;
+    j["site"] = site;
+    j["scan"] = {
+        {"start_rad", pp.scan_start_rad},
+        {"width_rad", pp.scan_width_rad},
+        {"ray_spacing_rad", pp.ray_spacing_rad},
+        {"range_rings_m", pp.ring_spacing_m > 0.0 ? json(pp.ring_spacing_m) : json(nullptr)},
+        {"pixel_m", pp.scope_pixel_m},
+        {"presentation", pp.presentation == PpiPresentation::slant ? "slant" : "ground"}};
+    j["altitude_m"] = r.track.altitude_m;
+    return finish_common(j, r);
+  }
+  const TrackSpec& t = r.track;
+  json track = {{"altitude_m", t.altitude_m},
+                {"look_side", t.look_side == LookSide::right ? "right" : "left"}};
+  if (t.kind == TrackSpec::Kind::endpoints) {
+    track["start_m"] = {t.start_x_m, t.start_y_m};
+    track["end_m"] = {t.end_x_m, t.end_y_m};
+  } else {
+    track["heading_rad"] = t.heading_rad;
+    track["near_edge_distance_m"] = t.near_edge_ground_m;
+  }
+  j["track"] = track;
+  return finish_common(j, r);
 }
 
 nlohmann::json derived_to_json(const RadarDerived& d) {

@@ -1,5 +1,7 @@
 #include "ris/sim/slar_simulation.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,6 +10,7 @@
 #include "ris/image/greytone.h"
 #include "ris/image/greytone_image.h"
 #include "ris/image/greytone_terms.h"
+#include "ris/image/thermal_noise.h"
 #include "ris/sensor/elevation_gain.h"
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/util/error.h"
@@ -42,6 +45,45 @@ double median_valid_elevation(const Scene& scene) {
   return *mid;
 }
 
+// A SAR resolution finer than the scene's sampling cannot show more detail
+// than the scene holds; say what the image will look like instead.
+std::vector<std::string> sar_resolution_warnings(const Scene& scene, const SlarGeometry& g,
+                                                 const RadarParams& radar) {
+  std::vector<std::string> out;
+  const double az_m = radar.sar.azimuth_resolution_m;
+  if (az_m < g.line_spacing_m) {
+    out.push_back(fmt::format(
+        "{}: the SAR azimuth resolution ({:.2f} m{}) is finer than the scene's azimuth sampling "
+        "({:.2f} m, the azimuth line spacing): the image shows no detail finer than the scene's "
+        "cells, point targets fall on the nearest line, and a coherent image has fewer than one "
+        "ground sample per resolution cell (speckle not fully developed)",
+        radar.source_file, az_m,
+        radar.sar.antenna_length_m > 0.0
+            ? fmt::format(", half the {:.2f} m antenna", radar.sar.antenna_length_m)
+            : std::string(),
+        g.line_spacing_m));
+  }
+  // Ground-range resolution at far range (the finest on the ground).
+  const double far_r = radar.far_slant_range_m;
+  const double sin_far = std::sqrt(std::max(0.0, 1.0 - std::pow(g.altitude_m / far_r, 2)));
+  const double ground_res_m = radar.sar.range_resolution_m / std::max(sin_far, 1e-6);
+  const double cell_m = std::min(scene.dx_m, scene.dy_m);
+  if (ground_res_m < cell_m) {
+    out.push_back(fmt::format(
+        "{}: the SAR ground-range resolution ({:.2f} m at far range, from {}) is finer than the "
+        "scene's cells ({:.2f} m): the image shows no detail finer than the scene's cells, and a "
+        "coherent image has fewer than one ground sample per resolution cell (speckle not fully "
+        "developed)",
+        radar.source_file, ground_res_m,
+        radar.sar.bandwidth_hz > 0.0
+            ? fmt::format("c / (2 B) = {:.2f} m slant with B = {:.1f} MHz",
+                          radar.sar.range_resolution_m, radar.sar.bandwidth_hz / 1e6)
+            : fmt::format("range_resolution = {:.2f} m slant", radar.sar.range_resolution_m),
+        cell_m));
+  }
+  return out;
+}
+
 }  // namespace
 
 SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
@@ -62,7 +104,9 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   // the same bytes without whole-scene geometry buffers) unless the caller
   // wants the per-sample geometry.
   const SlarGeometry layout = slar_geometry_layout(scene, sim.track, radar.azimuth_line_spacing_m);
-  const bool fused = !options.keep_geometry && fused_slar_applies(scene, layout);
+  // SAR and point targets need the per-sample geometry: stage by stage.
+  const bool fused = !options.keep_geometry && radar.mode == RadarMode::slar &&
+                     options.targets.empty() && fused_slar_applies(scene, layout);
   if (fused) {
     scene.validate("scene");
     check_terrain_below_sensor(scene, sim.track.altitude_m, radar.source_file);
@@ -103,11 +147,21 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
     const ElevationGain gain(radar.elevation_pattern);
     imaging.elevation_gain = [gain](double beta) { return gain(beta); };
   }
+  if (radar.mode == RadarMode::sar) {
+    imaging.azimuth_window_lines =
+        radar.sar.azimuth_resolution_looks_m() / sim.geometry.line_spacing_m;
+    imaging.range_window_bins = radar.sar.range_resolution_looks_m() / imaging.range.bin_m;
+    sim.warnings = sar_resolution_warnings(scene, sim.geometry, radar);
+  }
+  check_point_targets_on_scene(options.targets, scene);
   if (fused) {
     report(options, "geometry + image formation + scene maps (fused)", 0.4);
     sim.image =
         form_slar_image_fused(scene, sim.geometry, sim.scene_maps, lut, imaging, radar.source_file);
   } else {
+    sim.point_returns =
+        point_returns_on_lines(options.targets, scene, sim.geometry, &sim.hidden_targets);
+    imaging.point_returns = sim.point_returns;
     sim.image = form_slar_image(sim.geometry, lut, imaging, radar.source_file);
   }
   sim.range_corrected = terms.reference_range_m.has_value();
@@ -123,6 +177,14 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
         img.mean_power_w[i] = static_cast<float>(img.mean_power_w[i] * f);
       }
     }
+  }
+
+  // SAR thermal noise: NESZ over the multilooked resolution cell.
+  if (radar.mode == RadarMode::sar && radar.sar.nesz) {
+    sim.noise_power_w = thermal_noise_power_w(imaging, *radar.sar.nesz, sim.geometry.altitude_m,
+                                              radar.sar.azimuth_resolution_looks_m(),
+                                              radar.sar.range_resolution_looks_m());
+    add_noise_power(sim.image, sim.noise_power_w);
   }
 
   // Products on the scene grid and the ground-range grid.

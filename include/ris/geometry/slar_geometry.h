@@ -29,19 +29,11 @@
 #include <string>
 #include <vector>
 
+#include "ris/geometry/line_scan.h"  // sample_flag, sample_visible
 #include "ris/scene/scene.h"
 #include "ris/sensor/track.h"
 
 namespace ris {
-
-// Per-sample flags (bit values).
-namespace sample_flag {
-inline constexpr std::uint8_t kNoData = 1;      // the scene has no data here (NaN / no-data cell)
-inline constexpr std::uint8_t kUnseen = 2;      // outside the scene, or not in front (u <= 0)
-inline constexpr std::uint8_t kShadow = 4;      // cast shadow: max_{u'<u} t(u') > t(u)
-inline constexpr std::uint8_t kBackFacing = 8;  // cos(local incidence) <= 0
-inline constexpr std::uint8_t kLayover = 16;    // in the SNAP two-scan layover zone
-}  // namespace sample_flag
 
 struct SlarGeometry {
   Track track;
@@ -87,12 +79,6 @@ struct SlarGeometry {
   double line_s_m(int line) const { return (line + 0.5) * line_spacing_m; }
   double sample_u_m(int sample) const { return first_sample_u_m + sample * sample_step_m; }
 };
-
-// Whether a sample takes part in image formation (seen, has data, lit, facing).
-inline bool sample_visible(std::uint8_t flags) {
-  return (flags & (sample_flag::kNoData | sample_flag::kUnseen | sample_flag::kShadow |
-                   sample_flag::kBackFacing)) == 0;
-}
 
 // Throws InputError naming radar_file and key "altitude" when valid terrain
 // reaches the sensor altitude (compute_slar_geometry's check).

@@ -15,6 +15,8 @@
 // |s - s_k| <= w(R)/2, w = R phi at the bin centre, each line standing for
 // the strip [s - ds/2, s + ds/2] and counted by its overlap with the footprint
 // (a running sum over lines per bin, so the cost does not grow with w).
+// SAR and PPI: a window of constant width in lines replaces w(R)
+// (SlarImagingParams::azimuth_window_lines).
 //
 // The result is plain data: mean power before speckle, a pixel mask, and the
 // per-line counts behind the seed's shadow map.
@@ -28,6 +30,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,6 +39,18 @@
 #include "ris/util/units.h"
 
 namespace ris {
+
+// A point scatterer seen on one geometry line (ris/sim/point_target.h
+// resolves and checks them): it adds P = P_t G^2 lambda^2 rcs / ((4 pi)^3 R^4)
+// to that line's range profile at slant range R, like a ground element.
+struct PointReturn {
+  int line = 0;
+  double along_m =
+      0.0;  // exact along-track position (SAR) or azimuth (PPI, rad) on the line's axis
+  double slant_range_m = 0.0;
+  double look_rad = 0.0;  // look angle from nadir, for the elevation gain
+  double rcs_m2 = 0.0;
+};
 
 // Slant-range bins: bin k holds near_m + k bin_m <= R < near_m + (k + 1) bin_m.
 struct SlantRangeBins {
@@ -56,6 +71,16 @@ struct SlarImagingParams {
   // (radians from nadir); tabulated once at 0.01 deg, never called per sample.
   // Empty: uniform (1).
   std::function<double(double)> elevation_gain;
+  // SAR and PPI (0: SLAR's w(R) = R phi): the azimuth window in lines, the
+  // same at every range: SAR L_a rho_a / line spacing, PPI beamwidth / ray
+  // spacing (the rays' "line spacing" is an angle).
+  double azimuth_window_lines = 0.0;
+  // SAR (0: one bin): the range window in bins, when the (multilooked) range
+  // resolution differs from the sampling: a box L_r rho_r / dr bins wide
+  // centred on each bin. The pixel mask stays per sampling bin.
+  double range_window_bins = 0.0;
+  // Point scatterers, added to their line's range profile.
+  std::span<const PointReturn> point_returns;
 };
 
 // Slant-range pixel mask bits.

@@ -27,7 +27,7 @@ namespace ris {
 
 struct RadarDerived {
   double wavelength_m = 0.0;
-  double range_resolution_m = 0.0;  // c tau / 2
+  double range_resolution_m = 0.0;  // c tau / 2 (SAR: c / (2 B), single look)
   double range_bin_m = 0.0;         // as configured (default c tau / 2)
   int range_bins = 0;
   double near_slant_range_m = 0.0, far_slant_range_m = 0.0;
@@ -35,7 +35,7 @@ struct RadarDerived {
   double swath_ground_m = 0.0;                                 // far - near ground range
   double near_depression_rad = 0.0, far_depression_rad = 0.0;  // asin(H / R)
   double near_incidence_rad = 0.0, far_incidence_rad = 0.0;    // 90 deg - depression
-  double near_azimuth_footprint_m = 0.0;                       // R phi
+  double near_azimuth_footprint_m = 0.0;  // R phi (SAR: L_a rho_a at every range)
   double far_azimuth_footprint_m = 0.0;
   double near_samples_eq16 = 0.0, far_samples_eq16 = 0.0;  // raw equation 16
   double near_samples = 0.0, far_samples = 0.0;            // as used for fading

@@ -16,7 +16,7 @@
 
 namespace ris {
 
-enum class RadarMode { slar };
+enum class RadarMode { slar, sar, ppi };
 enum class LookSide { right, left };
 
 // One-way elevation antenna power gain G_e(beta) relative to boresight, as a
@@ -116,6 +116,37 @@ struct GreytoneSwitches {
 
 enum class FadingLaw { exact_gamma, seed_eq21 };
 
+// SAR stripmap (mode = "sar", table [sar]; MODEL.md section 3, "azimuth,
+// SAR"). Resolutions are 3 dB widths of the impulse response, single look.
+struct SarParams {
+  double bandwidth_hz = 0.0;          // chirp bandwidth B (0: range resolution given)
+  double range_resolution_m = 0.0;    // rho_r = c / (2 B), or given (slant range)
+  double antenna_length_m = 0.0;      // L (0: not given)
+  double azimuth_resolution_m = 0.0;  // rho_a = L / 2, or given
+  int range_looks = 1;                // L_r: resolution L_r rho_r, N = L_r L_a looks
+  int azimuth_looks = 1;              // L_a: resolution L_a rho_a
+  std::optional<double> nesz;         // noise-equivalent sigma0 (linear); none: no noise
+  bool coherent = false;              // complex reflectivity, sinc impulse responses
+  // The multilooked resolutions, what a pixel integrates.
+  double range_resolution_looks_m() const { return range_looks * range_resolution_m; }
+  double azimuth_resolution_looks_m() const { return azimuth_looks * azimuth_resolution_m; }
+};
+
+// PPI (mode = "ppi", tables [site] and [scan]; MODEL.md section 2, "PPI").
+enum class PpiPresentation { slant, ground };
+struct PpiParams {
+  double site_x_m = 0.0, site_y_m = 0.0;        // the radar's ground position, scene metres
+  std::optional<double> altitude_m;             // antenna above the datum, or
+  std::optional<double> height_above_ground_m;  // above the terrain at the site (a mast)
+  double scan_start_rad = 0.0;                  // sector start, clockwise from north
+  double scan_width_rad = 0.0;                  // sector width (2 pi: all round)
+  double ray_spacing_rad = 0.0;                 // at most half the azimuth beamwidth
+  double ring_spacing_m = 0.0;                  // range rings on the scope (0: none)
+  double scope_pixel_m = 0.0;                   // scope pixel size (default: the range bin)
+  PpiPresentation presentation = PpiPresentation::slant;  // scope radius: slant or ground range
+  bool full_circle() const { return scan_width_rad >= 2.0 * 3.14159265358979323846 - 1e-9; }
+};
+
 struct RadarParams {
   std::string source_file;  // where it was read from
   std::string name;         // free text
@@ -123,7 +154,7 @@ struct RadarParams {
   RadarMode mode = RadarMode::slar;
   double frequency_hz = 0.0;
   Polarisation polarisation = Polarisation::HH;
-  double pulse_width_s = 0.0;          // tau
+  double pulse_width_s = 0.0;          // tau (SAR: optional, 0 when not given)
   double near_slant_range_m = 0.0;     // c t_delay / 2
   double far_slant_range_m = 0.0;      // near + c t_sweep / 2
   double range_bin_m = 0.0;            // dr, default c tau / 2
@@ -133,9 +164,11 @@ struct RadarParams {
   double transmit_power_w = 0.0;  // P_t
   double peak_gain = 1.0;         // boresight one-way gain (linear), scales G_e
 
-  TrackSpec track;
-  double speed_m_per_s = 0.0;                 // 0: not given (used only for reporting)
-  double prf_hz = 0.0;                        // 0: not given (used only for reporting)
+  TrackSpec track;             // SLAR, SAR; PPI: only altitude_m, the antenna height as given
+  SarParams sar;               // mode sar
+  PpiParams ppi;               // mode ppi
+  double speed_m_per_s = 0.0;  // 0: not given (used only for reporting)
+  double prf_hz = 0.0;         // 0: not given (used only for reporting)
   std::optional<double> independent_samples;  // nullopt: the seed's equation 16
                                               // (ris/sensor/radar_derived.h)
   double azimuth_line_spacing_m = 0.0;        // 0: one scene cell

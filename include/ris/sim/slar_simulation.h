@@ -13,6 +13,13 @@
 // antenna gain, backscatter) or corrected per pixel afterwards (range, area);
 // k and M in the greytone map; fading by applying speckle or not.
 //
+// SAR stripmap (radar.mode == sar, MODEL.md section 3) runs the same stages:
+// the azimuth window is the constant multilooked resolution L_a rho_a instead
+// of w(R) = R phi, the range window L_r rho_r over bins of the configured
+// sampling, and NESZ noise is added to the mean power
+// (ris/image/thermal_noise.h). The coherent SAR option is rendered by
+// ris/sim/sar_coherent.h from the same simulation.
+//
 // Example:
 //   ris::SlarSimulation sim = ris::simulate_slar(scene, radar, *sigma0, {});
 //   ris::SlarPictures pic = ris::render_slar(sim, 42);
@@ -34,6 +41,7 @@
 #include "ris/sensor/radar_derived.h"
 #include "ris/sensor/radar_params.h"
 #include "ris/sensor/track.h"
+#include "ris/sim/point_target.h"
 
 namespace ris {
 
@@ -50,6 +58,9 @@ struct SlarOptions {
   // (ris/sim/slar_line_blocks.h) and `geometry` holds only its layout and
   // counts (the products need no more); the images are the same bytes.
   bool keep_geometry = false;
+  // Point scatterers added to the scene (ris/sim/point_target.h); checked to
+  // lie on the scene.
+  std::vector<PointTarget> targets;
 };
 
 struct SlarSimulation {
@@ -65,6 +76,15 @@ struct SlarSimulation {
   std::vector<std::string> category_names;
   bool range_corrected = false;  // range switch off: pixels carry R_1^-4
   bool area_corrected = false;   // area switch off: pixels carry dA_1
+  // Point targets as seen (and the names of those beyond the swath or in
+  // shadow).
+  std::vector<PointReturn> point_returns;
+  std::vector<std::string> hidden_targets;
+  // SAR: thermal noise power added per range bin (empty without NESZ).
+  std::vector<double> noise_power_w;
+  // Conditions worth a user's attention that are not errors (printed by the
+  // command, recorded in metadata.json).
+  std::vector<std::string> warnings;
 };
 
 // Throws InputError for bad input (terrain at or above the sensor, a swath

@@ -1,0 +1,56 @@
+// The PPI geometry stage: the terrain sampled along rays from a radar site
+// (MODEL.md section 2, "PPI"). Each ray is a vertical half-plane at azimuth
+// alpha (clockwise from north, scene +y); along it the line geometry of
+// SLAR holds with u the ground distance from the site, so the per-sample
+// quantities, the element ends and the shadow and layover scans are the
+// shared ones (ris/geometry/line_scan.h), and the rays are stored as the
+// lines of a SlarGeometry, so image formation (ris/image/slar_image.h)
+// serves PPI unchanged.
+//
+// Rays: the scan sector [start, start + width) is split into whole rays
+// ray_spacing apart (at most half the azimuth beamwidth), ray k centred at
+// alpha_k = start + (k + 1/2) spacing. `pad` rays are added before the first
+// and after the last so that the azimuth smearing over the beamwidth sees the
+// ground the beam covers beyond the sector's edge rays (for a full circle,
+// the rays on the other side of north). Samples: u_j = (j + 1/2) step, step =
+// half the smaller cell size, bilinear elevation and slope, nearest
+// category (ris/geometry/terrain_sample.h), out to the far slant range over
+// the lowest terrain or the scene's farthest corner.
+//
+// The element of sample j on ray k is the annular sector u_j dalpha x step:
+// its horizontal area grows with u, so summing rays over the beamwidth gives
+// the ground arc u phi that the beam covers.
+//
+// Example:
+//   ris::PpiGeometry g = ris::compute_ppi_geometry(scene, radar);
+//   double alpha = g.azimuth_rad(k);  // ray k of g.rays (0 .. g.rays.lines - 1)
+#pragma once
+
+#include <string>
+
+#include "ris/geometry/slar_geometry.h"
+#include "ris/scene/scene.h"
+#include "ris/sensor/radar_params.h"
+
+namespace ris {
+
+struct PpiGeometry {
+  // Lines = rays, including the padding. Unused SLAR fields: track,
+  // line_spacing_m (0; the rays' spacing is ray_spacing_rad).
+  SlarGeometry rays;
+  double site_x_m = 0.0, site_y_m = 0.0;
+  double site_ground_m = 0.0;      // terrain height at the site
+  double altitude_m = 0.0;         // antenna above the datum, H
+  double first_azimuth_rad = 0.0;  // centre of ray 0 (a padding ray)
+  double ray_spacing_rad = 0.0;
+  int pad = 0;        // padding rays at each end
+  int scan_rays = 0;  // rays in the sector: rays pad .. pad + scan_rays - 1
+  double azimuth_rad(int ray) const { return first_azimuth_rad + ray * ray_spacing_rad; }
+};
+
+// Throws InputError naming radar.source_file for a site off the scene or on
+// no data (key "site.position"), an antenna at or below the terrain at the
+// site (key "site.altitude"), or a range window that misses the scene.
+PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar);
+
+}  // namespace ris

@@ -1,0 +1,66 @@
+// Point scatterers added to a scene (corner reflectors, masts, vehicles): the
+// seed's "hard (cultural) targets" (section 3.2.9), each a single scatterer
+// of radar cross-section sigma (m^2) at a ground position and a height above
+// the terrain. It returns P = P_t G^2 lambda^2 sigma / ((4 pi)^3 R^4) (the
+// radar equation with sigma in place of sigma0 A), unless the terrain between
+// it and the radar hides it (the cast-shadow test of MODEL.md section 2 at
+// the target's own height).
+//
+// File format (TOML, docs/modes.md "Point targets"), passed with --targets:
+//   [[target]]
+//   name = "corner reflector 1"     # optional
+//   position = [1200.0, 800.0]      # scene x, y (metres or "<n> ft")
+//   height = "2 m"                  # above the terrain there (default 0)
+//   rcs = 1000.0                    # m^2, or rcs_db = 30 (dBsm)
+//
+// Example:
+//   std::vector<ris::PointTarget> t = ris::load_point_targets("targets.toml");
+//   ris::check_point_targets_on_scene(t, scene);
+//   std::vector<ris::PointReturn> r = ris::point_returns_on_lines(t, scene, geometry);
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "ris/geometry/slar_geometry.h"
+#include "ris/image/slar_image.h"
+#include "ris/scene/scene.h"
+
+namespace ris {
+
+struct PointTarget {
+  std::string name;
+  double x_m = 0.0, y_m = 0.0;  // scene coordinates
+  double height_m = 0.0;        // above the terrain at (x, y)
+  double rcs_m2 = 0.0;          // radar cross-section sigma
+  std::string source_file;      // for messages
+  int index = 0;                // position in its file ([[target]] number, from 0)
+};
+
+std::vector<PointTarget> load_point_targets(const std::string& path);
+std::vector<PointTarget> point_targets_from_toml(const toml::table& doc,
+                                                 const std::string& source_file);
+
+// Throws InputError (file, "target[i].position") for a target outside the
+// scene or on a no-data cell.
+void check_point_targets_on_scene(const std::vector<PointTarget>& targets, const Scene& scene);
+
+// The target's base: terrain height at (x, y) (bilinear), NaN off the scene.
+double terrain_height_at(const Scene& scene, double x_m, double y_m);
+
+// Whether a point at ground distance u_m and height h_m on geometry line
+// `line` is lit: no sample of that line nearer than u has a larger
+// t = u / (H - h) (MODEL.md section 2, "Cast shadow").
+bool point_lit_on_line(const SlarGeometry& g, int line, double u_m, double h_m);
+
+// The targets as seen from a SLAR/SAR track: line by along-track position,
+// slant range from the zero-Doppler point. Targets beyond the track's ends,
+// behind it (u <= 0) or in shadow are left out; `hidden` (optional) receives
+// their names.
+std::vector<PointReturn> point_returns_on_lines(const std::vector<PointTarget>& targets,
+                                                const Scene& scene, const SlarGeometry& g,
+                                                std::vector<std::string>* hidden = nullptr);
+
+}  // namespace ris

@@ -1,0 +1,177 @@
+#include "ris/geometry/ppi_geometry.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "ris/geometry/line_scan.h"
+#include "ris/geometry/surface_gradient.h"
+#include "ris/geometry/terrain_sample.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+
+namespace ris {
+
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+void check_site(const Scene& scene, const RadarParams& radar, double& ground_m) {
+  const PpiParams& p = radar.ppi;
+  const auto [x0, y1] = scene.world_from_grid(0.0, 0.0);
+  const auto [x1, y0] = scene.world_from_grid(scene.cols, scene.rows);
+  if (!(p.site_x_m >= x0 && p.site_x_m <= x1 && p.site_y_m >= y0 && p.site_y_m <= y1)) {
+    throw InputError(radar.source_file, "site.position",
+                     fmt::format("the radar site ({:.1f}, {:.1f}) m is outside the scene, which "
+                                 "spans x {:.1f} to {:.1f} m and y {:.1f} to {:.1f} m",
+                                 p.site_x_m, p.site_y_m, x0, x1, y0, y1));
+  }
+  const TerrainSample ts = bilinear_terrain_sample(scene, nullptr, p.site_x_m, p.site_y_m);
+  if (!ts.valid) {
+    throw InputError(radar.source_file, "site.position",
+                     fmt::format("the radar site ({:.1f}, {:.1f}) m lies on no-data cells of the "
+                                 "scene; expected a site on terrain with data",
+                                 p.site_x_m, p.site_y_m));
+  }
+  ground_m = ts.height_m;
+  if (p.altitude_m && !(*p.altitude_m > ground_m)) {
+    throw InputError(radar.source_file, "site.altitude",
+                     fmt::format("the antenna altitude {:.1f} m is at or below the terrain at the "
+                                 "site ({:.1f} m); expected an altitude above the terrain (or give "
+                                 "height, the antenna above the ground)",
+                                 *p.altitude_m, ground_m));
+  }
+}
+
+}  // namespace
+
+PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar) {
+  scene.validate("scene");
+  RIS_CHECK(radar.mode == RadarMode::ppi);
+  const PpiParams& p = radar.ppi;
+  PpiGeometry pg;
+  check_site(scene, radar, pg.site_ground_m);
+  pg.site_x_m = p.site_x_m;
+  pg.site_y_m = p.site_y_m;
+  pg.altitude_m = p.altitude_m ? *p.altitude_m : pg.site_ground_m + *p.height_above_ground_m;
+  const double H = pg.altitude_m;
+
+  // Rays: the sector's, plus the beam's half-width (and one) at each end.
+  pg.ray_spacing_rad = p.ray_spacing_rad;
+  pg.scan_rays = std::max(1, static_cast<int>(std::lround(p.scan_width_rad / p.ray_spacing_rad)));
+  pg.pad = static_cast<int>(std::ceil(0.5 * radar.azimuth_beamwidth_rad / p.ray_spacing_rad)) + 1;
+  pg.first_azimuth_rad = p.scan_start_rad + (0.5 - pg.pad) * p.ray_spacing_rad;
+
+  // Samples: out to the far range over the lowest terrain, or the farthest
+  // scene corner, whichever is nearer.
+  float h_min = std::numeric_limits<float>::infinity();
+  for (std::size_t i = 0; i < scene.size(); ++i)
+    if (scene.valid[i]) h_min = std::min(h_min, scene.elevation_m[i]);
+  const double d_low = H - double(h_min);
+  const double u_far =
+      d_low > 0.0 && radar.far_slant_range_m > d_low
+          ? std::sqrt(radar.far_slant_range_m * radar.far_slant_range_m - d_low * d_low)
+          : radar.far_slant_range_m;
+  double u_corner = 0.0;
+  for (int r : {0, scene.rows})
+    for (int c : {0, scene.cols}) {
+      const auto [x, y] = scene.world_from_grid(c, r);
+      u_corner = std::max(u_corner, std::hypot(x - p.site_x_m, y - p.site_y_m));
+    }
+  SlarGeometry& g = pg.rays;
+  g.altitude_m = H;
+  g.direct_sampling = false;
+  g.lines = pg.scan_rays + 2 * pg.pad;
+  g.line_spacing_m = 0.0;
+  g.sample_step_m = 0.5 * std::min(scene.dx_m, scene.dy_m);
+  g.first_sample_u_m = 0.5 * g.sample_step_m;
+  g.samples = std::max(1, static_cast<int>(std::ceil(std::min(u_far, u_corner) / g.sample_step_m)));
+  g.track.altitude_m = H;
+
+  const std::size_t n = static_cast<std::size_t>(g.lines) * static_cast<std::size_t>(g.samples);
+  g.height_m.resize(n);
+  g.slant_range_m.resize(n);
+  g.incidence_rad.resize(n);
+  g.local_incidence_rad.resize(n);
+  g.area_m2.resize(n);
+  g.range_near_end_m.resize(n);
+  g.range_far_end_m.resize(n);
+  g.category.resize(n);
+  g.flags.resize(n);
+
+  const SurfaceGradient grad = surface_gradient(scene);
+  // Rays are independent: one per iteration, scratch per thread.
+#pragma omp parallel
+  {
+    std::vector<float> dh_du(static_cast<std::size_t>(g.samples));
+#pragma omp for schedule(dynamic, 16)
+    for (int ray = 0; ray < g.lines; ++ray) {
+      const double alpha = pg.azimuth_rad(ray);
+      const double look_x = std::sin(alpha), look_y = std::cos(alpha);
+      const std::size_t base = g.index(ray, 0);
+      for (int j = 0; j < g.samples; ++j) {
+        const std::size_t i = base + static_cast<std::size_t>(j);
+        const double u = g.sample_u_m(j);
+        const TerrainSample ts =
+            bilinear_terrain_sample(scene, &grad, p.site_x_m + u * look_x, p.site_y_m + u * look_y);
+        std::uint8_t f = 0;
+        if (!ts.inside) f |= sample_flag::kUnseen;
+        if (ts.inside && !ts.valid) f |= sample_flag::kNoData;
+        if (!ts.inside || !ts.valid) {
+          g.height_m[i] = g.slant_range_m[i] = g.incidence_rad[i] = kNaN;
+          g.local_incidence_rad[i] = g.area_m2[i] = kNaN;
+          g.range_near_end_m[i] = g.range_far_end_m[i] = kNaN;
+          g.category[i] = 0;
+          g.flags[i] = f;
+          dh_du[static_cast<std::size_t>(j)] = 0.0f;
+          continue;
+        }
+        const SampleLook look = look_at(ts, u, H, look_x, look_y);
+        if (look.cos_local <= 0.0) f |= sample_flag::kBackFacing;
+        g.height_m[i] = ts.height_m;
+        g.slant_range_m[i] = static_cast<float>(look.slant_range_m);
+        g.incidence_rad[i] = static_cast<float>(look.incidence_rad);
+        g.local_incidence_rad[i] = static_cast<float>(local_incidence_rad(look));
+        // The annular sector u dalpha x step, tilted.
+        g.area_m2[i] =
+            static_cast<float>(u * pg.ray_spacing_rad * g.sample_step_m * look.normal_length);
+        dh_du[static_cast<std::size_t>(j)] = static_cast<float>(look.dh_du);
+        g.category[i] = ts.category;
+        g.flags[i] = f;
+      }
+      const LineSamples ls{g.samples,
+                           g.first_sample_u_m,
+                           g.sample_step_m,
+                           H,
+                           &g.height_m[base],
+                           &g.slant_range_m[base],
+                           &g.range_near_end_m[base],
+                           &g.range_far_end_m[base],
+                           dh_du.data(),
+                           &g.flags[base]};
+      line_element_ends(ls);
+      mark_shadow_and_layover(ls);
+    }
+  }
+
+  std::int64_t nodata = 0, shadow = 0, back = 0, layover = 0;
+#pragma omp parallel for reduction(+ : nodata, shadow, back, layover) schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t f = g.flags[i];
+    nodata += (f & sample_flag::kNoData) ? 1 : 0;
+    shadow += (f & sample_flag::kShadow) ? 1 : 0;
+    back += (f & sample_flag::kBackFacing) ? 1 : 0;
+    layover += (f & sample_flag::kLayover) ? 1 : 0;
+  }
+  g.nodata_samples = nodata;
+  g.shadow_samples = shadow;
+  g.back_facing_samples = back;
+  g.layover_samples = layover;
+  g.nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));
+  return pg;
+}
+
+}  // namespace ris

@@ -1,0 +1,128 @@
+#include "ris/sim/point_target.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "ris/geometry/terrain_sample.h"
+#include "ris/io/config_table.h"
+#include "ris/util/error.h"
+
+namespace ris {
+
+std::vector<PointTarget> point_targets_from_toml(const toml::table& doc,
+                                                 const std::string& source_file) {
+  ConfigTable root(doc, source_file, "");
+  std::vector<PointTarget> out;
+  int i = 0;
+  for (ConfigTable& t : root.table_array("target")) {
+    PointTarget p;
+    p.source_file = source_file;
+    p.index = i;
+    p.name = t.get_string_or("name", fmt::format("target {}", i));
+    const std::vector<double> xy = t.get_quantity_array("position", Quantity::length);
+    if (xy.size() != 2 || !std::isfinite(xy[0]) || !std::isfinite(xy[1])) {
+      t.fail("position", "expected [x, y] in scene metres (2 finite values)");
+    }
+    p.x_m = xy[0];
+    p.y_m = xy[1];
+    p.height_m = t.get_quantity_or("height", Quantity::length, 0.0);
+    if (!(p.height_m >= 0.0) || !std::isfinite(p.height_m)) {
+      t.fail("height", fmt::format("expected a height above the terrain >= 0, got {}", p.height_m));
+    }
+    const bool has_lin = t.has("rcs"), has_db = t.has("rcs_db");
+    if (has_lin == has_db) {
+      t.fail("rcs", "give exactly one of rcs (m^2) and rcs_db (dBsm)");
+    }
+    if (has_lin) {
+      p.rcs_m2 = t.get_double("rcs");
+      if (!(p.rcs_m2 > 0.0) || !std::isfinite(p.rcs_m2)) {
+        t.fail("rcs", fmt::format("expected a radar cross-section > 0 m^2, got {}", p.rcs_m2));
+      }
+    } else {
+      const double db = t.get_double("rcs_db");
+      if (!std::isfinite(db)) t.fail("rcs_db", "expected a finite number of dBsm");
+      p.rcs_m2 = std::pow(10.0, db / 10.0);
+    }
+    t.finish();
+    out.push_back(p);
+    ++i;
+  }
+  root.finish();
+  if (out.empty()) {
+    throw InputError(source_file, "target", "no [[target]] table: expected at least one target");
+  }
+  return out;
+}
+
+std::vector<PointTarget> load_point_targets(const std::string& path) {
+  return point_targets_from_toml(parse_toml_file(path), path);
+}
+
+double terrain_height_at(const Scene& scene, double x_m, double y_m) {
+  const TerrainSample ts = bilinear_terrain_sample(scene, nullptr, x_m, y_m);
+  return ts.valid ? double(ts.height_m) : std::numeric_limits<double>::quiet_NaN();
+}
+
+void check_point_targets_on_scene(const std::vector<PointTarget>& targets, const Scene& scene) {
+  const auto [x0, y1] = scene.world_from_grid(0.0, 0.0);
+  const auto [x1, y0] = scene.world_from_grid(scene.cols, scene.rows);
+  for (const PointTarget& t : targets) {
+    const std::string key = fmt::format("target[{}].position", t.index);
+    if (!(t.x_m >= x0 && t.x_m <= x1 && t.y_m >= y0 && t.y_m <= y1)) {
+      throw InputError(t.source_file, key,
+                       fmt::format("target \"{}\" at ({:.1f}, {:.1f}) m is off the scene, which "
+                                   "spans x {:.1f} to {:.1f} m and y {:.1f} to {:.1f} m",
+                                   t.name, t.x_m, t.y_m, x0, x1, y0, y1));
+    }
+    if (!std::isfinite(terrain_height_at(scene, t.x_m, t.y_m))) {
+      throw InputError(t.source_file, key,
+                       fmt::format("target \"{}\" at ({:.1f}, {:.1f}) m stands on a no-data cell "
+                                   "of the scene",
+                                   t.name, t.x_m, t.y_m));
+    }
+  }
+}
+
+bool point_lit_on_line(const SlarGeometry& g, int line, double u_m, double h_m) {
+  const double H = g.altitude_m;
+  const double t_point = u_m / (H - h_m);
+  constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
+  for (int j = 0; j < g.samples; ++j) {
+    const double u = g.sample_u_m(j);
+    if (u >= u_m) break;
+    const std::size_t i = g.index(line, j);
+    if (g.flags[i] & kSkip) continue;
+    if (u / (H - double(g.height_m[i])) > t_point) return false;
+  }
+  return true;
+}
+
+std::vector<PointReturn> point_returns_on_lines(const std::vector<PointTarget>& targets,
+                                                const Scene& scene, const SlarGeometry& g,
+                                                std::vector<std::string>* hidden) {
+  std::vector<PointReturn> out;
+  const double H = g.altitude_m;
+  for (const PointTarget& t : targets) {
+    const auto [s, u] = g.track.along_cross(t.x_m, t.y_m);
+    const int line = static_cast<int>(std::floor(s / g.line_spacing_m));
+    const double h = terrain_height_at(scene, t.x_m, t.y_m) + t.height_m;
+    const bool seen = line >= 0 && line < g.lines && u > 0.0 && std::isfinite(h) && h < H &&
+                      point_lit_on_line(g, line, u, h);
+    if (!seen) {
+      if (hidden) hidden->push_back(t.name);
+      continue;
+    }
+    PointReturn r;
+    r.line = line;
+    r.along_m = s;
+    r.slant_range_m = std::hypot(u, H - h);
+    r.look_rad = std::atan2(u, H - h);
+    r.rcs_m2 = t.rcs_m2;
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace ris
