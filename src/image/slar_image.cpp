@@ -146,7 +146,8 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
         const double half_w = 0.5 * p.range_window_bins;
         for (int b = 0; b < bins; ++b) {
           const double a = b + 0.5 - half_w, e = b + 0.5 + half_w;
-          scratch.acc[static_cast<std::size_t>(b)] = integral(cum_range, e) - integral(cum_range, a);
+          scratch.acc[static_cast<std::size_t>(b)] =
+              integral(cum_range, e) - integral(cum_range, a);
           scratch.acc_area[static_cast<std::size_t>(b)] =
               integral(cum_range_area, e) - integral(cum_range_area, a);
         }
@@ -220,11 +221,11 @@ void integrate_slar_azimuth(const SlarLineProfiles& prof, const SlarImagingParam
         const std::size_t ii = static_cast<std::size_t>(i);
         return c[ii] + f * (c[ii + 1] - c[ii]);
       };
-      const double half =
-          p.azimuth_window_lines > 0.0
-              ? 0.5 * p.azimuth_window_lines
-              : 0.5 * slar_footprint_m(p.range.centre_m(b), p.azimuth_beamwidth_rad) /
-                    line_spacing_m;
+      const double half = p.azimuth_window_lines > 0.0
+                              ? 0.5 * p.azimuth_window_lines
+                              : 0.5 *
+                                    slar_footprint_m(p.range.centre_m(b), p.azimuth_beamwidth_rad) /
+                                    line_spacing_m;
       for (int k = 0; k < n; ++k) {
         const double a = k - half, e = k + half;
         const std::size_t pix = img.index(k, b);

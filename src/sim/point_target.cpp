@@ -86,15 +86,17 @@ void check_point_targets_on_scene(const std::vector<PointTarget>& targets, const
 }
 
 bool point_lit_on_line(const SlarGeometry& g, int line, double u_m, double h_m) {
+  // Shadowed when a nearer sample has a larger look angle from nadir, compared
+  // as in ris/geometry/line_scan.h: psi_j > psi_p <=> u_j D_p - u_p D_j > 0.
   const double H = g.altitude_m;
-  const double t_point = u_m / (H - h_m);
+  const double d_p = H - h_m;
   constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
   for (int j = 0; j < g.samples; ++j) {
     const double u = g.sample_u_m(j);
     if (u >= u_m) break;
     const std::size_t i = g.index(line, j);
     if (g.flags[i] & kSkip) continue;
-    if (u / (H - double(g.height_m[i])) > t_point) return false;
+    if (u * d_p - u_m * (H - double(g.height_m[i])) > 0.0) return false;
   }
   return true;
 }

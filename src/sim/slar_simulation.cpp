@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/image/greytone.h"
@@ -12,6 +13,7 @@
 #include "ris/image/greytone_terms.h"
 #include "ris/image/thermal_noise.h"
 #include "ris/sensor/elevation_gain.h"
+#include "ris/sim/radiometry_setup.h"
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/util/error.h"
 
@@ -21,17 +23,6 @@ namespace {
 
 void report(const SlarOptions& o, std::string_view stage, double fraction) {
   if (o.progress) o.progress(stage, fraction);
-}
-
-// Categories of the cells with data, sorted.
-std::vector<std::uint16_t> used_categories(const Scene& scene) {
-  std::vector<std::uint8_t> seen(65536, 0);
-  for (std::size_t i = 0; i < scene.size(); ++i)
-    if (scene.valid[i]) seen[scene.category[i]] = 1;
-  std::vector<std::uint16_t> out;
-  for (std::size_t c = 0; c < seen.size(); ++c)
-    if (seen[c]) out.push_back(static_cast<std::uint16_t>(c));
-  return out;
 }
 
 double median_valid_elevation(const Scene& scene) {
@@ -117,36 +108,16 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
         compute_slar_geometry(scene, sim.track, radar.azimuth_line_spacing_m, radar.source_file);
   }
 
-  // sigma0 for every category the scene uses (and the reference's).
+  // sigma0 for every category the scene uses (and the reference's), the
+  // switched-off factors at their reference values.
   report(options, "backscatter", 0.3);
-  sim.categories = used_categories(scene);
-  for (std::uint16_t c : sim.categories) sim.category_names.push_back(sigma0.category_name(c));
-  std::vector<std::uint16_t> lut_categories = sim.categories;
-  if (radar.reference.sigma0_category) lut_categories.push_back(*radar.reference.sigma0_category);
-  const RadarBand band{radar.frequency_hz, radar.polarisation};
-  Sigma0Lut lut = Sigma0Lut::build(sigma0, band, lut_categories, backscatter_file);
-  resolve_reference_sigma0(radar, lut);
-  sim.backscatter_description = sigma0.description();
+  RadiometrySetup rs = prepare_radiometry(scene, radar, sim.derived, sigma0, backscatter_file);
+  sim.categories = rs.categories;
+  sim.category_names = rs.category_names;
+  sim.backscatter_description = rs.backscatter_description;
+  SlarImagingParams& imaging = rs.imaging;
 
-  // Image formation with the switched-off factors at their reference values.
   report(options, "image formation", 0.4);
-  const SwitchedRadarTerms terms = switched_terms(radar);
-  if (terms.constant_sigma0) {
-    lut = Sigma0Lut::build(ConstantSigma0(*terms.constant_sigma0), band, sim.categories,
-                           backscatter_file);
-  }
-  SlarImagingParams imaging;
-  imaging.range.near_m = sim.derived.near_slant_range_m;
-  imaging.range.bin_m = sim.derived.range_bin_m;
-  imaging.range.count = sim.derived.range_bins;
-  imaging.transmit_power_w = terms.transmit_power_w;
-  imaging.wavelength_m = terms.wavelength_m;
-  imaging.peak_gain = terms.peak_gain;
-  imaging.azimuth_beamwidth_rad = radar.azimuth_beamwidth_rad;
-  if (!terms.uniform_elevation) {
-    const ElevationGain gain(radar.elevation_pattern);
-    imaging.elevation_gain = [gain](double beta) { return gain(beta); };
-  }
   if (radar.mode == RadarMode::sar) {
     imaging.azimuth_window_lines =
         radar.sar.azimuth_resolution_looks_m() / sim.geometry.line_spacing_m;
@@ -156,28 +127,15 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   check_point_targets_on_scene(options.targets, scene);
   if (fused) {
     report(options, "geometry + image formation + scene maps (fused)", 0.4);
-    sim.image =
-        form_slar_image_fused(scene, sim.geometry, sim.scene_maps, lut, imaging, radar.source_file);
+    sim.image = form_slar_image_fused(scene, sim.geometry, sim.scene_maps, rs.lut, imaging,
+                                      radar.source_file);
   } else {
     sim.point_returns =
         point_returns_on_lines(options.targets, scene, sim.geometry, &sim.hidden_targets);
     imaging.point_returns = sim.point_returns;
-    sim.image = form_slar_image(sim.geometry, lut, imaging, radar.source_file);
+    sim.image = form_slar_image(sim.geometry, rs.lut, imaging, radar.source_file);
   }
-  sim.range_corrected = terms.reference_range_m.has_value();
-  sim.area_corrected = terms.reference_area_m2.has_value();
-  if (sim.range_corrected || sim.area_corrected) {
-    SlarImage& img = sim.image;
-#pragma omp parallel for schedule(static)
-    for (int line = 0; line < img.lines; ++line) {
-      for (int b = 0; b < img.bins; ++b) {
-        const std::size_t i = img.index(line, b);
-        const double f =
-            range_correction(terms, img.range.centre_m(b)) * area_correction(terms, img.area_m2[i]);
-        img.mean_power_w[i] = static_cast<float>(img.mean_power_w[i] * f);
-      }
-    }
-  }
+  std::tie(sim.range_corrected, sim.area_corrected) = apply_switch_corrections(sim.image, rs.terms);
 
   // SAR thermal noise: NESZ over the multilooked resolution cell.
   if (radar.mode == RadarMode::sar && radar.sar.nesz) {

@@ -1,0 +1,148 @@
+#include "ris/sim/ppi_simulation.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "ris/image/greytone.h"
+#include "ris/image/greytone_image.h"
+#include "ris/sim/point_target.h"
+#include "ris/sim/radiometry_setup.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+
+namespace ris {
+
+namespace {
+
+// Keeps lines [first, first + count) of an image.
+SlarImage crop_lines(const SlarImage& in, int first, int count) {
+  SlarImage out = in;
+  out.lines = count;
+  const std::size_t a = in.index(first, 0), n = static_cast<std::size_t>(count) * in.bins;
+  const auto cut = [&](auto& v, const auto& src) {
+    v.assign(src.begin() + static_cast<std::ptrdiff_t>(a),
+             src.begin() + static_cast<std::ptrdiff_t>(a + n));
+  };
+  cut(out.mean_power_w, in.mean_power_w);
+  cut(out.area_m2, in.area_m2);
+  cut(out.mask, in.mask);
+  cut(out.mapped_count, in.mapped_count);
+  cut(out.visible_count, in.visible_count);
+  return out;
+}
+
+// Angle difference wrapped to [-pi, pi).
+double wrap_pi(double a) {
+  return a - 2.0 * kPi * std::floor((a + kPi) / (2.0 * kPi));
+}
+
+// Targets on every (padded) ray whose sector holds their azimuth.
+std::vector<PointReturn> point_returns_on_rays(const std::vector<PointTarget>& targets,
+                                               const Scene& scene, const PpiGeometry& pg,
+                                               std::vector<std::string>& hidden) {
+  std::vector<PointReturn> out;
+  const SlarGeometry& g = pg.rays;
+  const double H = pg.altitude_m;
+  for (const PointTarget& t : targets) {
+    const double dx = t.x_m - pg.site_x_m, dy = t.y_m - pg.site_y_m;
+    const double u = std::hypot(dx, dy);
+    const double alpha = std::atan2(dx, dy);
+    const double h = terrain_height_at(scene, t.x_m, t.y_m) + t.height_m;
+    bool any = false;
+    for (int k = 0; k < g.lines; ++k) {
+      const double d = wrap_pi(alpha - pg.azimuth_rad(k));
+      if (!(d >= -0.5 * pg.ray_spacing_rad && d < 0.5 * pg.ray_spacing_rad)) continue;
+      if (!(u > 0.0) || !point_lit_on_line(g, k, u, h)) continue;
+      PointReturn r;
+      r.line = k;
+      r.along_m = alpha;
+      r.slant_range_m = std::hypot(u, H - h);
+      r.look_rad = std::atan2(u, H - h);
+      r.rcs_m2 = t.rcs_m2;
+      out.push_back(r);
+      any = true;
+    }
+    if (!any) hidden.push_back(t.name);
+  }
+  return out;
+}
+
+}  // namespace
+
+PpiSimulation simulate_ppi(const Scene& scene, const RadarParams& radar_in,
+                           const Sigma0Source& sigma0, const SlarOptions& options) {
+  RIS_CHECK(radar_in.mode == RadarMode::ppi);
+  PpiSimulation sim;
+  sim.radar = radar_in;
+  RadarParams& radar = sim.radar;
+  sim.derived = derive(radar);
+  const std::string backscatter_file =
+      options.backscatter_file.empty() ? sigma0.description() : options.backscatter_file;
+  if (std::count(scene.valid.begin(), scene.valid.end(), 1) == 0) {
+    throw InputError("scene", "", "the scene has no cell with data");
+  }
+  const auto report = [&](std::string_view stage, double f) {
+    if (options.progress) options.progress(stage, f);
+  };
+
+  // Rays (geometry, slope and shadow per ray).
+  report("geometry", 0.0);
+  sim.geometry = compute_ppi_geometry(scene, radar);
+  const PpiGeometry& pg = sim.geometry;
+
+  report("backscatter", 0.3);
+  RadiometrySetup rs = prepare_radiometry(scene, radar, sim.derived, sigma0, backscatter_file);
+  sim.categories = rs.categories;
+  sim.category_names = rs.category_names;
+  sim.backscatter_description = rs.backscatter_description;
+
+  // B-scope over the padded rays, smeared over the beamwidth, then cropped.
+  report("image formation", 0.4);
+  check_point_targets_on_scene(options.targets, scene);
+  sim.point_returns = point_returns_on_rays(options.targets, scene, pg, sim.hidden_targets);
+  SlarImagingParams& imaging = rs.imaging;
+  sim.beam_rays = radar.azimuth_beamwidth_rad / pg.ray_spacing_rad;
+  imaging.azimuth_window_lines = sim.beam_rays;
+  imaging.point_returns = sim.point_returns;
+  SlarImage padded = form_slar_image(pg.rays, rs.lut, imaging, radar.source_file);
+  apply_switch_corrections(padded, rs.terms);
+  sim.bscope = crop_lines(padded, pg.pad, pg.scan_rays);
+
+  sim.scope_grid =
+      ppi_scope_grid(radar, sim.bscope.range, sim.bscope.lines, pg.altitude_m - pg.site_ground_m);
+  return sim;
+}
+
+PpiPictures render_ppi(const PpiSimulation& sim, std::uint64_t seed) {
+  const SlarImage& img = sim.bscope;
+  PpiPictures pic;
+  pic.seed = seed;
+  std::vector<std::uint8_t> no_data(img.mask.size());
+  for (std::size_t i = 0; i < no_data.size(); ++i)
+    no_data[i] = (img.mask[i] & pixel_flag::kNoData) ? 1 : 0;
+  GreytoneImage g = make_greytone_image(sim.radar, img.mean_power_w, img.lines, img.bins,
+                                        img.range.near_m, img.range.bin_m, seed, no_data);
+  pic.looks = std::move(g.looks_per_bin);
+  pic.speckled_power_w = std::move(g.speckled_power_w);
+  pic.bscope_grey = std::move(g.greytone);
+  pic.reference_power_w = g.map.reference_power_w();
+  pic.reference_greytone = g.map.reference_greytone();
+  pic.greytones_per_decade = g.map.greytones_per_decade();
+  pic.film_offset = g.map.film_offset();
+
+  // The scope: the speckled B-scope scan-converted, the same greytone map.
+  pic.scope_power_w = to_ppi_scope(pic.speckled_power_w, sim.scope_grid);
+  pic.scope_mask = to_ppi_scope_nearest(img.mask, sim.scope_grid, pixel_flag::kNoData);
+  std::vector<std::uint8_t> scope_no_data(pic.scope_mask.size());
+  for (std::size_t i = 0; i < scope_no_data.size(); ++i)
+    scope_no_data[i] = (pic.scope_mask[i] & pixel_flag::kNoData) ? 1 : 0;
+  pic.scope_grey.resize(pic.scope_power_w.size());
+  greytones(pic.scope_power_w, pic.scope_grey, g.map, scope_no_data);
+  draw_range_rings(pic.scope_grey, sim.scope_grid, sim.radar.ppi.ring_spacing_m);
+  return pic;
+}
+
+}  // namespace ris

@@ -1,0 +1,252 @@
+// PPI: per-ray shadow of the predicted length, a ring of equal targets at
+// equal radius, a symmetric scene's symmetric scope, thread independence and
+// bad input (MODEL.md section 2, "PPI").
+#include "ris/sim/ppi_simulation.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "ris/image/greytone_terms.h"
+#include "ris/sensor/radar_config.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+#include "slar_fixtures.h"
+
+namespace ris {
+namespace {
+
+constexpr double kCell = 5.0;  // 200 x 200 cells: 1000 m square, SW corner (0, 0)
+constexpr double kMast = 30.0;
+
+RadarParams ppi_radar(const std::string& extra_scan = "", const std::string& site = "") {
+  return radar_from_toml(toml::parse(R"(
+mode = "ppi"
+frequency = "9.41 GHz"
+polarisation = "HH"
+pulse_width = "0.05 us"
+near_range = 0
+far_range = "450 m"
+azimuth_beamwidth = "2 deg"
+transmit_power = "10 kW"
+antenna_gain_db = 30
+[site]
+)" + (site.empty() ? std::string("position = [500.0, 500.0]\nheight = \"30 m\"\n") : site) +
+                                     "[scan]\n" + extra_scan),
+                         "ppi.toml");
+}
+
+Scene flat_scene() {
+  return Scene::flat(200, 200, kCell, 0.0f, 0);
+}
+
+// The cell whose centre is nearest (x, y).
+std::size_t cell_at(const Scene& s, double x, double y) {
+  const auto [c, r] = s.grid_from_world(x, y);
+  return s.index(static_cast<int>(r), static_cast<int>(c));
+}
+
+TEST(PpiSimulation, TowerCastsARadialShadowOfThePredictedLength) {
+  // A 10 m tower 2 x 2 cells wide, 200-210 m north of a radar on a 30 m mast.
+  Scene s = flat_scene();
+  const double h_tower = 10.0;
+  for (double x : {497.5, 502.5})
+    for (double y : {702.5, 707.5}) s.elevation_m[cell_at(s, x, y)] = float(h_tower);
+  const PpiSimulation sim = simulate_ppi(s, ppi_radar(), test::CosineSigma0Source());
+  const PpiGeometry& g = sim.geometry;
+  ASSERT_EQ(g.scan_rays, 360);
+  // The shadow ends where the ray through the tower's top far edge (u_top =
+  // 207.5 m, the last cell centre at full height) meets the ground:
+  // u_end = u_top H / (H - h), a shadow u_top h / (H - h) long.
+  const double u_top = 207.5;
+  const double u_end = u_top * kMast / (kMast - h_tower);  // 311.25 m
+  for (int ray : {g.pad + 0, g.pad + 359}) {               // rays centred at 0.5 and 359.5 deg
+    int last_shadow = -1, first_shadow = -1;
+    for (int j = 0; j < g.rays.samples; ++j) {
+      if (g.rays.flags[g.rays.index(ray, j)] & sample_flag::kShadow) {
+        if (first_shadow < 0) first_shadow = j;
+        last_shadow = j;
+      }
+    }
+    ASSERT_GE(last_shadow, 0) << "ray " << ray;
+    EXPECT_NEAR(g.rays.sample_u_m(first_shadow), 210.0, kCell) << "ray " << ray;
+    EXPECT_NEAR(g.rays.sample_u_m(last_shadow), u_end, kCell) << "ray " << ray;
+    // Predicted length u_top h / (H - h) = 103.75 m, within a cell.
+    EXPECT_NEAR(g.rays.sample_u_m(last_shadow) - u_top, u_top * h_tower / (kMast - h_tower), kCell);
+  }
+  // Rays well away from the tower (east, south, west) see no shadow.
+  for (int deg : {90, 180, 270}) {
+    for (int j = 0; j < g.rays.samples; ++j)
+      ASSERT_FALSE(g.rays.flags[g.rays.index(g.pad + deg, j)] & sample_flag::kShadow) << deg;
+  }
+}
+
+TEST(PpiSimulation, RingOfEqualTargetsAppearsAtEqualRadiusWithEqualPower) {
+  const Scene s = flat_scene();
+  SlarOptions opt;
+  const double radius = 300.0;
+  for (int i = 0; i < 12; ++i) {
+    // On ray centres (30 i + 0.5 deg) so each target fills one ray's sector.
+    const double a = deg_to_rad(30.0 * i + 0.5);
+    PointTarget t;
+    t.name = "t" + std::to_string(i);
+    t.x_m = 500.0 + radius * std::sin(a);
+    t.y_m = 500.0 + radius * std::cos(a);
+    t.rcs_m2 = 100.0;
+    t.index = i;
+    opt.targets.push_back(t);
+  }
+  const RadarParams radar = ppi_radar();
+  const PpiSimulation with = simulate_ppi(s, radar, test::CosineSigma0Source(), opt);
+  const PpiSimulation without = simulate_ppi(s, radar, test::CosineSigma0Source());
+  EXPECT_TRUE(with.hidden_targets.empty());
+  const SlarImage& a = with.bscope;
+  const SlarImage& b = without.bscope;
+  const double R = std::hypot(radius, kMast);
+  const int bin = static_cast<int>((R - a.range.near_m) / a.range.bin_m);
+  // P = P_t G^2 lambda^2 sigma / ((4 pi)^3 R^4), uniform elevation pattern.
+  const double expected = radar_equation_power_w(radar.transmit_power_w, 100.0, 1.0,
+                                                 radar.peak_gain, radar.wavelength_m(), R);
+  for (int i = 0; i < 12; ++i) {
+    const int ray = 30 * i;
+    // The target brightens its ray most at the same bin for all.
+    const auto added_at = [&](int k) {
+      return double(a.mean_power_w[a.index(ray, k)]) - b.mean_power_w[b.index(ray, k)];
+    };
+    int best = 0;
+    for (int k = 1; k < a.bins; ++k)
+      if (added_at(k) > added_at(best)) best = k;
+    EXPECT_EQ(best, bin) << "target " << i;
+    const double added =
+        double(a.mean_power_w[a.index(ray, bin)]) - b.mean_power_w[b.index(ray, bin)];
+    EXPECT_NEAR(added / expected, 1.0, 1e-3) << "target " << i;
+  }
+  // On the scope: every pixel the targets brighten lies at their radius.
+  std::vector<float> diff(a.mean_power_w.size());
+  for (std::size_t i = 0; i < diff.size(); ++i) diff[i] = a.mean_power_w[i] - b.mean_power_w[i];
+  const std::vector<float> scope = to_ppi_scope(diff, with.scope_grid);
+  const PpiScopeGrid& g = with.scope_grid;
+  int at_radius = 0;
+  for (int row = 0; row < g.size; ++row)
+    for (int col = 0; col < g.size; ++col) {
+      const float v = scope[static_cast<std::size_t>(row) * g.size + col];
+      if (std::isfinite(v) && v > 0.5 * expected) {
+        ++at_radius;
+        EXPECT_NEAR(std::hypot(g.east_m(col), g.north_m(row)), R, a.range.bin_m + g.pixel_m);
+      }
+    }
+  EXPECT_GE(at_radius, 12);
+}
+
+TEST(PpiSimulation, SymmetricSceneGivesASymmetricScope) {
+  // Blocks mirrored about the north-south line through the radar (x = 500 m).
+  Scene s = flat_scene();
+  const auto block = [&](int r0, int c0, int n, float h, std::uint16_t cat) {
+    for (int r = r0; r < r0 + n; ++r)
+      for (int c = c0; c < c0 + n; ++c) {
+        for (int cc : {c, 199 - c}) {
+          s.elevation_m[s.index(r, cc)] = h;
+          s.category[s.index(r, cc)] = cat;
+        }
+      }
+  };
+  block(40, 120, 10, 20.0f, 2);
+  block(130, 150, 6, 8.0f, 3);
+  block(90, 60, 4, 12.0f, 1);
+  const PpiSimulation sim = simulate_ppi(s, ppi_radar(), test::CosineSigma0Source());
+  const std::vector<float> scope = to_ppi_scope(sim.bscope.mean_power_w, sim.scope_grid);
+  const int n = sim.scope_grid.size;
+  ASSERT_EQ(n % 2, 0);
+  double worst = 0.0;
+  int compared = 0;
+  for (int row = 0; row < n; ++row)
+    for (int col = 0; col < n / 2; ++col) {
+      const float l = scope[static_cast<std::size_t>(row) * n + col];
+      const float r = scope[static_cast<std::size_t>(row) * n + (n - 1 - col)];
+      ASSERT_EQ(std::isfinite(l), std::isfinite(r)) << row << "," << col;
+      if (!std::isfinite(l) || (l == 0.0f && r == 0.0f)) continue;
+      worst = std::max(worst, std::abs(double(l) - r) / std::max(double(l), double(r)));
+      ++compared;
+    }
+  EXPECT_GT(compared, 1000);
+  EXPECT_LT(worst, 1e-3);
+}
+
+TEST(PpiSimulation, SameSeedSameBytesForOneAndTwoThreads) {
+  Scene s = flat_scene();
+  for (int r = 50; r < 60; ++r)
+    for (int c = 120; c < 130; ++c) s.elevation_m[s.index(r, c)] = 15.0f;
+  const RadarParams radar = ppi_radar("range_rings = \"100 m\"\n");
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const PpiPictures a = render_ppi(simulate_ppi(s, radar, test::CosineSigma0Source()), 9);
+  omp_set_num_threads(2);
+  const PpiPictures b = render_ppi(simulate_ppi(s, radar, test::CosineSigma0Source()), 9);
+  omp_set_num_threads(saved);
+  EXPECT_EQ(a.scope_grey, b.scope_grey);
+  EXPECT_EQ(a.bscope_grey, b.bscope_grey);
+  ASSERT_EQ(a.speckled_power_w.size(), b.speckled_power_w.size());
+  EXPECT_EQ(0, std::memcmp(a.speckled_power_w.data(), b.speckled_power_w.data(),
+                           a.speckled_power_w.size() * sizeof(float)));
+}
+
+TEST(PpiSimulation, SectorScopeLeavesOutsideTheSectorEmpty) {
+  const PpiSimulation sim =
+      simulate_ppi(flat_scene(), ppi_radar("start = \"45 deg\"\nwidth = \"90 deg\"\n"),
+                   test::CosineSigma0Source());
+  EXPECT_EQ(sim.bscope.lines, 90);
+  const PpiPictures pic = render_ppi(sim, 1);
+  const PpiScopeGrid& g = sim.scope_grid;
+  // North-west of the radar: outside; east: inside.
+  const auto at = [&](double e, double nn) {
+    const int col = static_cast<int>(std::floor(e / g.pixel_m + 0.5 * g.size));
+    const int row = static_cast<int>(std::floor(0.5 * g.size - nn / g.pixel_m));
+    return pic.scope_mask[static_cast<std::size_t>(row) * g.size + col];
+  };
+  EXPECT_TRUE(at(-200.0, 200.0) & pixel_flag::kNoData);
+  EXPECT_FALSE(at(200.0, 0.0) & pixel_flag::kNoData);
+}
+
+TEST(PpiSimulation, BadSiteIsAnInputError) {
+  const Scene s = flat_scene();
+  try {
+    simulate_ppi(s, ppi_radar("", "position = [1500.0, 500.0]\nheight = 30\n"),
+                 test::CosineSigma0Source());
+    ADD_FAILURE() << "site outside the scene accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "site.position");
+    EXPECT_NE(std::string(e.what()).find("outside the scene"), std::string::npos) << e.what();
+  }
+  Scene hill = flat_scene();
+  for (float& h : hill.elevation_m) h = 120.0f;
+  try {
+    simulate_ppi(hill, ppi_radar("", "position = [500.0, 500.0]\naltitude = 100\n"),
+                 test::CosineSigma0Source());
+    ADD_FAILURE() << "antenna below the terrain accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "site.altitude");
+    EXPECT_NE(std::string(e.what()).find("below the terrain"), std::string::npos) << e.what();
+  }
+  SlarOptions opt;
+  PointTarget t;
+  t.name = "far away";
+  t.x_m = 2000.0;
+  t.y_m = 10.0;
+  t.rcs_m2 = 10.0;
+  t.source_file = "targets.toml";
+  opt.targets.push_back(t);
+  try {
+    simulate_ppi(s, ppi_radar(), test::CosineSigma0Source(), opt);
+    ADD_FAILURE() << "target off the scene accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "targets.toml");
+    EXPECT_EQ(e.key(), "target[0].position");
+    EXPECT_NE(std::string(e.what()).find("off the scene"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace ris

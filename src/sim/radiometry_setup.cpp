@@ -1,0 +1,74 @@
+#include "ris/sim/radiometry_setup.h"
+
+#include "ris/sensor/elevation_gain.h"
+
+namespace ris {
+
+namespace {
+
+// Categories of the cells with data, sorted.
+std::vector<std::uint16_t> used_categories(const Scene& scene) {
+  std::vector<std::uint8_t> seen(65536, 0);
+  for (std::size_t i = 0; i < scene.size(); ++i)
+    if (scene.valid[i]) seen[scene.category[i]] = 1;
+  std::vector<std::uint16_t> out;
+  for (std::size_t c = 0; c < seen.size(); ++c)
+    if (seen[c]) out.push_back(static_cast<std::uint16_t>(c));
+  return out;
+}
+
+}  // namespace
+
+RadiometrySetup prepare_radiometry(const Scene& scene, RadarParams& radar,
+                                   const RadarDerived& derived, const Sigma0Source& sigma0,
+                                   const std::string& backscatter_file) {
+  RadiometrySetup rs;
+  // sigma0 for every category the scene uses (and the reference's).
+  rs.categories = used_categories(scene);
+  for (std::uint16_t c : rs.categories) rs.category_names.push_back(sigma0.category_name(c));
+  std::vector<std::uint16_t> lut_categories = rs.categories;
+  if (radar.reference.sigma0_category) lut_categories.push_back(*radar.reference.sigma0_category);
+  const RadarBand band{radar.frequency_hz, radar.polarisation};
+  rs.lut = Sigma0Lut::build(sigma0, band, lut_categories, backscatter_file);
+  resolve_reference_sigma0(radar, rs.lut);
+  rs.backscatter_description = sigma0.description();
+
+  // The switched-off factors at their reference values.
+  rs.terms = switched_terms(radar);
+  if (rs.terms.constant_sigma0) {
+    rs.lut = Sigma0Lut::build(ConstantSigma0(*rs.terms.constant_sigma0), band, rs.categories,
+                              backscatter_file);
+  }
+  SlarImagingParams& imaging = rs.imaging;
+  imaging.range.near_m = derived.near_slant_range_m;
+  imaging.range.bin_m = derived.range_bin_m;
+  imaging.range.count = derived.range_bins;
+  imaging.transmit_power_w = rs.terms.transmit_power_w;
+  imaging.wavelength_m = rs.terms.wavelength_m;
+  imaging.peak_gain = rs.terms.peak_gain;
+  imaging.azimuth_beamwidth_rad = radar.azimuth_beamwidth_rad;
+  if (!rs.terms.uniform_elevation) {
+    const ElevationGain gain(radar.elevation_pattern);
+    imaging.elevation_gain = [gain](double beta) { return gain(beta); };
+  }
+  return rs;
+}
+
+std::pair<bool, bool> apply_switch_corrections(SlarImage& img, const SwitchedRadarTerms& terms) {
+  const bool range = terms.reference_range_m.has_value();
+  const bool area = terms.reference_area_m2.has_value();
+  if (range || area) {
+#pragma omp parallel for schedule(static)
+    for (int line = 0; line < img.lines; ++line) {
+      for (int b = 0; b < img.bins; ++b) {
+        const std::size_t i = img.index(line, b);
+        const double f =
+            range_correction(terms, img.range.centre_m(b)) * area_correction(terms, img.area_m2[i]);
+        img.mean_power_w[i] = static_cast<float>(img.mean_power_w[i] * f);
+      }
+    }
+  }
+  return {range, area};
+}
+
+}  // namespace ris
