@@ -20,11 +20,13 @@
 #include "command_registry.h"
 #include "ris/io/dem_import.h"
 #include "ris/io/scene_io.h"
+#include "ris/scene/fractal_noise.h"
 #include "ris/scene/fractal_terrain.h"
 #include "ris/scene/geo_frame.h"
 #include "ris/scene/landcover.h"
 #include "ris/scene/scene_source.h"
 #include "ris/util/error.h"
+#include "ris/util/progress.h"
 #include "ris/util/units.h"
 
 namespace {
@@ -70,15 +72,21 @@ std::map<std::string, std::uint16_t> names_if_present(const std::string& library
 
 // Legend labels (RIS_CATEGORY_NAMES, ris/scene/scene_source.h) of the
 // categories a scene uses, from a library's names.
+ris::RasterMetadata category_labels(const std::string& scene_name,
+                                    const std::set<std::uint16_t>& used,
+                                    const std::map<std::string, std::uint16_t>& names) {
+  std::map<std::uint16_t, std::string> labels;
+  for (const auto& [name, id] : names)
+    if (used.count(id) != 0) labels[id] = name;
+  return ris::scene_label_metadata(scene_name, labels);
+}
+
 ris::RasterMetadata category_labels(const std::string& scene_name, const ris::Scene& scene,
                                     const std::map<std::string, std::uint16_t>& names) {
   std::set<std::uint16_t> used;
   for (std::size_t i = 0; i < scene.size(); ++i)
     if (scene.valid[i]) used.insert(scene.category[i]);
-  std::map<std::uint16_t, std::string> labels;
-  for (const auto& [name, id] : names)
-    if (used.count(id) != 0) labels[id] = name;
-  return ris::scene_label_metadata(scene_name, labels);
+  return category_labels(scene_name, used, names);
 }
 
 // ---- ris scene import --------------------------------------------------
@@ -175,6 +183,7 @@ struct FractalArgs {
   std::string patch_size = "500 m";
   std::string library;
   std::string centre;
+  std::string generator = "auto";
 };
 
 std::pair<int, int> parse_size(const std::string& text) {
@@ -213,10 +222,22 @@ void run_fractal(const FractalArgs& args) {
   if (!p.patch_categories.empty()) {
     p.patch_size_m = parse_option(args.patch_size, ris::Quantity::length, "--patch-size");
   }
-  ris::Scene scene = ris::fractal_terrain(p);
+  if (args.generator != "auto" && args.generator != "spectral" && args.generator != "noise") {
+    throw ris::InputError(
+        "", "--generator",
+        fmt::format("expected auto, spectral or noise, got \"{}\"", args.generator));
+  }
+  const bool noise =
+      args.generator == "noise" || (args.generator == "auto" && !ris::spectral_synthesis_fits(p));
 
-  // Optionally placed on the Earth: centred on a latitude/longitude in the
-  // WGS 84 UTM zone there, on a grid aligned to whole cells.
+  // The grid in the local frame of Scene::flat, optionally placed on the
+  // Earth: centred on a latitude/longitude in the WGS 84 UTM zone there, on
+  // a grid aligned to whole cells.
+  ris::Scene grid;
+  grid.rows = p.rows;
+  grid.cols = p.cols;
+  grid.dx_m = grid.dy_m = p.cell_m;
+  grid.origin_y_m = p.rows * p.cell_m;
   if (!args.centre.empty()) {
     const auto parts = split_list(args.centre);
     double lat = NAN, lon = NAN;
@@ -227,19 +248,18 @@ void run_fractal(const FractalArgs& args) {
     if (!(std::abs(lat) <= 90.0) || !(std::abs(lon) <= 180.0)) {
       throw ris::InputError("", "--centre", "expected LAT,LON in degrees (e.g. --centre 46.5,8.0)");
     }
-    scene.crs_wkt = ris::utm_wkt_for(lon, lat);
-    auto [x, y] = ris::GeoFrame(scene.crs_wkt, "--centre").scene_from_lonlat(lon, lat);
-    scene.origin_x_m = std::round((x - 0.5 * scene.cols * p.cell_m) / p.cell_m) * p.cell_m;
-    scene.origin_y_m = std::round((y + 0.5 * scene.rows * p.cell_m) / p.cell_m) * p.cell_m;
+    grid.crs_wkt = ris::utm_wkt_for(lon, lat);
+    auto [x, y] = ris::GeoFrame(grid.crs_wkt, "--centre").scene_from_lonlat(lon, lat);
+    grid.origin_x_m = std::round((x - 0.5 * grid.cols * p.cell_m) / p.cell_m) * p.cell_m;
+    grid.origin_y_m = std::round((y + 0.5 * grid.rows * p.cell_m) / p.cell_m) * p.cell_m;
   }
 
-  const int max_lag = std::min(64, std::min(p.rows, p.cols) / 8);
-  const double h_est = max_lag >= 16 ? ris::estimate_hurst(scene, 8, max_lag) : NAN;
   std::string patch_list;
   for (auto c : p.patch_categories)
     patch_list += (patch_list.empty() ? "" : ",") + std::to_string(c);
   ris::RasterMetadata metadata = {
-      {"RIS_GENERATOR", "ris scene fractal (spectral synthesis of fBm)"},
+      {"RIS_GENERATOR", noise ? "ris scene fractal (fBm as octaves of value noise, streamed)"
+                              : "ris scene fractal (spectral synthesis of fBm)"},
       {"RIS_FRACTAL", fmt::format("seed={} hurst={} relief_m={} base_m={} cell_m={} size={}x{}",
                                   p.seed, p.hurst, p.relief_m, p.base_m, p.cell_m, p.cols, p.rows)},
       {"RIS_FRACTAL_CATEGORIES",
@@ -248,9 +268,47 @@ void run_fractal(const FractalArgs& args) {
       {"RIS_VERTICAL_DATUM", "local: elevation above the scene's flat datum"},
       {"RIS_NODATA_CELLS", "0"},
   };
-  for (auto& [k, v] : category_labels(
-           fmt::format("fractal terrain (seed {}, H = {})", p.seed, p.hurst), scene, names))
-    metadata[k] = v;
+  const std::string label = fmt::format("fractal terrain (seed {}, H = {})", p.seed, p.hurst);
+
+  if (noise) {
+    // Made and written a block of rows at a time (ris/scene/fractal_noise.h):
+    // a scene of any size in bounded memory, tiled and ZSTD-compressed.
+    const ris::FractalNoise gen(p);
+    const std::set<std::uint16_t> used =
+        p.patch_categories.empty()
+            ? std::set<std::uint16_t>{p.category}
+            : std::set<std::uint16_t>(p.patch_categories.begin(), p.patch_categories.end());
+    for (auto& [k, v] : category_labels(label, used, names)) metadata[k] = v;
+    ris::SceneGeoTiffWriter out(args.output, grid, metadata, {"ZSTD", 3, true});
+    constexpr int kBlockRows = 256;
+    const std::size_t n = std::size_t(kBlockRows) * std::size_t(p.cols);
+    std::vector<float> z(n);
+    std::vector<std::uint16_t> cat(n);
+    const std::vector<std::uint8_t> valid(n, 1);
+    ris::ProgressBar bar("scene fractal", p.rows, "rows");
+    for (int r0 = 0; r0 < p.rows; r0 += kBlockRows) {
+      const int rows = std::min(kBlockRows, p.rows - r0);
+      gen.rows(r0, rows, z.data(), cat.data());
+      out.write_rows(z.data(), cat.data(), valid.data(), rows);
+      bar.advance(rows);
+    }
+    out.close();
+    bar.finish();
+    fmt::print(
+        "{}: {} x {} cells of {} m, heights {} to {} m, Hurst exponent {} (fBm as octaves "
+        "of value noise, made in blocks of rows{}), seed {}\n",
+        args.output, p.cols, p.rows, p.cell_m, p.base_m, p.base_m + p.relief_m, p.hurst,
+        args.generator == "auto" ? ": too large for spectral synthesis in memory" : "", p.seed);
+    return;
+  }
+
+  ris::Scene scene = ris::fractal_terrain(p);
+  scene.crs_wkt = grid.crs_wkt;
+  scene.origin_x_m = grid.origin_x_m;
+  scene.origin_y_m = grid.origin_y_m;
+  const int max_lag = std::min(64, std::min(p.rows, p.cols) / 8);
+  const double h_est = max_lag >= 16 ? ris::estimate_hurst(scene, 8, max_lag) : NAN;
+  for (auto& [k, v] : category_labels(label, scene, names)) metadata[k] = v;
   ris::write_scene_geotiff(scene, args.output, metadata);
   fmt::print(
       "{}: {} x {} cells of {} m, heights {} to {} m, Hurst exponent {} (variogram "
@@ -315,6 +373,12 @@ void add_scene_terrain(CLI::App& app) {
   fractal->add_option("--centre", fa->centre,
                       "LAT,LON: place the scene there, in the WGS 84 UTM zone (default: a "
                       "local frame with the south-west corner at 0,0)");
+  fractal
+      ->add_option("--generator", fa->generator,
+                   "auto (spectral when it fits in memory, else noise), spectral (spectral "
+                   "synthesis, whole grid in memory) or noise (octaves of value noise, made "
+                   "and written in blocks of rows: any size)")
+      ->capture_default_str();
   fractal->callback([fa] { run_fractal(*fa); });
 }  // namespace
 

@@ -2,11 +2,16 @@
 // (ris/sim/slar_simulation.h, products in ris/sim/slar_products.h).
 //
 //   ris simulate [--scene S] [--radar R] [--backscatter B] [--out DIR]
-//                [--seed N] [--threads N]
+//                [--seed N] [--threads N] [--stream] [--block-lines N]
 //
 // With no arguments: the standard scene (built from its TOML description on
 // the fly) with the seed's figure-4-5 radar and the standard backscatter
 // library, into ./out.
+//
+// A scene raster too large for an in-memory run (scene_needs_streaming) is
+// streamed from its file in blocks of azimuth lines (ris/sim/slar_stream.h;
+// the same products, bounded memory); --stream or --block-lines N asks for
+// that on any scene raster.
 #include <fmt/format.h>
 #include <omp.h>
 #include <spdlog/spdlog.h>
@@ -20,11 +25,14 @@
 
 #include "command_registry.h"
 #include "ris/backscatter/library.h"
+#include "ris/io/dem_import.h"
 #include "ris/io/scene_io.h"
+#include "ris/io/scene_stream.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/slar_products.h"
 #include "ris/sim/slar_simulation.h"
+#include "ris/sim/slar_stream.h"
 #include "ris/util/error.h"
 #include "ris/util/progress.h"
 #include "ris/util/units.h"
@@ -40,6 +48,8 @@ struct SimulateArgs {
   std::uint64_t seed = 1;
   int threads = 0;
   bool quiet = false;
+  bool stream = false;
+  int block_lines = 0;
 };
 
 // A .toml scene is a description to build; anything else a raster to read.
@@ -50,6 +60,60 @@ Scene load_scene(const std::string& path) {
   return read_scene(path);
 }
 
+// Whether to stream: asked for, or a scene raster too large for memory
+// (only its header is read to decide).
+bool should_stream(const SimulateArgs& a) {
+  if (a.block_lines < 0) {
+    throw InputError("", "--block-lines",
+                     fmt::format("expected a positive number of lines, got {}", a.block_lines));
+  }
+  const bool is_raster = std::filesystem::path(a.scene).extension() != ".toml";
+  if (a.stream || a.block_lines > 0) {
+    if (!is_raster) {
+      throw InputError(a.scene, "--stream",
+                       "a streamed run reads a scene raster; build the description first with: "
+                       "ris scene build " +
+                           a.scene + " -o scene.tif");
+    }
+    return true;
+  }
+  if (!is_raster || dem_needs_import(a.scene)) return false;
+  const SceneStreamReader probe(a.scene);
+  if (!scene_needs_streaming(probe.grid().rows, probe.grid().cols)) return false;
+  spdlog::warn(
+      "{}: {} x {} cells is too large for an in-memory run; streaming it in blocks of "
+      "azimuth lines",
+      a.scene, probe.grid().cols, probe.grid().rows);
+  return true;
+}
+
+void run_streamed(const SimulateArgs& a, std::chrono::steady_clock::time_point t0) {
+  const RadarParams radar = load_radar(a.radar);
+  const std::string backscatter =
+      a.backscatter.empty() ? default_sigma0_library_path() : a.backscatter;
+  const std::unique_ptr<Sigma0Source> sigma0 = load_sigma0_source(backscatter);
+  const SlarRunInfo info{a.scene, a.radar, backscatter, a.seed,
+                         a.threads > 0 ? a.threads : omp_get_max_threads()};
+  SlarStreamOptions o;
+  o.block_lines = a.block_lines;
+  o.quiet = a.quiet;
+  const SlarStreamSummary s = simulate_slar_streamed(a.scene, radar, *sigma0, info, a.out, o);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const SlarGeometry& g = s.sim.geometry;
+  const double samples = double(g.lines) * double(g.samples);
+  fmt::print("simulated {} ({} x {} cells, streamed in {} blocks of {} lines) with {}\n", a.scene,
+             s.grid.cols, s.grid.rows, s.blocks, s.block_lines, a.radar);
+  fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
+             s.sim.image.lines, s.sim.image.bins, s.sim.ground_grid.count);
+  fmt::print(
+      "  shadow {:.2f}%, layover {:.2f}%, back-facing {:.2f}% of samples; {} no-data cells\n",
+      100.0 * double(g.shadow_samples) / samples, 100.0 * double(g.layover_samples) / samples,
+      100.0 * double(g.back_facing_samples) / samples, g.nodata_cells);
+  fmt::print("  {:.2f} s; outputs in {}\n", seconds,
+             std::filesystem::absolute(a.out).lexically_normal().string());
+}
+
 void run_simulate(const SimulateArgs& a) {
   if (a.threads < 0) {
     throw InputError("", "--threads",
@@ -57,6 +121,10 @@ void run_simulate(const SimulateArgs& a) {
   }
   if (a.threads > 0) omp_set_num_threads(a.threads);
   const auto t0 = std::chrono::steady_clock::now();
+  if (should_stream(a)) {
+    run_streamed(a, t0);
+    return;
+  }
 
   // Progress only on a terminal and without --quiet (ris/util/progress.h):
   // percent of the run by stage, rate and time remaining.
@@ -121,6 +189,12 @@ void add_simulate(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Fading seed")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--quiet", args->quiet, "No progress bar (it shows only on a terminal anyway)");
+  cmd->add_flag("--stream", args->stream,
+                "Stream the scene raster from its file in blocks of azimuth lines (bounded "
+                "memory; automatic when the scene is too large for memory)");
+  cmd->add_option("--block-lines", args->block_lines,
+                  "Azimuth lines per streamed block (implies --stream; default: from a 512 MiB "
+                  "budget)");
   cmd->callback([args] { run_simulate(*args); });
 }
 

@@ -148,9 +148,15 @@ void check_terrain_below_sensor(const Scene& scene, double altitude_m, const std
       worst = i;
     }
   }
-  if (worst < scene.size() && double(max_h) >= altitude_m) {
-    const int r = static_cast<int>(worst / static_cast<std::size_t>(scene.cols));
-    const int c = static_cast<int>(worst % static_cast<std::size_t>(scene.cols));
+  if (worst == scene.size()) return;
+  check_terrain_below_sensor(max_h, static_cast<int>(worst / static_cast<std::size_t>(scene.cols)),
+                             static_cast<int>(worst % static_cast<std::size_t>(scene.cols)),
+                             altitude_m, file);
+}
+
+void check_terrain_below_sensor(float max_h, int r, int c, double altitude_m,
+                                const std::string& file) {
+  if (r >= 0 && double(max_h) >= altitude_m) {
     throw InputError(file, "altitude",
                      fmt::format("the terrain reaches {:.1f} m (scene row {}, column {}), at or "
                                  "above the sensor altitude {:.1f} m; expected an altitude above "

@@ -7,6 +7,20 @@
 
 namespace ris {
 
+bool geocode_pixel(const Scene& scene, const Track& track, const SlarImage& img, int r, int c,
+                   float elevation_m, int& line_out, int& bin_out) {
+  const auto [x, y] = scene.cell_centre(r, c);
+  const auto [s, u] = track.along_cross(x, y);
+  if (!(u > 0.0)) return false;
+  const double line = std::floor(s / img.line_spacing_m);
+  const double dz = track.altitude_m - elevation_m;
+  const double bin = std::floor((std::sqrt(u * u + dz * dz) - img.range.near_m) / img.range.bin_m);
+  if (!(line >= 0 && line < img.lines && bin >= 0 && bin < img.bins)) return false;
+  line_out = static_cast<int>(line);
+  bin_out = static_cast<int>(bin);
+  return true;
+}
+
 namespace {
 
 // Each scene cell takes the value of the pixel it maps to, else `fill`.
@@ -16,21 +30,15 @@ std::vector<T> geocode(const Scene& scene, const Track& track, const SlarImage& 
   RIS_CHECK(slant.size() == static_cast<std::size_t>(img.lines) * img.bins);
   RIS_CHECK(img.line_spacing_m > 0.0 && img.range.bin_m > 0.0);
   std::vector<T> out(scene.size(), fill);
-  const double h_sensor = track.altitude_m;
 #pragma omp parallel for schedule(static)
   for (int r = 0; r < scene.rows; ++r) {
     for (int c = 0; c < scene.cols; ++c) {
       const std::size_t cell = scene.index(r, c);
-      if (!scene.valid[cell]) continue;
-      const auto [x, y] = scene.cell_centre(r, c);
-      const auto [s, u] = track.along_cross(x, y);
-      if (!(u > 0.0)) continue;
-      const double line = std::floor(s / img.line_spacing_m);
-      const double dz = h_sensor - scene.elevation_m[cell];
-      const double bin =
-          std::floor((std::sqrt(u * u + dz * dz) - img.range.near_m) / img.range.bin_m);
-      if (!(line >= 0 && line < img.lines && bin >= 0 && bin < img.bins)) continue;
-      out[cell] = slant[img.index(static_cast<int>(line), static_cast<int>(bin))];
+      int line = 0, bin = 0;
+      if (scene.valid[cell] &&
+          geocode_pixel(scene, track, img, r, c, scene.elevation_m[cell], line, bin)) {
+        out[cell] = slant[img.index(line, bin)];
+      }
     }
   }
   return out;

@@ -49,9 +49,14 @@ double median_valid_power_w(std::span<const float> power_w, std::span<const std:
 
 GreytoneMap make_greytone_map(const RadarParams& radar, std::span<const float> mean_power_w,
                               std::span<const std::uint8_t> no_data) {
+  return make_greytone_map_for_median(radar, radar.reference.automatic
+                                                 ? median_valid_power_w(mean_power_w, no_data)
+                                                 : std::numeric_limits<double>::quiet_NaN());
+}
+
+GreytoneMap make_greytone_map_for_median(const RadarParams& radar, double median) {
   const ReferenceCell& ref = radar.reference;
   if (ref.automatic) {
-    const double median = median_valid_power_w(mean_power_w, no_data);
     if (!(median > 0.0)) {
       throw InputError(radar.source_file, "reference",
                        "auto reference: no pixel has a positive mean power (the swath saw "

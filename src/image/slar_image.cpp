@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "image/slar_element.h"
+#include "ris/image/slar_azimuth_integrator.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -28,7 +29,8 @@ TwoWayGainTable::TwoWayGainTable(const std::function<double(double)>& relative_g
   }
 }
 
-void SlarLineProfiles::allocate(int lines_, int bins_) {
+void SlarLineProfiles::allocate(int lines_, int bins_, int first_line) {
+  line0 = first_line;
   lines = lines_;
   bins = bins_;
   const std::size_t n = static_cast<std::size_t>(lines) * static_cast<std::size_t>(bins);
@@ -184,68 +186,22 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
 
 void integrate_slar_azimuth(const SlarLineProfiles& prof, const SlarImagingParams& p,
                             double line_spacing_m, SlarImage& img) {
+  RIS_CHECK(prof.line0 == 0);
   const std::size_t n_pix =
       static_cast<std::size_t>(prof.lines) * static_cast<std::size_t>(prof.bins);
   img.mean_power_w.assign(n_pix, 0.0f);
   img.area_m2.assign(n_pix, 0.0f);
   img.mask.assign(n_pix, 0);
-  // Azimuth: per bin, a running sum over lines. Line j stands for the strip
-  // [j - 1/2, j + 1/2] (in line units); the pixel on line k integrates the
-  // piecewise-constant profile over [k - half, k + half], half = w / (2 ds).
-  const int n = prof.lines;
-  const int bins = prof.bins;
-#pragma omp parallel
-  {
-    std::vector<double> cum(static_cast<std::size_t>(n) + 1);
-    std::vector<double> cum_area(static_cast<std::size_t>(n) + 1);
-    std::vector<int> cum_data(static_cast<std::size_t>(n) + 1);
-    std::vector<int> cum_visible(static_cast<std::size_t>(n) + 1);
-    std::vector<int> cum_layover(static_cast<std::size_t>(n) + 1);
-#pragma omp for schedule(static)
-    for (int b = 0; b < bins; ++b) {
-      cum[0] = cum_area[0] = 0.0;
-      cum_data[0] = cum_visible[0] = cum_layover[0] = 0;
-      for (int j = 0; j < n; ++j) {
-        const std::size_t k = img.index(j, b), jj = static_cast<std::size_t>(j);
-        cum[jj + 1] = cum[jj] + double(prof.power_w[k]);
-        cum_area[jj + 1] = cum_area[jj] + double(prof.area_m2[k]);
-        cum_data[jj + 1] = cum_data[jj] + ((prof.touch[k] & slar_touch::kData) ? 1 : 0);
-        cum_visible[jj + 1] = cum_visible[jj] + ((prof.touch[k] & slar_touch::kVisible) ? 1 : 0);
-        cum_layover[jj + 1] = cum_layover[jj] + ((prof.touch[k] & slar_touch::kLayover) ? 1 : 0);
-      }
-      // Integral of the profile from -1/2 to x (line units), clamped.
-      const auto integral = [n](const std::vector<double>& c, double x) {
-        const double y = std::clamp(x + 0.5, 0.0, double(n));
-        const int i = std::min(static_cast<int>(y), n - 1);
-        const double f = y - i;
-        const std::size_t ii = static_cast<std::size_t>(i);
-        return c[ii] + f * (c[ii + 1] - c[ii]);
-      };
-      const double half = p.azimuth_window_lines > 0.0
-                              ? 0.5 * p.azimuth_window_lines
-                              : 0.5 *
-                                    slar_footprint_m(p.range.centre_m(b), p.azimuth_beamwidth_rad) /
-                                    line_spacing_m;
-      for (int k = 0; k < n; ++k) {
-        const double a = k - half, e = k + half;
-        const std::size_t pix = img.index(k, b);
-        img.mean_power_w[pix] = static_cast<float>(integral(cum, e) - integral(cum, a));
-        img.area_m2[pix] = static_cast<float>(integral(cum_area, e) - integral(cum_area, a));
-        // Lines whose strip overlaps the footprint: j + 1/2 > a and j - 1/2 < e.
-        const int j_lo = std::max(0, static_cast<int>(std::floor(a - 0.5)) + 1);
-        const int j_hi = std::min(n - 1, static_cast<int>(std::ceil(e + 0.5)) - 1);
-        const std::size_t lo = static_cast<std::size_t>(j_lo),
-                          hi = static_cast<std::size_t>(j_hi) + 1;
-        const int data = cum_data[hi] - cum_data[lo];
-        const int visible = cum_visible[hi] - cum_visible[lo];
-        const int layover = cum_layover[hi] - cum_layover[lo];
-        std::uint8_t m = 0;
-        if (data == 0) m |= pixel_flag::kNoData;
-        if (data > 0 && visible == 0) m |= pixel_flag::kShadow;
-        if (layover > 0) m |= pixel_flag::kLayover;
-        img.mask[pix] = m;
-      }
-    }
+  if (n_pix == 0) return;
+  // The streamed step (ris/image/slar_azimuth_integrator.h), fed a block of
+  // lines at a time so its running sums stay small.
+  SlarAzimuthIntegrator az(p, line_spacing_m, prof.lines, prof.bins);
+  constexpr int kBlock = 256;
+  while (az.lines_emitted() < prof.lines) {
+    az.push(prof, std::min(kBlock, prof.lines - az.lines_pushed()));
+    const std::size_t at = img.index(az.lines_emitted(), 0);
+    az.emit(az.lines_ready(), img.mean_power_w.data() + at, img.area_m2.data() + at,
+            img.mask.data() + at);
   }
 }
 

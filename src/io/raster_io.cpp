@@ -1,5 +1,6 @@
 #include "ris/io/raster_io.h"
 
+#include <cpl_conv.h>
 #include <cpl_string.h>
 #include <gdal.h>
 #include <ogr_srs_api.h>
@@ -8,89 +9,48 @@
 
 #include "ris/io/atomic_file.h"
 #include "ris/io/gdal_util.h"
+#include "ris/io/geotiff_block_writer.h"
 #include "ris/util/error.h"
 
 namespace ris {
-
-namespace {
-
-template <typename T>
-constexpr GDALDataType gdal_type() {
-  if constexpr (std::is_same_v<T, float>)
-    return GDT_Float32;
-  else if constexpr (std::is_same_v<T, double>)
-    return GDT_Float64;
-  else if constexpr (std::is_same_v<T, std::uint8_t>)
-    return GDT_Byte;
-  else if constexpr (std::is_same_v<T, std::uint16_t>)
-    return GDT_UInt16;
-  else if constexpr (std::is_same_v<T, std::int32_t>)
-    return GDT_Int32;
-  else
-    static_assert(sizeof(T) == 0, "unsupported raster sample type");
-}
-
-void apply_georef(GDALDatasetH ds, const Georef* georef) {
-  if (georef == nullptr) return;
-  std::array<double, 6> gt = georef->geotransform;
-  GDALSetGeoTransform(ds, gt.data());
-  if (!georef->crs_wkt.empty()) GDALSetProjection(ds, georef->crs_wkt.c_str());
-}
-
-void apply_metadata(GDALDatasetH ds, const RasterMetadata& metadata) {
-  for (const auto& [k, v] : metadata) GDALSetMetadataItem(ds, k.c_str(), v.c_str(), nullptr);
-}
-
-}  // namespace
 
 template <typename T>
 void write_geotiff_bands(const std::filesystem::path& path, const std::vector<BandView<T>>& bands,
                          int cols, int rows, const Georef* georef, std::optional<double> nodata,
                          const RasterMetadata& metadata) {
-  ensure_gdal_registered();
   RIS_CHECK(!bands.empty() && cols > 0 && rows > 0);
-  AtomicPath out(path);
-  GDALDriverH driver = GDALGetDriverByName("GTiff");
-  RIS_CHECK(driver != nullptr);
-  char** options = nullptr;
-  options = CSLSetNameValue(options, "TILED", "YES");
-  options = CSLSetNameValue(options, "COMPRESS", "DEFLATE");
-  options = CSLSetNameValue(options, "BIGTIFF", "IF_SAFER");
-  if (bands.size() > 1) options = CSLSetNameValue(options, "INTERLEAVE", "BAND");
-  GDALDatasetH ds = GDALCreate(driver, out.temp_path().c_str(), cols, rows,
-                               static_cast<int>(bands.size()), gdal_type<T>(), options);
-  CSLDestroy(options);
-  if (ds == nullptr)
-    throw InputError(path.string(), "", "cannot create GeoTIFF: " + last_gdal_error());
-  GdalDataset owner(ds);
-  apply_georef(ds, georef);
-  apply_metadata(ds, metadata);
-  for (size_t b = 0; b < bands.size(); ++b) {
-    GDALRasterBandH band = GDALGetRasterBand(ds, static_cast<int>(b + 1));
-    if (nodata) GDALSetRasterNoDataValue(band, *nodata);
-    if (!bands[b].description.empty()) GDALSetDescription(band, bands[b].description.c_str());
-    CPLErr err = GDALRasterIO(band, GF_Write, 0, 0, cols, rows, const_cast<T*>(bands[b].data), cols,
-                              rows, gdal_type<T>(), 0, 0);
-    if (err != CE_None) throw InputError(path.string(), "", "write failed: " + last_gdal_error());
+  // The block writer, so a raster written whole and one written in blocks
+  // (ris/sim/slar_stream.h) are the same bytes.
+  std::vector<std::string> descriptions;
+  std::vector<const T*> data;
+  for (const BandView<T>& b : bands) {
+    descriptions.push_back(b.description);
+    data.push_back(b.data);
   }
-  owner.reset();  // flush and close before the rename
-  out.commit();
+  GeoTiffBlockWriter<T> writer(path, cols, rows, descriptions, georef, nodata, metadata);
+  writer.write(data, rows);
+  writer.close();
 }
 
 template <typename T>
 void write_geotiff(const std::filesystem::path& path, const T* data, int cols, int rows,
                    const Georef* georef, std::optional<double> nodata,
-                   const RasterMetadata& metadata, const std::string& band_description) {
-  write_geotiff_bands<T>(path, {BandView<T>{data, band_description}}, cols, rows, georef, nodata,
-                         metadata);
+                   const RasterMetadata& metadata, const std::string& band_description,
+                   BlockOrder order) {
+  RIS_CHECK(cols > 0 && rows > 0);
+  GeoTiffBlockWriter<T> writer(path, cols, rows, {band_description}, georef, nodata, metadata, {},
+                               order);
+  const bool by_rows = order == BlockOrder::top_down || order == BlockOrder::bottom_up;
+  writer.write(data, by_rows ? rows : cols, static_cast<std::size_t>(cols));
+  writer.close();
 }
 
-#define RIS_INSTANTIATE_GEOTIFF(T)                                                                \
-  template void write_geotiff<T>(const std::filesystem::path&, const T*, int, int, const Georef*, \
-                                 std::optional<double>, const RasterMetadata&,                    \
-                                 const std::string&);                                             \
-  template void write_geotiff_bands<T>(const std::filesystem::path&,                              \
-                                       const std::vector<BandView<T>>&, int, int, const Georef*,  \
+#define RIS_INSTANTIATE_GEOTIFF(T)                                                                 \
+  template void write_geotiff<T>(const std::filesystem::path&, const T*, int, int, const Georef*,  \
+                                 std::optional<double>, const RasterMetadata&, const std::string&, \
+                                 BlockOrder);                                                      \
+  template void write_geotiff_bands<T>(const std::filesystem::path&,                               \
+                                       const std::vector<BandView<T>>&, int, int, const Georef*,   \
                                        std::optional<double>, const RasterMetadata&);
 RIS_INSTANTIATE_GEOTIFF(float)
 RIS_INSTANTIATE_GEOTIFF(double)
@@ -100,13 +60,28 @@ RIS_INSTANTIATE_GEOTIFF(std::int32_t)
 #undef RIS_INSTANTIATE_GEOTIFF
 
 namespace {
+
+// GDAL's PNG driver reads the source row by row (bounded memory for a file
+// source). PAM is off so no .aux.xml appears beside the temporary name.
+void png_copy(const std::filesystem::path& path, GDALDatasetH src) {
+  GDALDriverH png = GDALGetDriverByName("PNG");
+  RIS_CHECK(png != nullptr);
+  AtomicPath out(path);
+  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
+  GDALDatasetH dst =
+      GDALCreateCopy(png, out.temp_path().c_str(), src, FALSE, nullptr, nullptr, nullptr);
+  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
+  if (dst == nullptr) throw InputError(path.string(), "", "cannot write PNG: " + last_gdal_error());
+  GDALClose(dst);
+  out.commit();
+}
+
 void write_png(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows,
                int channels) {
   ensure_gdal_registered();
   RIS_CHECK(cols > 0 && rows > 0);
   GDALDriverH mem = GDALGetDriverByName("MEM");
-  GDALDriverH png = GDALGetDriverByName("PNG");
-  RIS_CHECK(mem != nullptr && png != nullptr);
+  RIS_CHECK(mem != nullptr);
   GdalDataset src(GDALCreate(mem, "", cols, rows, channels, GDT_Byte, nullptr));
   RIS_CHECK(src != nullptr);
   for (int b = 0; b < channels; ++b) {
@@ -116,14 +91,17 @@ void write_png(const std::filesystem::path& path, const std::uint8_t* data, int 
                               cols, rows, GDT_Byte, channels, cols * channels);
     RIS_CHECK(err == CE_None);
   }
-  AtomicPath out(path);
-  GDALDatasetH dst =
-      GDALCreateCopy(png, out.temp_path().c_str(), handle(src), FALSE, nullptr, nullptr, nullptr);
-  if (dst == nullptr) throw InputError(path.string(), "", "cannot write PNG: " + last_gdal_error());
-  GDALClose(dst);
-  out.commit();
+  png_copy(path, handle(src));
 }
 }  // namespace
+
+void write_png_gray_from_raster(const std::filesystem::path& path,
+                                const std::filesystem::path& source) {
+  GdalDataset src = open_raster(source.string());
+  RIS_CHECK(GDALGetRasterCount(handle(src)) == 1 &&
+            GDALGetRasterDataType(GDALGetRasterBand(handle(src), 1)) == GDT_Byte);
+  png_copy(path, handle(src));
+}
 
 void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols,
                     int rows) {

@@ -91,40 +91,44 @@ std::vector<float> spectral_fbm(int grid_rows, int grid_cols, double hurst, std:
   return z;
 }
 
-// Voronoi patches of jittered seeds, one per patch_size square (Worley 1996).
 void paint_patches(Scene& s, const FractalParams& p) {
-  const double size = p.patch_size_m;
-  const int n_cats = static_cast<int>(p.patch_categories.size());
 #pragma omp parallel for schedule(static)
   for (int r = 0; r < s.rows; ++r) {
     for (int c = 0; c < s.cols; ++c) {
-      auto [x, y] = s.cell_centre(r, c);
-      const auto gx = static_cast<long long>(std::floor(x / size));
-      const auto gy = static_cast<long long>(std::floor(y / size));
-      double best = std::numeric_limits<double>::infinity();
-      double best_pick = 0.0;
-      for (long long jy = gy - 1; jy <= gy + 1; ++jy) {
-        for (long long jx = gx - 1; jx <= gx + 1; ++jx) {
-          // Wrapping negative indices to 32 bits keeps them distinct keys.
-          CounterRng rng(p.seed, static_cast<std::uint32_t>(jy), static_cast<std::uint32_t>(jx),
-                         kPatchStream);
-          const double sx = (double(jx) + rng.uniform()) * size;
-          const double sy = (double(jy) + rng.uniform()) * size;
-          const double dist = (sx - x) * (sx - x) + (sy - y) * (sy - y);
-          if (dist < best) best = dist, best_pick = rng.uniform();
-        }
-      }
-      const auto pick = std::min(static_cast<std::size_t>(best_pick * n_cats),
-                                 static_cast<std::size_t>(n_cats - 1));
-      s.category[s.index(r, c)] = p.patch_categories[pick];
+      const auto [x, y] = s.cell_centre(r, c);
+      s.category[s.index(r, c)] = fractal_patch_category(p, x, y);
     }
   }
 }
 
 }  // namespace
 
-Scene fractal_terrain(const FractalParams& p) {
-  check_params(p);
+// Voronoi patches of jittered seeds, one per patch_size square (Worley 1996).
+std::uint16_t fractal_patch_category(const FractalParams& p, double x, double y) {
+  const double size = p.patch_size_m;
+  const int n_cats = static_cast<int>(p.patch_categories.size());
+  const auto gx = static_cast<long long>(std::floor(x / size));
+  const auto gy = static_cast<long long>(std::floor(y / size));
+  double best = std::numeric_limits<double>::infinity();
+  double best_pick = 0.0;
+  for (long long jy = gy - 1; jy <= gy + 1; ++jy) {
+    for (long long jx = gx - 1; jx <= gx + 1; ++jx) {
+      // Wrapping negative indices to 32 bits keeps them distinct keys.
+      CounterRng rng(p.seed, static_cast<std::uint32_t>(jy), static_cast<std::uint32_t>(jx),
+                     kPatchStream);
+      const double sx = (double(jx) + rng.uniform()) * size;
+      const double sy = (double(jy) + rng.uniform()) * size;
+      const double dist = (sx - x) * (sx - x) + (sy - y) * (sy - y);
+      if (dist < best) best = dist, best_pick = rng.uniform();
+    }
+  }
+  const auto pick =
+      std::min(static_cast<std::size_t>(best_pick * n_cats), static_cast<std::size_t>(n_cats - 1));
+  return p.patch_categories[pick];
+}
+
+// Refuses a size whose synthesis does not fit in memory.
+void check_spectral_memory(const FractalParams& p) {
   check_scene_fits_in_memory(p.rows, p.cols, p.source, "--size");
   // The synthesis grid is twice the scene each way (no forced periodicity),
   // two complex floats per cell: about 4 x 16 bytes per scene cell, checked
@@ -134,6 +138,26 @@ Scene fractal_terrain(const FractalParams& p) {
   check_scene_fits_in_memory(
       std::int64_t(grid_rows) * std::int64_t(16 / Scene::bytes_per_cell() + 1), grid_cols, p.source,
       "--size");
+}
+
+bool spectral_synthesis_fits(const FractalParams& p) {
+  try {
+    check_spectral_memory(p);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+void check_fractal_params(const FractalParams& p) {
+  check_params(p);
+}
+
+Scene fractal_terrain(const FractalParams& p) {
+  check_params(p);
+  check_spectral_memory(p);
+  const int grid_rows = fast_fft_size(2 * p.rows);
+  const int grid_cols = fast_fft_size(2 * p.cols);
   const std::vector<float> z = spectral_fbm(grid_rows, grid_cols, p.hurst, p.seed);
 
   Scene s = Scene::flat(p.rows, p.cols, p.cell_m, 0.0f, p.category);

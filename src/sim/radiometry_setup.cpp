@@ -22,9 +22,15 @@ std::vector<std::uint16_t> used_categories(const Scene& scene) {
 RadiometrySetup prepare_radiometry(const Scene& scene, RadarParams& radar,
                                    const RadarDerived& derived, const Sigma0Source& sigma0,
                                    const std::string& backscatter_file) {
+  return prepare_radiometry(used_categories(scene), radar, derived, sigma0, backscatter_file);
+}
+
+RadiometrySetup prepare_radiometry(const std::vector<std::uint16_t>& categories, RadarParams& radar,
+                                   const RadarDerived& derived, const Sigma0Source& sigma0,
+                                   const std::string& backscatter_file) {
   RadiometrySetup rs;
   // sigma0 for every category the scene uses (and the reference's).
-  rs.categories = used_categories(scene);
+  rs.categories = categories;
   for (std::uint16_t c : rs.categories) rs.category_names.push_back(sigma0.category_name(c));
   std::vector<std::uint16_t> lut_categories = rs.categories;
   if (radar.reference.sigma0_category) lut_categories.push_back(*radar.reference.sigma0_category);

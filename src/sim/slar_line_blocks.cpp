@@ -101,6 +101,10 @@ int line_cell(const Scene& scene, const SlarGeometry& g, bool cross_is_x, int li
 
 }  // namespace
 
+int SlarLineEngine::cell_of_line(int line) const {
+  return line_cell(scene_, g_, cross_is_x_, line);
+}
+
 void SlarLineEngine::window_for_lines(int line0, int line1, int& row0, int& rows, int& col0,
                                       int& cols) const {
   int lo = std::numeric_limits<int>::max(), hi = -1;

@@ -50,21 +50,71 @@ json track_json(const Track& t, const Scene& scene) {
   return j;
 }
 
-// Slant-range rasters carry no map georeferencing (their axes are azimuth
-// line and slant range); their geometry goes into the file's metadata.
-RasterMetadata slant_metadata(const SlarImage& img, const std::string& product,
-                              const std::string& units) {
-  return {{"RIS_PRODUCT", product},
-          {"RIS_UNITS", units},
-          {"RIS_ROWS", "azimuth lines, track start first"},
-          {"RIS_COLUMNS", "slant-range bins, near range first"},
-          {"RIS_NEAR_SLANT_RANGE_M", fmt::format("{:.6f}", img.range.near_m)},
-          {"RIS_RANGE_BIN_M", fmt::format("{:.6f}", img.range.bin_m)},
-          {"RIS_LINE_SPACING_M", fmt::format("{:.6f}", img.line_spacing_m)},
-          {"RIS_VERSION", RIS_VERSION}};
+}  // namespace
+
+SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img) {
+  // Slant-range rasters carry no map georeferencing (their axes are azimuth
+  // line and slant range); their geometry goes into the file's metadata.
+  const auto slant = [&img](const std::string& product, const std::string& units) {
+    return RasterMetadata{{"RIS_PRODUCT", product},
+                          {"RIS_UNITS", units},
+                          {"RIS_ROWS", "azimuth lines, track start first"},
+                          {"RIS_COLUMNS", "slant-range bins, near range first"},
+                          {"RIS_NEAR_SLANT_RANGE_M", fmt::format("{:.6f}", img.range.near_m)},
+                          {"RIS_RANGE_BIN_M", fmt::format("{:.6f}", img.range.bin_m)},
+                          {"RIS_LINE_SPACING_M", fmt::format("{:.6f}", img.line_spacing_m)},
+                          {"RIS_VERSION", RIS_VERSION}};
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (file == "mean_power_slant.tif")
+    return {slant("mean power before speckle", "W"), "mean_power_w", nan, false};
+  if (file == "speckled_power_slant.tif")
+    return {slant("power after fading", "W"), "speckled_power_w", std::nullopt, false};
+  if (file == "mask_slant.tif")
+    return {slant("mask: 1 shadow, 2 layover, 4 no data", "bits"), "mask", std::nullopt, false};
+  if (file == "scene_mask.tif") {
+    return {{{"RIS_PRODUCT",
+              "scene geometry mask: 1 shadow, 2 layover, 4 no data, 8 back-facing, 16 outside "
+              "swath"},
+             {"RIS_VERSION", RIS_VERSION}},
+            "mask",
+            std::nullopt,
+            true};
+  }
+  if (file == "local_incidence_deg.tif") {
+    return {{{"RIS_PRODUCT", "local incidence angle"},
+             {"RIS_UNITS", "degrees"},
+             {"RIS_VERSION", RIS_VERSION}},
+            "local_incidence_deg",
+            nan,
+            true};
+  }
+  if (file == "geocoded_power.tif") {
+    return {{{"RIS_PRODUCT", "power after fading, geocoded onto the scene grid (nearest pixel)"},
+             {"RIS_UNITS", "W"},
+             {"RIS_VERSION", RIS_VERSION}},
+            "speckled_power_w",
+            nan,
+            true};
+  }
+  RIS_CHECK(file == "geocoded_grey.tif");
+  return {{{"RIS_PRODUCT",
+            "slant-range greytones geocoded onto the scene grid (nearest pixel); 0 = "
+            "no pixel"},
+           {"RIS_VERSION", RIS_VERSION}},
+          "greytone",
+          0.0,
+          true};
 }
 
-}  // namespace
+BlockOrder scene_line_order(const Track& t) {
+  // As fused_slar_applies: along y when |along_y| is 1 to 1e-9.
+  if (std::abs(std::abs(t.along_y) - 1.0) < 1e-9)
+    return t.along_y > 0.0 ? BlockOrder::bottom_up : BlockOrder::top_down;
+  if (std::abs(std::abs(t.along_x) - 1.0) < 1e-9)
+    return t.along_x > 0.0 ? BlockOrder::left_right : BlockOrder::right_left;
+  return BlockOrder::top_down;
+}
 
 json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPictures& pic,
                    const SlarRunInfo& info) {
@@ -74,6 +124,11 @@ json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPict
     h_min = std::min(h_min, scene.elevation_m[i]);
     h_max = std::max(h_max, scene.elevation_m[i]);
   }
+  return slar_metadata(scene, h_min, h_max, sim, pic, info);
+}
+
+json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimulation& sim,
+                   const SlarPictures& pic, const SlarRunInfo& info) {
   json categories = json::array();
   for (std::size_t i = 0; i < sim.categories.size(); ++i)
     categories.push_back({{"id", sim.categories[i]}, {"name", sim.category_names[i]}});
@@ -178,48 +233,27 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
   std::vector<float> mean = img.mean_power_w;
   for (std::size_t i = 0; i < mean.size(); ++i)
     if (img.mask[i] & pixel_flag::kNoData) mean[i] = std::numeric_limits<float>::quiet_NaN();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  write_geotiff<float>(dir.path("mean_power_slant.tif"), mean.data(), img.bins, img.lines, nullptr,
-                       nan, slant_metadata(img, "mean power before speckle", "W"), "mean_power_w");
-  write_geotiff<float>(dir.path("speckled_power_slant.tif"), pic.speckled_power_w.data(), img.bins,
-                       img.lines, nullptr, std::nullopt,
-                       slant_metadata(img, "power after fading", "W"), "speckled_power_w");
-  write_geotiff<std::uint8_t>(
-      dir.path("mask_slant.tif"), img.mask.data(), img.bins, img.lines, nullptr, std::nullopt,
-      slant_metadata(img, "mask: 1 shadow, 2 layover, 4 no data", "bits"), "mask");
   const Georef georef{scene.geotransform(), scene.crs_wkt};
-  write_geotiff<std::uint8_t>(
-      dir.path("scene_mask.tif"), sim.scene_maps.mask.data(), scene.cols, scene.rows, &georef,
-      std::nullopt,
-      {{"RIS_PRODUCT",
-        "scene geometry mask: 1 shadow, 2 layover, 4 no data, 8 back-facing, 16 outside swath"},
-       {"RIS_VERSION", RIS_VERSION}},
-      "mask");
-  write_geotiff<float>(dir.path("local_incidence_deg.tif"),
-                       sim.scene_maps.local_incidence_deg.data(), scene.cols, scene.rows, &georef,
-                       std::numeric_limits<double>::quiet_NaN(),
-                       {{"RIS_PRODUCT", "local incidence angle"},
-                        {"RIS_UNITS", "degrees"},
-                        {"RIS_VERSION", RIS_VERSION}},
-                       "local_incidence_deg");
+  const auto write = [&](const std::string& file, const auto* data, int cols, int rows,
+                         BlockOrder order = BlockOrder::top_down) {
+    const SlarRasterSpec spec = slar_raster_spec(file, img);
+    write_geotiff(dir.path(file), data, cols, rows, spec.georeferenced ? &georef : nullptr,
+                  spec.nodata, spec.metadata, spec.band, order);
+  };
+  write("mean_power_slant.tif", mean.data(), img.bins, img.lines);
+  write("speckled_power_slant.tif", pic.speckled_power_w.data(), img.bins, img.lines);
+  write("mask_slant.tif", img.mask.data(), img.bins, img.lines);
+  // Scene-grid maps in the order a streamed run computes them (line by line).
+  const BlockOrder line_order = scene_line_order(sim.track);
+  write("scene_mask.tif", sim.scene_maps.mask.data(), scene.cols, scene.rows, line_order);
+  write("local_incidence_deg.tif", sim.scene_maps.local_incidence_deg.data(), scene.cols,
+        scene.rows, line_order);
   // The image on the scene grid, georeferenced like the scene (ris/image/geocode.h).
-  write_geotiff<float>(
-      dir.path("geocoded_power.tif"),
-      geocode_slant_image(scene, sim.track, img, pic.speckled_power_w).data(), scene.cols,
-      scene.rows, &georef, std::numeric_limits<double>::quiet_NaN(),
-      {{"RIS_PRODUCT", "power after fading, geocoded onto the scene grid (nearest pixel)"},
-       {"RIS_UNITS", "W"},
-       {"RIS_VERSION", RIS_VERSION}},
-      "speckled_power_w");
-  write_geotiff<std::uint8_t>(
-      dir.path("geocoded_grey.tif"),
-      geocode_slant_grey(scene, sim.track, img, pic.slant_grey).data(), scene.cols, scene.rows,
-      &georef, 0.0,
-      {{"RIS_PRODUCT",
-        "slant-range greytones geocoded onto the scene grid (nearest pixel); 0 = "
-        "no pixel"},
-       {"RIS_VERSION", RIS_VERSION}},
-      "greytone");
+  write("geocoded_power.tif",
+        geocode_slant_image(scene, sim.track, img, pic.speckled_power_w).data(), scene.cols,
+        scene.rows);
+  write("geocoded_grey.tif", geocode_slant_grey(scene, sim.track, img, pic.slant_grey).data(),
+        scene.cols, scene.rows);
   write_text_file_atomic(dir.path("shadowmap.txt"), shadow_map_text(img));
   write_text_file_atomic(dir.path("metadata.json"),
                          slar_metadata(scene, sim, pic, info).dump(2) + "\n");

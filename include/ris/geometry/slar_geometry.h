@@ -84,6 +84,10 @@ struct SlarGeometry {
 // reaches the sensor altitude (compute_slar_geometry's check).
 void check_terrain_below_sensor(const Scene& scene, double altitude_m,
                                 const std::string& radar_file);
+// The same given the highest valid cell (the first in row-major order among
+// equals; a streamed scene, ris/sim/slar_stream.h); row < 0: no valid cell.
+void check_terrain_below_sensor(float max_elevation_m, int row, int col, double altitude_m,
+                                const std::string& radar_file);
 
 // The geometry's layout (track, lines, samples, spacing, first sample; no
 // per-sample arrays, counts 0) as compute_slar_geometry sets it: it needs

@@ -27,6 +27,14 @@
 
 namespace ris {
 
+// The image pixel (line, bin) of the scene cell (row, col) at elevation
+// elevation_m (a cell with data); false when it is behind the track or
+// outside the image. `image` gives only its layout (lines, bins, range, line
+// spacing). The one formula of the functions below and of the streamed
+// geocoding (ris/sim/slar_stream.h).
+bool geocode_pixel(const Scene& grid, const Track& track, const SlarImage& image, int row, int col,
+                   float elevation_m, int& line, int& bin);
+
 // slant_values: lines x bins (the image's layout), e.g. power in W.
 // Returns rows x cols on the scene grid, NaN where no pixel applies.
 std::vector<float> geocode_slant_image(const Scene& scene, const Track& track,

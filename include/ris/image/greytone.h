@@ -76,6 +76,10 @@ double median_valid_power_w(std::span<const float> power_w,
 // (resolve_reference_sigma0, ris/image/greytone_terms.h).
 GreytoneMap make_greytone_map(const RadarParams& radar, std::span<const float> mean_power_w,
                               std::span<const std::uint8_t> no_data = {});
+// The same when the median of the valid pixels is already known (a streamed
+// image, ris/sim/slar_stream.h): median_power_w is used only by the auto
+// reference (NaN: no valid pixel).
+GreytoneMap make_greytone_map_for_median(const RadarParams& radar, double median_power_w);
 
 // Maps a power raster to greytones, in parallel (OpenMP over blocks of pixels;
 // the result does not depend on the thread count). NaN pixels and masked

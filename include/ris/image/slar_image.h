@@ -122,6 +122,7 @@ SlarImage form_slar_image(const SlarGeometry& geometry, const Sigma0Lut& lut,
 // a fused or streamed pipeline (ris/sim/slar_line_blocks.h) can fill them a
 // block of lines at a time and share the azimuth step. All lines x bins.
 struct SlarLineProfiles {
+  int line0 = 0;  // the first line held (a block of a streamed image)
   int lines = 0;
   int bins = 0;
   std::vector<float> power_w;                // per line, summed P_i spread over bins
@@ -131,9 +132,11 @@ struct SlarLineProfiles {
   std::vector<std::uint16_t> visible_count;  // as SlarImage
   std::int64_t samples_in_swath = 0;
 
-  void allocate(int lines_, int bins_);
+  // Lines [first_line, first_line + lines_) of bins_ bins each, zeroed.
+  void allocate(int lines_, int bins_, int first_line = 0);
+  // line: the image's line number, in [line0, line0 + lines).
   std::size_t index(int line, int bin) const {
-    return static_cast<std::size_t>(line) * static_cast<std::size_t>(bins) +
+    return static_cast<std::size_t>(line - line0) * static_cast<std::size_t>(bins) +
            static_cast<std::size_t>(bin);
   }
 };

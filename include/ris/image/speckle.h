@@ -82,8 +82,10 @@ inline double fading_factor(FadingLaw law, double looks, std::uint64_t seed, std
 // Multiplies each pixel of a lines x bins power raster (row = azimuth line,
 // column = range bin) by its fading factor, N = looks_per_bin[bin]. NaN and
 // non-positive pixels are left as they are. Parallel over lines (OpenMP);
-// identical bytes for any thread count.
+// identical bytes for any thread count. first_line: the image line of the
+// raster's first row (a block of a streamed image, ris/sim/slar_stream.h).
 void apply_fading(std::span<float> power_w, int lines, int bins,
-                  std::span<const double> looks_per_bin, FadingLaw law, std::uint64_t seed);
+                  std::span<const double> looks_per_bin, FadingLaw law, std::uint64_t seed,
+                  int first_line = 0);
 
 }  // namespace ris

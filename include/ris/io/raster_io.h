@@ -35,12 +35,20 @@ struct BandView {
   std::string description;
 };
 
+// The order in which a GeoTIFF's blocks are written (ris/io/
+// geotiff_block_writer.h): rows from the top or the bottom, or columns from
+// the left or the right (a scene-grid product of a track along y heading
+// north, or along x, computed line by line). The file's tiles are written
+// in that order; the pixels are the same whatever the order.
+enum class BlockOrder { top_down, bottom_up, left_right, right_left };
+
 // Single-band GeoTIFF of float, uint8_t, uint16_t or int32_t samples.
 // georef may be null (no georeferencing: pixel coordinates).
 template <typename T>
 void write_geotiff(const std::filesystem::path& path, const T* data, int cols, int rows,
                    const Georef* georef, std::optional<double> nodata = std::nullopt,
-                   const RasterMetadata& metadata = {}, const std::string& band_description = "");
+                   const RasterMetadata& metadata = {}, const std::string& band_description = "",
+                   BlockOrder order = BlockOrder::top_down);
 
 // Multi-band GeoTIFF, every band of type T.
 template <typename T>
@@ -52,6 +60,12 @@ void write_geotiff_bands(const std::filesystem::path& path, const std::vector<Ba
 // 8-bit greyscale PNG (0 black, 255 white).
 void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols,
                     int rows);
+// 8-bit greyscale PNG of a one-band Byte raster file (e.g. a GeoTIFF written
+// block by block, ris/io/geotiff_block_writer.h): GDAL reads the source row
+// by row, so memory stays bounded; the same bytes as write_png_gray of the
+// same pixels.
+void write_png_gray_from_raster(const std::filesystem::path& path,
+                                const std::filesystem::path& source);
 // 8-bit RGB PNG from interleaved r,g,b samples (cols*rows*3).
 void write_png_rgb(const std::filesystem::path& path, const std::uint8_t* rgb, int cols, int rows);
 

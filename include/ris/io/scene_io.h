@@ -17,10 +17,14 @@
 //   ris::write_scene_geotiff(s, "copy.tif");
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "ris/io/geotiff_block_writer.h"
 #include "ris/io/raster_io.h"
 #include "ris/scene/scene.h"
 
@@ -30,6 +34,30 @@ namespace ris {
 // RIS_SOURCE_DEM, RIS_FRAME; see ris/io/dem_import.h).
 void write_scene_geotiff(const Scene& scene, const std::filesystem::path& path,
                          const RasterMetadata& extra_metadata = {});
+
+// A scene GeoTIFF written in blocks of rows (ris/io/geotiff_block_writer.h),
+// for scenes larger than memory; write_scene_geotiff uses it, so the bytes
+// are the same. grid: rows, cols, cell size, origin, CRS (arrays unused).
+class SceneGeoTiffWriter {
+ public:
+  SceneGeoTiffWriter(const std::filesystem::path& path, const Scene& grid,
+                     const RasterMetadata& extra_metadata = {},
+                     const GeoTiffCompression& compression = {});
+  ~SceneGeoTiffWriter();
+  SceneGeoTiffWriter(const SceneGeoTiffWriter&) = delete;
+  SceneGeoTiffWriter& operator=(const SceneGeoTiffWriter&) = delete;
+  // The next `count` rows (count x cols each); cells with valid == 0 are
+  // written as no-data.
+  void write_rows(const float* elevation_m, const std::uint16_t* category,
+                  const std::uint8_t* valid, int count);
+  // Completes the file and renames it into place.
+  void close();
+
+ private:
+  std::unique_ptr<GeoTiffBlockWriter<float>> writer_;
+  int cols_ = 0;
+  std::vector<float> elevation_, category_;
+};
 
 // Reads a ris scene file or an elevation raster (any GDAL format). With
 // category_path, categories come from band 1 of that raster, which must have

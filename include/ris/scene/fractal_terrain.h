@@ -53,6 +53,19 @@ struct FractalParams {
 // refuses a grid too large for memory.
 Scene fractal_terrain(const FractalParams& params);
 
+// The patch category of the point (x, y) (scene metres, in the local frame
+// of Scene::flat: south-west corner at 0, 0); p.patch_categories not empty.
+// Per point, so a streamed generator (ris/scene/fractal_noise.h) paints the
+// same patches.
+std::uint16_t fractal_patch_category(const FractalParams& p, double x_m, double y_m);
+
+// Whether fractal_terrain's spectral synthesis fits in memory for p's size
+// (else it refuses; ris/scene/fractal_noise.h streams instead).
+bool spectral_synthesis_fits(const FractalParams& p);
+
+// Throws InputError (naming the option) for out-of-range parameters.
+void check_fractal_params(const FractalParams& p);
+
 // The experimental variogram exponent: least-squares slope of
 // log(mean (z(x+h) - z(x))^2) against log h for h = min_lag, 2 min_lag, ...
 // up to max_lag cells along rows and columns, halved: an estimate of H. On a

@@ -42,6 +42,11 @@ struct RadiometrySetup {
 RadiometrySetup prepare_radiometry(const Scene& scene, RadarParams& radar,
                                    const RadarDerived& derived, const Sigma0Source& sigma0,
                                    const std::string& backscatter_file);
+// The same given the categories of the cells with data (sorted, unique; a
+// streamed scene, ris/sim/slar_stream.h).
+RadiometrySetup prepare_radiometry(const std::vector<std::uint16_t>& categories, RadarParams& radar,
+                                   const RadarDerived& derived, const Sigma0Source& sigma0,
+                                   const std::string& backscatter_file);
 
 // The range and area switches, applied per pixel after image formation;
 // returns whether each was applied.

@@ -89,6 +89,9 @@ class SlarLineEngine {
   // The scene rows x cols range a block of lines [line0, line1) reads,
   // including the one-cell slope halo, clipped to the scene.
   void window_for_lines(int line0, int line1, int& row0, int& rows, int& col0, int& cols) const;
+  // The row (track along y) or column (along x) of cells line `line` runs
+  // over; -1 when none.
+  int cell_of_line(int line) const;
 
   // Processes lines [line0, line1) (OpenMP over lines, per-thread scratch):
   // fills their rows of `prof` and the cells of `maps` those lines cover;

@@ -22,8 +22,11 @@
 #include <filesystem>
 #include <string>
 
+#include <optional>
+
 #include <nlohmann/json.hpp>
 
+#include "ris/io/raster_io.h"
 #include "ris/scene/scene.h"
 #include "ris/sim/slar_simulation.h"
 
@@ -41,6 +44,30 @@ struct SlarRunInfo {
 // metadata.json's content.
 nlohmann::json slar_metadata(const Scene& scene, const SlarSimulation& sim,
                              const SlarPictures& pictures, const SlarRunInfo& info);
+// The same for a scene whose arrays are not in memory (a streamed run,
+// ris/sim/slar_stream.h): `grid` gives the grid and CRS, the elevation range
+// of the cells with data is given (+inf, -inf when none).
+nlohmann::json slar_metadata(const Scene& grid, float elevation_min_m, float elevation_max_m,
+                             const SlarSimulation& sim, const SlarPictures& pictures,
+                             const SlarRunInfo& info);
+
+// How each GeoTIFF product is written (metadata, band description, no-data
+// value, georeferenced like the scene or not), shared with the streamed run
+// (ris/sim/slar_stream.h) so that its files are the same bytes. file: one of
+// the .tif names above; img gives the slant-range layout.
+struct SlarRasterSpec {
+  RasterMetadata metadata;
+  std::string band;
+  std::optional<double> nodata;
+  bool georeferenced = false;
+};
+SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img);
+
+// The order in which the scene-grid maps (scene_mask.tif,
+// local_incidence_deg.tif) are written: that of the azimuth lines for a
+// track along a grid axis (a streamed run computes them line by line), top
+// down otherwise.
+BlockOrder scene_line_order(const Track& track);
 
 void write_slar_products(const std::filesystem::path& out_dir, const Scene& scene,
                          const SlarSimulation& sim, const SlarPictures& pictures,

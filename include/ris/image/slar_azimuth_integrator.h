@@ -1,0 +1,60 @@
+// The azimuth step of SLAR image formation (ris/image/slar_image.h) as a
+// stream: per-line range profiles go in, in line order, a block at a time;
+// image lines come out as soon as every line their footprint covers is in.
+// integrate_slar_azimuth (the whole image at once) is built on it, so a
+// streamed image (ris/sim/slar_stream.h) is the same bytes.
+//
+// The pixel on line k integrates the piecewise-constant profile over
+// [k - half, k + half] (line units; line j stands for [j - 1/2, j + 1/2];
+// half = w(R) / (2 ds), w = R phi at the bin centre for SLAR, or the constant
+// window of SAR/PPI) by differences of running sums over lines per bin,
+// cum[j] = profile of lines 0..j-1 summed in line order. Only the running
+// sums within M = ceil(max half) + 2 lines of the next line to emit are
+// kept, so memory is (block + 2 M) lines x bins, whatever the image length.
+//
+// Example:
+//   ris::SlarAzimuthIntegrator az(params, line_spacing_m, lines, bins);
+//   az.push(profiles_block, profiles_block.lines);  // lines [az.lines_pushed(), ...)
+//   const int n = az.lines_ready();
+//   az.emit(n, power.data(), area.data(), mask.data());  // n x bins each
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ris/image/slar_image.h"
+
+namespace ris {
+
+class SlarAzimuthIntegrator {
+ public:
+  // lines, bins: the whole image's size.
+  SlarAzimuthIntegrator(const SlarImagingParams& params, double line_spacing_m, int lines,
+                        int bins);
+
+  // Adds the profiles of the next `count` lines, [lines_pushed(),
+  // lines_pushed() + count), which `prof` must hold (prof.bins: the image's).
+  void push(const SlarLineProfiles& prof, int count);
+
+  int lines_pushed() const { return pushed_; }
+  int lines_emitted() const { return emitted_; }
+  // How many more lines emit() can produce now (all that are left once every
+  // line has been pushed).
+  int lines_ready() const;
+  // The next `count` (<= lines_ready()) image lines: count x bins each of
+  // mean power (W), area (m^2) and pixel_flag mask.
+  void emit(int count, float* mean_power_w, float* area_m2, std::uint8_t* mask);
+
+ private:
+  std::size_t row(int cum_index) const;  // offset of a running-sum row
+
+  int lines_ = 0, bins_ = 0;
+  int margin_ = 0;            // M
+  std::vector<double> half_;  // per bin, lines
+  int pushed_ = 0, emitted_ = 0;
+  int base_ = 0;  // running-sum index of the first kept row
+  std::vector<double> cum_, cum_area_;
+  std::vector<int> cum_data_, cum_visible_, cum_layover_;
+};
+
+}  // namespace ris

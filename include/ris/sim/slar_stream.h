@@ -1,0 +1,90 @@
+// A SLAR simulation of a scene larger than memory: the scene is streamed
+// from its raster file in blocks of azimuth lines (ris/io/scene_stream.h),
+// each block runs through the fused per-line engine (ris/sim/
+// slar_line_blocks.h), and every product is written block by block into
+// tiled, compressed GeoTIFFs (ris/io/geotiff_block_writer.h) in a staged
+// output folder (ris/io/atomic_file.h: a failure leaves nothing behind). The
+// products are the same files, byte for byte, as an in-memory run's
+// (simulate_slar + render_slar + write_slar_products; tested).
+//
+// Memory is bounded by the block, not the scene: a block of B lines holds
+// (B + 2) x (cells across) scene cells (elevation, category, validity, mask,
+// local incidence: 12 bytes a cell), B x bins range profiles, the azimuth
+// running sums of B + 2 M lines (M: half the longest footprint, in lines)
+// and one strip of 256 tiles per output file; GDAL's block cache is capped
+// at 256 MiB (unless GDAL_CACHEMAX is set).
+//
+// Passes (each reads the scene, or an image-sized product, once):
+//   0  scene statistics: cells with data, categories used (for the sigma0
+//      table), elevation range and highest cell (terrain below the sensor),
+//      and the first pass of the exact median elevation (the ground-range
+//      reference height; ris/util/rank_select.h);
+//   1  lines in blocks: geometry, image formation and scene-grid maps;
+//      azimuth integration as lines become ready (ris/image/
+//      slar_azimuth_integrator.h); mean power, fading (keyed by seed, bin,
+//      line), masks, shadow map and the scene-grid maps written; the median
+//      elevation's second pass;
+//   1b the mean power read back for the exact median (auto greytone
+//      reference), when the radar asks for it;
+//   2  greytones (slant and ground range, into PNGs through tiled
+//      temporaries) and the geocoded products, scene rows top down, reading
+//      back the speckled power.
+//
+// It runs SLAR tracks along a grid axis (heading 0, 90, 180 or 270 deg, one
+// azimuth line per cell row or column: fused_slar_applies); other tracks,
+// SAR, PPI and point targets need the in-memory path and are refused with
+// an InputError that says so.
+//
+// Example:
+//   ris::SlarStreamOptions o;  o.block_lines = 512;
+//   ris::SlarStreamSummary s = ris::simulate_slar_streamed("big.tif", radar, *sigma0, info, "out",
+//   o);
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "ris/backscatter/sigma0_source.h"
+#include "ris/scene/scene.h"
+#include "ris/sensor/radar_params.h"
+#include "ris/sim/slar_products.h"
+#include "ris/sim/slar_simulation.h"
+
+namespace ris {
+
+struct SlarStreamOptions {
+  // Azimuth lines per block; 0: from memory_budget_bytes.
+  int block_lines = 0;
+  // What the block buffers may take (bytes), when block_lines is 0.
+  std::int64_t memory_budget_bytes = std::int64_t(512) << 20;
+  // Ground-range reference height; default: the median elevation.
+  std::optional<double> reference_height_m;
+  // No progress bar (it shows only on a terminal anyway).
+  bool quiet = false;
+};
+
+struct SlarStreamSummary {
+  Scene grid;          // the scene's grid (no arrays)
+  SlarSimulation sim;  // layout, counts, image size, ground grid (no pixel arrays)
+  int block_lines = 0;
+  int blocks = 0;
+};
+
+// Runs the simulation and writes every product of write_slar_products into
+// out_dir. info: as for write_slar_products (info.backscatter_path names the
+// sigma0 source in messages). Throws InputError for bad input (an unreadable
+// or non-north-up scene, a DEM that needs importing, a track or mode the
+// stream does not run, and everything simulate_slar refuses).
+SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path,
+                                         const RadarParams& radar, const Sigma0Source& sigma0,
+                                         const SlarRunInfo& info,
+                                         const std::filesystem::path& out_dir,
+                                         const SlarStreamOptions& options = {});
+
+// Whether an in-memory run of a rows x cols scene would not fit (the
+// estimate of check_scene_fits_in_memory: `ris simulate` streams then).
+bool scene_needs_streaming(std::int64_t rows, std::int64_t cols);
+
+}  // namespace ris

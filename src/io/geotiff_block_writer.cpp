@@ -1,0 +1,196 @@
+#include "ris/io/geotiff_block_writer.h"
+
+#include <cpl_error.h>
+#include <cpl_string.h>
+#include <gdal.h>
+
+#include <algorithm>
+#include <cstring>
+#include <type_traits>
+
+#include "ris/io/atomic_file.h"
+#include "ris/io/gdal_util.h"
+#include "ris/util/error.h"
+
+namespace ris {
+
+namespace {
+
+template <typename T>
+constexpr GDALDataType gdal_type() {
+  if constexpr (std::is_same_v<T, float>)
+    return GDT_Float32;
+  else if constexpr (std::is_same_v<T, double>)
+    return GDT_Float64;
+  else if constexpr (std::is_same_v<T, std::uint8_t>)
+    return GDT_Byte;
+  else if constexpr (std::is_same_v<T, std::uint16_t>)
+    return GDT_UInt16;
+  else if constexpr (std::is_same_v<T, std::int32_t>)
+    return GDT_Int32;
+  else
+    static_assert(sizeof(T) == 0, "unsupported raster sample type");
+}
+
+}  // namespace
+
+template <typename T>
+struct GeoTiffBlockWriter<T>::Impl {
+  explicit Impl(const std::filesystem::path& path) : out(path) {}
+  AtomicPath out;
+  GdalDataset ds;
+};
+
+template <typename T>
+GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int cols, int rows,
+                                          const std::vector<std::string>& band_descriptions,
+                                          const Georef* georef, std::optional<double> nodata,
+                                          const RasterMetadata& metadata,
+                                          const GeoTiffCompression& compression, BlockOrder order)
+    : impl_(std::make_unique<Impl>(path)),
+      cols_(cols),
+      rows_(rows),
+      bands_(static_cast<int>(band_descriptions.size())),
+      order_(order) {
+  ensure_gdal_registered();
+  RIS_CHECK(bands_ > 0 && cols > 0 && rows > 0);
+  GDALDriverH driver = GDALGetDriverByName("GTiff");
+  RIS_CHECK(driver != nullptr);
+  char** options = nullptr;
+  options = CSLSetNameValue(options, "TILED", "YES");
+  options = CSLSetNameValue(options, "COMPRESS", compression.method.c_str());
+  if (compression.predictor != 1)
+    options = CSLSetNameValue(options, "PREDICTOR", std::to_string(compression.predictor).c_str());
+  if (compression.all_threads) options = CSLSetNameValue(options, "NUM_THREADS", "ALL_CPUS");
+  options = CSLSetNameValue(options, "BIGTIFF", "IF_SAFER");
+  if (bands_ > 1) options = CSLSetNameValue(options, "INTERLEAVE", "BAND");
+  GDALDatasetH ds = GDALCreate(driver, impl_->out.temp_path().c_str(), cols, rows, bands_,
+                               gdal_type<T>(), options);
+  CSLDestroy(options);
+  if (ds == nullptr)
+    throw InputError(path.string(), "", "cannot create GeoTIFF: " + last_gdal_error());
+  impl_->ds.reset(ds);
+  if (georef != nullptr) {
+    std::array<double, 6> gt = georef->geotransform;
+    GDALSetGeoTransform(ds, gt.data());
+    if (!georef->crs_wkt.empty()) GDALSetProjection(ds, georef->crs_wkt.c_str());
+  }
+  for (const auto& [k, v] : metadata) GDALSetMetadataItem(ds, k.c_str(), v.c_str(), nullptr);
+  for (int b = 0; b < bands_; ++b) {
+    GDALRasterBandH band = GDALGetRasterBand(ds, b + 1);
+    if (nodata) GDALSetRasterNoDataValue(band, *nodata);
+    const std::string& d = band_descriptions[static_cast<std::size_t>(b)];
+    if (!d.empty()) GDALSetDescription(band, d.c_str());
+  }
+  int bx = 0, by = 0;
+  GDALGetBlockSize(GDALGetRasterBand(ds, 1), &bx, &by);
+  length_ = by_rows() ? rows_ : cols_;
+  tile_ = std::max(1, by_rows() ? by : bx);
+  // The first strip: tiles are aligned from row (column) 0, so descending
+  // order starts with the last, possibly partial, strip.
+  const int n_strips = (length_ + tile_ - 1) / tile_;
+  strip0_ = ascending() ? 0 : (n_strips - 1) * tile_;
+  strip_len_ = std::min(tile_, length_ - strip0_);
+  const std::size_t across = static_cast<std::size_t>(by_rows() ? cols_ : rows_);
+  buffer_.resize(static_cast<std::size_t>(bands_));
+  for (auto& b : buffer_) b.resize(static_cast<std::size_t>(std::min(tile_, length_)) * across);
+}
+
+template <typename T>
+GeoTiffBlockWriter<T>::~GeoTiffBlockWriter() = default;
+
+template <typename T>
+void GeoTiffBlockWriter<T>::write(const std::vector<const T*>& band_data, int count,
+                                  std::size_t stride) {
+  RIS_CHECK(impl_->ds != nullptr);
+  RIS_CHECK(static_cast<int>(band_data.size()) == bands_);
+  RIS_CHECK(count >= 0 && written_ + count <= length_);
+  if (stride == 0)
+    stride = by_rows() ? static_cast<std::size_t>(cols_) : static_cast<std::size_t>(count);
+  // The block covers [lo, lo + count) along the axis.
+  const int lo = ascending() ? written_ : length_ - written_ - count;
+  int done = 0;  // lines of the block consumed, in arrival order
+  while (done < count) {
+    const int room = strip_len_ - strip_filled_;
+    const int n = std::min(room, count - done);
+    // The n lines of the block taken now, [a, a + n) along the axis.
+    const int a = ascending() ? lo + done : lo + count - done - n;
+    const int in_block = a - lo;       // offset in the block
+    const int in_strip = a - strip0_;  // offset in the strip
+    for (int b = 0; b < bands_; ++b) {
+      const T* src = band_data[static_cast<std::size_t>(b)];
+      T* dst = buffer_[static_cast<std::size_t>(b)].data();
+      if (by_rows()) {
+        const std::size_t w = static_cast<std::size_t>(cols_);
+        for (int r = 0; r < n; ++r)
+          std::memcpy(dst + static_cast<std::size_t>(in_strip + r) * w,
+                      src + static_cast<std::size_t>(in_block + r) * stride, w * sizeof(T));
+      } else {
+        const std::size_t w = static_cast<std::size_t>(strip_len_);
+        for (int r = 0; r < rows_; ++r)
+          std::memcpy(
+              dst + static_cast<std::size_t>(r) * w + static_cast<std::size_t>(in_strip),
+              src + static_cast<std::size_t>(r) * stride + static_cast<std::size_t>(in_block),
+              static_cast<std::size_t>(n) * sizeof(T));
+      }
+    }
+    strip_filled_ += n;
+    written_ += n;
+    done += n;
+    if (strip_filled_ == strip_len_) flush_strip();
+  }
+}
+
+// One complete strip of tiles per RasterIO, flushed at once: the same GDAL
+// calls whatever block sizes the caller used, hence the same bytes.
+template <typename T>
+void GeoTiffBlockWriter<T>::flush_strip() {
+  if (strip_filled_ == 0) return;
+  RIS_CHECK(strip_filled_ == strip_len_);
+  GDALDatasetH ds = handle(impl_->ds);
+  const int x0 = by_rows() ? 0 : strip0_, y0 = by_rows() ? strip0_ : 0;
+  const int w = by_rows() ? cols_ : strip_len_, h = by_rows() ? strip_len_ : rows_;
+  for (int b = 0; b < bands_; ++b) {
+    GDALRasterBandH band = GDALGetRasterBand(ds, b + 1);
+    const CPLErr err =
+        GDALRasterIO(band, GF_Write, x0, y0, w, h, buffer_[static_cast<std::size_t>(b)].data(), w,
+                     h, gdal_type<T>(), 0, 0);
+    if (err != CE_None) {
+      throw InputError(impl_->out.final_path().string(), "", "write failed: " + last_gdal_error());
+    }
+  }
+  CPLErrorReset();
+  GDALFlushCache(ds);
+  if (CPLGetLastErrorType() == CE_Failure || CPLGetLastErrorType() == CE_Fatal) {
+    throw InputError(impl_->out.final_path().string(), "", "write failed: " + last_gdal_error());
+  }
+  // The next strip.
+  strip_filled_ = 0;
+  if (ascending()) {
+    strip0_ += strip_len_;
+  } else {
+    strip0_ -= tile_;
+  }
+  strip_len_ = strip0_ >= 0 && strip0_ < length_ ? std::min(tile_, length_ - strip0_) : 0;
+}
+
+template <typename T>
+void GeoTiffBlockWriter<T>::close() {
+  RIS_CHECK(impl_->ds != nullptr);
+  RIS_CHECK(written_ == length_);
+  CPLErrorReset();
+  GDALClose(impl_->ds.release());
+  if (CPLGetLastErrorType() == CE_Failure || CPLGetLastErrorType() == CE_Fatal) {
+    throw InputError(impl_->out.final_path().string(), "", "write failed: " + last_gdal_error());
+  }
+  impl_->out.commit();
+  buffer_.clear();
+}
+
+template class GeoTiffBlockWriter<float>;
+template class GeoTiffBlockWriter<double>;
+template class GeoTiffBlockWriter<std::uint8_t>;
+template class GeoTiffBlockWriter<std::uint16_t>;
+template class GeoTiffBlockWriter<std::int32_t>;
+
+}  // namespace ris

@@ -1,0 +1,150 @@
+#include "ris/sim/slar_stream.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ris/io/scene_io.h"
+#include "ris/perf/bench_setup.h"
+#include "ris/sensor/radar_config.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+#include "slar_fixtures.h"
+#include "test_util.h"
+
+namespace ris {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fractal scene with a no-data hole, a no-data edge strip, a tower (shadow
+// and layover) and two categories.
+Scene test_scene() {
+  Scene s = make_bench_scene(60, 90, 10.0, 11);
+  for (int r = 20; r < 26; ++r)
+    for (int c = 40; c < 47; ++c) s.valid[s.index(r, c)] = 0;
+  for (int r = 0; r < s.rows; ++r) s.valid[s.index(r, 0)] = 0;
+  for (int r = 28; r < 33; ++r)
+    for (int c = 60; c < 65; ++c) s.elevation_m[s.index(r, c)] = 150.0f;
+  for (int r = 40; r < 60; ++r)
+    for (int c = 10; c < 50; ++c) s.category[s.index(r, c)] = 3;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!s.valid[i]) s.category[i] = kNoDataCategory;
+  return s;
+}
+
+RadarParams test_radar(const Scene& s, double heading_deg, bool auto_reference) {
+  RadarParams r = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+  r = bench_radar(r, s, deg_to_rad(heading_deg));
+  r.track.altitude_m = 600.0;  // steep enough for shadow over the relief
+  r.track.near_edge_ground_m = 1500.0;
+  r = bench_radar(r, s, deg_to_rad(heading_deg));
+  r.reference.automatic = auto_reference;
+  if (!auto_reference) {
+    r.reference.mean_power_w = 1e-12;
+    r.reference.greytone = 100.0;
+  }
+  return r;
+}
+
+std::vector<std::string> files_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Every file of two output folders, byte for byte.
+void expect_same_folders(const fs::path& a, const fs::path& b, const std::string& what) {
+  const std::vector<std::string> na = files_in(a), nb = files_in(b);
+  EXPECT_EQ(na, nb) << what;
+  EXPECT_EQ(na.size(), 11u) << what;  // every product of write_slar_products
+  for (const std::string& name : na) {
+    if (!fs::exists(b / name)) continue;
+    EXPECT_TRUE(test::read_file(a / name) == test::read_file(b / name)) << what << ": " << name;
+  }
+}
+
+// The test: streamed and in-memory runs give identical bytes, for
+// every axis-aligned heading (lines along rows or columns, either way), block
+// sizes that do and do not divide the line count, 1 and 2 threads, and both
+// greytone references (the auto one takes the streamed exact median).
+TEST(SlarStream, StreamedEqualsInMemoryByteForByte) {
+  const Scene s = test_scene();
+  test::TempDir dir;
+  const fs::path scene_path = dir / "scene.tif";
+  write_scene_geotiff(s, scene_path);
+  const Scene read = read_scene(scene_path);
+  const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
+  const int saved = omp_get_max_threads();
+  for (double heading : {0.0, 90.0, 180.0, 270.0}) {
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      const bool auto_ref = heading != 90.0;
+      const RadarParams radar = test_radar(s, heading, auto_ref);
+      const SlarRunInfo info{scene_path.string(), "r.toml", "test", 7, threads};
+      const std::string tag = fmt::format("heading {} threads {}", heading, threads);
+      const fs::path mem = dir / ("mem-" + tag);
+      const SlarSimulation sim = simulate_slar(read, radar, src);
+      write_slar_products(mem, read, sim, render_slar(sim, info.seed), info);
+      for (int block : {7, 16, 1000}) {
+        SlarStreamOptions o;
+        o.block_lines = block;
+        o.quiet = true;
+        const fs::path out = dir / fmt::format("stream-{}-{}", tag, block);
+        const SlarStreamSummary sum = simulate_slar_streamed(scene_path, radar, src, info, out, o);
+        EXPECT_EQ(sum.block_lines, std::min(block, sim.image.lines));
+        expect_same_folders(mem, out, tag + fmt::format(" block {}", block));
+        fs::remove_all(out);
+      }
+      fs::remove_all(mem);
+    }
+  }
+  omp_set_num_threads(saved);
+}
+
+// Bad input fails with an InputError and leaves no output folder (nor a
+// staging folder) behind, including a failure found after blocks were
+// written (a swath that misses the scene).
+TEST(SlarStream, BadInputLeavesNoOutput) {
+  const Scene s = test_scene();
+  test::TempDir dir;
+  const fs::path scene_path = dir / "scene.tif";
+  write_scene_geotiff(s, scene_path);
+  const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
+  const RadarParams radar = test_radar(s, 0.0, true);
+  const SlarRunInfo info{"x", "r.toml", "test", 1, 1};
+  SlarStreamOptions o;
+  o.quiet = true;
+  const auto expect_fails = [&](const fs::path& scene, const RadarParams& r,
+                                const std::string& expected) {
+    const fs::path out = dir / "out";
+    try {
+      simulate_slar_streamed(scene, r, src, info, out, o);
+      ADD_FAILURE() << "no error for " << expected;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(out));
+  };
+  expect_fails(dir / "missing.tif", radar, "missing.tif");
+  test::write_file(dir / "text.tif", "not a raster\n");
+  expect_fails(dir / "text.tif", radar, "text.tif");
+  RadarParams oblique = bench_radar(radar, s, deg_to_rad(30.0));
+  expect_fails(scene_path, oblique, "grid axis");
+  RadarParams far = radar;
+  far.near_slant_range_m += 50000.0;  // the swath lies beyond the scene
+  far.far_slant_range_m += 50000.0;
+  expect_fails(scene_path, far, "misses the scene");
+  // Nothing but the inputs is left in the folder.
+  std::vector<std::string> left = files_in(dir.path());
+  EXPECT_EQ(left, (std::vector<std::string>{"scene.tif", "text.tif"}));
+}
+
+}  // namespace
+}  // namespace ris

@@ -1,0 +1,64 @@
+#include "ris/util/rank_select.h"
+
+#include <cstring>
+
+#include "ris/util/error.h"
+
+namespace ris {
+
+FloatRankSelect::FloatRankSelect() : top_(65536, 0) {}
+
+std::uint32_t FloatRankSelect::key(float v) {
+  std::uint32_t u = 0;
+  std::memcpy(&u, &v, sizeof u);
+  // Positive floats order as their bits with the sign bit set; negative ones
+  // in reverse, so flip all their bits.
+  return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+}
+
+void FloatRankSelect::merge_counts(const FloatRankSelect& other) {
+  for (std::size_t i = 0; i < top_.size(); ++i) top_[i] += other.top_[i];
+}
+
+std::uint64_t FloatRankSelect::total() const {
+  std::uint64_t n = 0;
+  for (std::uint64_t c : top_) n += c;
+  return n;
+}
+
+void FloatRankSelect::select(const std::vector<std::uint64_t>& ranks) {
+  wanted_.clear();
+  for (std::uint64_t rank : ranks) {
+    Wanted w;
+    w.rank = rank;
+    std::uint64_t below = 0;
+    std::uint32_t b = 0;
+    while (b < 65536 && below + top_[b] <= rank) below += top_[b++];
+    RIS_CHECK(b < 65536);  // rank < total()
+    w.bucket = b;
+    w.below = below;
+    w.low.assign(65536, 0);
+    wanted_.push_back(std::move(w));
+  }
+}
+
+void FloatRankSelect::refine(float v) {
+  const std::uint32_t k = key(v);
+  for (Wanted& w : wanted_)
+    if ((k >> 16) == w.bucket) ++w.low[k & 0xFFFFu];
+}
+
+float FloatRankSelect::value(std::size_t i) const {
+  const Wanted& w = wanted_.at(i);
+  std::uint64_t below = w.below;
+  std::uint32_t lo = 0;
+  while (lo < 65536 && below + w.low[lo] <= w.rank) below += w.low[lo++];
+  RIS_CHECK(lo < 65536);  // pass 2 saw the same values as pass 1
+  std::uint32_t k = (w.bucket << 16) | lo;
+  const std::uint32_t u = (k & 0x80000000u) ? (k & 0x7FFFFFFFu) : ~k;
+  float v = 0.0f;
+  std::memcpy(&v, &u, sizeof v);
+  return v;
+}
+
+}  // namespace ris

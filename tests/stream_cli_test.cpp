@@ -1,0 +1,75 @@
+// `ris simulate --stream` / `--block-lines` and `ris scene fractal
+// --generator noise` end to end.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "ris/io/raster_io.h"
+#include "test_util.h"
+
+namespace ris {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The standard scene as a raster, simulated in memory and streamed: the same
+// bytes in every product.
+TEST(StreamCli, StreamedRunWritesTheSameFiles) {
+  test::TempDir dir;
+  const std::string scene = (dir / "std.tif").string();
+  ASSERT_EQ(test::run_ris("scene build -o " + scene).exit_code, 0);
+  const auto mem = test::run_ris("simulate --quiet --threads 2 --scene " + scene + " --out " +
+                                 (dir / "mem").string());
+  ASSERT_EQ(mem.exit_code, 0) << mem.output;
+  const auto st = test::run_ris("simulate --threads 2 --block-lines 96 --scene " + scene +
+                                " --out " + (dir / "st").string());
+  ASSERT_EQ(st.exit_code, 0) << st.output;
+  EXPECT_NE(st.output.find("streamed in 8 blocks of 96 lines"), std::string::npos) << st.output;
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir / "mem")) {
+    const fs::path other = dir / "st" / e.path().filename();
+    EXPECT_TRUE(test::read_file(e.path()) == test::read_file(other)) << e.path().filename();
+    ++files;
+  }
+  EXPECT_EQ(files, 11);
+}
+
+TEST(StreamCli, BadInputsFailWithoutOutput) {
+  test::TempDir dir;
+  const std::string out = (dir / "out").string();
+  auto r = test::run_ris("simulate --stream --scene " + (dir / "missing.tif").string() + " --out " +
+                         out);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("missing.tif"), std::string::npos) << r.output;
+  r = test::run_ris("simulate --stream --out " + out);  // the default scene is a description
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("ris scene build"), std::string::npos) << r.output;
+  r = test::run_ris("simulate --block-lines -3 --out " + out);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--block-lines"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(StreamCli, NoiseFractalIsATiledCompressedScene) {
+  test::TempDir dir;
+  const std::string path = (dir / "n.tif").string();
+  const auto r = test::run_ris(
+      "scene fractal --generator noise --size 300x200 --cell-size 10 "
+      "--relief 400 --base 50 -o " +
+      path);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const RasterF64 s = read_raster_f64(path);
+  EXPECT_EQ(s.cols, 300);
+  EXPECT_EQ(s.rows, 200);
+  EXPECT_EQ(s.metadata.at("RIS_SCENE"), "1");
+  double lo = 1e9, hi = -1e9;
+  for (int i = 0; i < 300 * 200; ++i) lo = std::min(lo, s.data[i]), hi = std::max(hi, s.data[i]);
+  EXPECT_GE(lo, 50.0);
+  EXPECT_LE(hi, 450.0);
+  EXPECT_GT(hi - lo, 380.0);
+  EXPECT_NE(test::run_ris("scene fractal --generator fft -o " + path).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace ris
