@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 #include "ris/geometry/line_scan.h"
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_sample.h"
+#include "ris/scene/geo_frame.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -19,19 +21,35 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
+// A [site] latlon placed on the scene (grid coordinates of the scene's CRS).
+RadarParams with_site_on_scene(const RadarParams& radar, const Scene& scene) {
+  RadarParams r = radar;
+  if (!r.ppi.site_latlon_deg) return r;
+  if (scene.crs_wkt.empty()) {
+    throw InputError(radar.source_file, "site.latlon",
+                     "the site is in latitude/longitude but the scene has no CRS (import a DEM "
+                     "with ris scene import, or give position in scene metres)");
+  }
+  const GeoFrame frame(scene.crs_wkt, radar.source_file);
+  const auto [lat, lon] = *r.ppi.site_latlon_deg;
+  std::tie(r.ppi.site_x_m, r.ppi.site_y_m) = frame.scene_from_lonlat(lon, lat);
+  return r;
+}
+
 void check_site(const Scene& scene, const RadarParams& radar, double& ground_m) {
   const PpiParams& p = radar.ppi;
+  const char* key = p.site_latlon_deg ? "site.latlon" : "site.position";
   const auto [x0, y1] = scene.world_from_grid(0.0, 0.0);
   const auto [x1, y0] = scene.world_from_grid(scene.cols, scene.rows);
   if (!(p.site_x_m >= x0 && p.site_x_m <= x1 && p.site_y_m >= y0 && p.site_y_m <= y1)) {
-    throw InputError(radar.source_file, "site.position",
+    throw InputError(radar.source_file, key,
                      fmt::format("the radar site ({:.1f}, {:.1f}) m is outside the scene, which "
                                  "spans x {:.1f} to {:.1f} m and y {:.1f} to {:.1f} m",
                                  p.site_x_m, p.site_y_m, x0, x1, y0, y1));
   }
   const TerrainSample ts = bilinear_terrain_sample(scene, nullptr, p.site_x_m, p.site_y_m);
   if (!ts.valid) {
-    throw InputError(radar.source_file, "site.position",
+    throw InputError(radar.source_file, key,
                      fmt::format("the radar site ({:.1f}, {:.1f}) m lies on no-data cells of the "
                                  "scene; expected a site on terrain with data",
                                  p.site_x_m, p.site_y_m));
@@ -48,8 +66,9 @@ void check_site(const Scene& scene, const RadarParams& radar, double& ground_m) 
 
 }  // namespace
 
-PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar) {
+PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar_in) {
   scene.validate("scene");
+  const RadarParams radar = with_site_on_scene(radar_in, scene);
   RIS_CHECK(radar.mode == RadarMode::ppi);
   const PpiParams& p = radar.ppi;
   PpiGeometry pg;

@@ -51,6 +51,17 @@ struct SlarElementContext {
   const Sigma0Lut* lut = nullptr;
 };
 
+// A visible element's received power P_i: the radar equation (MODEL.md
+// section 3, seed equations 1 and 3-5).
+inline double element_power_w(const SlarElementContext& c, double slant_range_m,
+                              float incidence_rad, float local_incidence_rad, float area_m2,
+                              std::uint16_t category) {
+  const double r2 = slant_range_m * slant_range_m;
+  const double g2 = c.gain2->uniform() ? c.gain2->at(0.0) : c.gain2->at(incidence_rad);
+  return c.k_radar * g2 * double(c.lut->at(category, local_incidence_rad)) * double(area_m2) /
+         (r2 * r2);
+}
+
 // One element with data (flags without kNoData/kUnseen) of the line whose
 // profile row starts at `row` (pointers into SlarLineProfiles at that row).
 // Returns whether its centre falls in a bin (counts towards samples_in_swath).
@@ -83,11 +94,8 @@ inline bool accumulate_element(const SlarElementContext& c, std::uint8_t f, floa
   if (visible && (f & sample_flag::kLayover)) bits |= slar_touch::kLayover;
   for (int b = b0; b <= b1; ++b) touch_row[b] |= bits;
   if (!visible) return in_swath;
-  // Radar equation (MODEL.md section 3, seed equations 1 and 3-5).
-  const double r2 = R * R;
-  const double g2 = c.gain2->uniform() ? c.gain2->at(0.0) : c.gain2->at(incidence_rad);
-  const double power = c.k_radar * g2 * double(c.lut->at(category, local_incidence_rad)) *
-                       double(area_m2) / (r2 * r2);
+  const double power =
+      element_power_w(c, R, incidence_rad, local_incidence_rad, area_m2, category);
   // Half the element (near end to centre, centre to far end) each.
   const double half_area = 0.5 * double(area_m2);
   spread(acc, acc_area, (r_a - c.near_m) * c.inv_dr, pos, 0.5 * power, half_area, bins);

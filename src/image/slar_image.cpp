@@ -97,6 +97,8 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
     return p.point_returns[a].line < p.point_returns[b].line;
   });
   const bool range_window = p.range_window_bins > 0.0;
+  if (p.keep_element_power) img.element_power_w.assign(g.flags.size(), 0.0f);
+  img.point_power_w.assign(p.point_returns.size(), 0.0);
 
 #pragma omp parallel reduction(+ : in_swath)
   {
@@ -118,6 +120,12 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
             g.incidence_rad[i], g.local_incidence_rad[i], g.area_m2[i], g.category[i],
             prof.touch.data() + row, prof.mapped_count.data() + row,
             prof.visible_count.data() + row, scratch.acc.data(), scratch.acc_area.data());
+        // The coherent SAR needs each visible element's power (ris/sim/sar_coherent.h).
+        if (p.keep_element_power && sample_visible(f)) {
+          img.element_power_w[i] = static_cast<float>(
+              detail::element_power_w(ctx, g.slant_range_m[i], g.incidence_rad[i],
+                                      g.local_incidence_rad[i], g.area_m2[i], g.category[i]));
+        }
       }
       // Point scatterers on this line: their power in the bin of their range.
       const auto first =
@@ -125,11 +133,12 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
                            [&](std::size_t t, int l) { return p.point_returns[t].line < l; });
       for (auto it = first; it != target_order.end() && p.point_returns[*it].line == line; ++it) {
         const PointReturn& pr = p.point_returns[*it];
+        const double r2 = pr.slant_range_m * pr.slant_range_m;
+        const double power = ctx.k_radar * gain2.at(pr.look_rad) * pr.rcs_m2 / (r2 * r2);
+        img.point_power_w[*it] = power;  // each target is on one line: one thread writes it
         const double pos = (pr.slant_range_m - ctx.near_m) * ctx.inv_dr;
         if (!(pos >= 0.0 && pos < bins)) continue;
-        const double r2 = pr.slant_range_m * pr.slant_range_m;
-        scratch.acc[static_cast<std::size_t>(pos)] +=
-            ctx.k_radar * gain2.at(pr.look_rad) * pr.rcs_m2 / (r2 * r2);
+        scratch.acc[static_cast<std::size_t>(pos)] += power;
       }
       // SAR: a range resolution cell other than the bin integrates the
       // bin-wise profile over [centre - W/2, centre + W/2] (bin units).

@@ -16,7 +16,9 @@ namespace ris {
 namespace {
 
 // [lat, lon] in degrees (numbers, or strings with "deg").
-std::array<double, 2> lat_lon(ConfigTable& t, const std::string& key) {
+}  // namespace
+
+std::array<double, 2> parse_lat_lon(ConfigTable& t, const std::string& key) {
   const std::vector<double> v = t.get_quantity_array(key, Quantity::angle);
   if (v.size() != 2) {
     t.fail(key,
@@ -28,8 +30,6 @@ std::array<double, 2> lat_lon(ConfigTable& t, const std::string& key) {
   }
   return {lat, lon};
 }
-
-}  // namespace
 
 bool parse_geo_track(ConfigTable& t, TrackSpec& spec) {
   const bool endpoints = t.has("start_latlon") || t.has("end_latlon");
@@ -49,8 +49,8 @@ bool parse_geo_track(ConfigTable& t, TrackSpec& spec) {
   GeoTrackSpec g;
   if (endpoints) {
     g.kind = GeoTrackSpec::Kind::endpoints;
-    const auto a = lat_lon(t, "start_latlon");
-    const auto b = lat_lon(t, "end_latlon");
+    const auto a = parse_lat_lon(t, "start_latlon");
+    const auto b = parse_lat_lon(t, "end_latlon");
     if (a == b) t.fail("end_latlon", "track start and end coincide");
     g.start_lat_deg = a[0];
     g.start_lon_deg = a[1];
@@ -58,7 +58,7 @@ bool parse_geo_track(ConfigTable& t, TrackSpec& spec) {
     g.end_lon_deg = b[1];
   } else {
     g.kind = GeoTrackSpec::Kind::heading_near_range_point;
-    const auto p = lat_lon(t, "near_range_point");
+    const auto p = parse_lat_lon(t, "near_range_point");
     g.point_lat_deg = p[0];
     g.point_lon_deg = p[1];
     g.heading_rad = t.get_quantity_or("heading", Quantity::angle, 0.0);

@@ -163,12 +163,16 @@ void parse_sar(ConfigTable& t, RadarParams& r) {
 
 // [site]: the radar's ground position and its antenna height.
 void parse_site(ConfigTable& t, PpiParams& p) {
-  std::vector<double> xy = t.get_quantity_array("position", Quantity::length);
-  if (xy.size() != 2 || !std::isfinite(xy[0]) || !std::isfinite(xy[1])) {
-    t.fail("position", "expected [x, y] in scene metres (2 finite values)");
+  if (one_of(t, {"position", "latlon"}, true) == "latlon") {
+    p.site_latlon_deg = parse_lat_lon(t, "latlon");
+  } else {
+    std::vector<double> xy = t.get_quantity_array("position", Quantity::length);
+    if (xy.size() != 2 || !std::isfinite(xy[0]) || !std::isfinite(xy[1])) {
+      t.fail("position", "expected [x, y] in scene metres (2 finite values)");
+    }
+    p.site_x_m = xy[0];
+    p.site_y_m = xy[1];
   }
-  p.site_x_m = xy[0];
-  p.site_y_m = xy[1];
   if (one_of(t, {"altitude", "height"}, true) == "altitude") {
     p.altitude_m = get_positive(t, "altitude", Quantity::length, "m");
   } else {

@@ -111,7 +111,9 @@ nlohmann::json radar_to_json(const RadarParams& r) {
   }
   if (r.mode == RadarMode::ppi) {
     const PpiParams& pp = r.ppi;
-    json site = {{"position_m", {pp.site_x_m, pp.site_y_m}}};
+    json site = pp.site_latlon_deg
+                    ? json{{"latlon_deg", {(*pp.site_latlon_deg)[0], (*pp.site_latlon_deg)[1]}}}
+                    : json{{"position_m", {pp.site_x_m, pp.site_y_m}}};
     if (pp.altitude_m) site["altitude_m"] = *pp.altitude_m;
     if (pp.height_above_ground_m) site["height_above_ground_m"] = *pp.height_above_ground_m;
     j["site"] = site;

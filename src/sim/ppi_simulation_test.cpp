@@ -3,6 +3,8 @@
 // bad input (MODEL.md section 2, "PPI").
 #include "ris/sim/ppi_simulation.h"
 
+#include <fmt/format.h>
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -11,6 +13,7 @@
 #include <string>
 
 #include "ris/image/greytone_terms.h"
+#include "ris/scene/geo_frame.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
@@ -245,6 +248,41 @@ TEST(PpiSimulation, BadSiteIsAnInputError) {
     EXPECT_EQ(e.file(), "targets.toml");
     EXPECT_EQ(e.key(), "target[0].position");
     EXPECT_NE(std::string(e.what()).find("off the scene"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PpiSimulation, SiteInLatitudeLongitudeEqualsItsProjectedPosition) {
+  // The flat scene placed in UTM zone 33N near Rome; the site given by the
+  // latitude/longitude of the scene point (500, 500) gives the same B-scope.
+  Scene s = flat_scene();
+  s.crs_wkt = utm_wkt_for(12.5, 41.9);
+  s.origin_x_m = 290000.0;
+  s.origin_y_m = 4640000.0 + 200 * kCell;
+  const double x = 290000.0 + 500.0, y = 4640000.0 + 500.0;
+  const auto [lon, lat] = GeoFrame(s.crs_wkt, "test").lonlat_from_scene(x, y);
+  const PpiSimulation by_xy =
+      simulate_ppi(s, ppi_radar("", fmt::format("position = [{}, {}]\nheight = 30\n", x, y)),
+                   test::CosineSigma0Source());
+  const PpiSimulation by_latlon = simulate_ppi(
+      s, ppi_radar("", fmt::format("latlon = [{:.12f}, {:.12f}]\nheight = 30\n", lat, lon)),
+      test::CosineSigma0Source());
+  EXPECT_NEAR(by_latlon.geometry.site_x_m, x, 0.01);
+  EXPECT_NEAR(by_latlon.geometry.site_y_m, y, 0.01);
+  ASSERT_EQ(by_xy.bscope.mean_power_w.size(), by_latlon.bscope.mean_power_w.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < by_xy.bscope.mean_power_w.size(); ++i) {
+    const double a = by_xy.bscope.mean_power_w[i], b = by_latlon.bscope.mean_power_w[i];
+    if (a > 0.0) worst = std::max(worst, std::abs(b - a) / a);
+  }
+  EXPECT_LT(worst, 1e-3);
+  // Without a CRS a latitude/longitude site cannot be placed.
+  try {
+    simulate_ppi(flat_scene(), ppi_radar("", "latlon = [41.9, 12.5]\nheight = 30\n"),
+                 test::CosineSigma0Source());
+    ADD_FAILURE() << "latlon site on a scene without CRS accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "site.latlon");
+    EXPECT_NE(std::string(e.what()).find("no CRS"), std::string::npos) << e.what();
   }
 }
 

@@ -117,14 +117,16 @@ BlockOrder scene_line_order(const Track& t) {
 }
 
 json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPictures& pic,
-                   const SlarRunInfo& info) {
+                   const SlarRunInfo& info, const json& extra) {
   float h_min = std::numeric_limits<float>::infinity(), h_max = -h_min;
   for (std::size_t i = 0; i < scene.size(); ++i) {
     if (!scene.valid[i]) continue;
     h_min = std::min(h_min, scene.elevation_m[i]);
     h_max = std::max(h_max, scene.elevation_m[i]);
   }
-  return slar_metadata(scene, h_min, h_max, sim, pic, info);
+  json out = slar_metadata(scene, h_min, h_max, sim, pic, info);
+  out.update(extra);
+  return out;
 }
 
 json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimulation& sim,
@@ -136,9 +138,9 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
   const SlarImage& img = sim.image;
   const GroundRangeGrid& gr = sim.ground_grid;
   const auto [looks_min, looks_max] = std::minmax_element(pic.looks.begin(), pic.looks.end());
-  return {
+  json out = {
       {"software", {{"name", "ris"}, {"version", RIS_VERSION}}},
-      {"mode", "slar"},
+      {"mode", sim.radar.mode == RadarMode::sar ? "sar" : "slar"},
       {"earth_model", "flat"},
       {"inputs",
        {{"scene",
@@ -182,7 +184,9 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
           {"range_bin_m", img.range.bin_m},
           {"line_spacing_m", img.line_spacing_m},
           {"samples_in_swath", img.samples_in_swath},
-          {"azimuth_footprint", "w(R) = R * azimuth_beamwidth at the bin centre"},
+          {"azimuth_footprint", sim.radar.mode == RadarMode::sar
+                                    ? "SAR: constant, azimuth_looks * azimuth_resolution"
+                                    : "w(R) = R * azimuth_beamwidth at the bin centre"},
           {"range_switch_applied", sim.range_corrected},
           {"area_switch_applied", sim.area_corrected}}},
         {"ground_range",
@@ -219,11 +223,12 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
          "uint8 greytones on the scene grid (map geometry, scene CRS), 0 no pixel"},
         {"shadowmap.txt", "the seed's shadow map: 9 no data, 0 shadow, 1-8 count, # more"},
         {"metadata.json", "this file"}}}};
+  return out;
 }
 
 void write_slar_products(const std::filesystem::path& out_dir, const Scene& scene,
                          const SlarSimulation& sim, const SlarPictures& pic,
-                         const SlarRunInfo& info) {
+                         const SlarRunInfo& info, const json& extra_metadata) {
   StagedDirectory dir(out_dir);
   const SlarImage& img = sim.image;
   write_png_gray(dir.path("slant_range.png"), pic.slant_grey.data(), img.bins, img.lines);
@@ -256,7 +261,7 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
         scene.cols, scene.rows);
   write_text_file_atomic(dir.path("shadowmap.txt"), shadow_map_text(img));
   write_text_file_atomic(dir.path("metadata.json"),
-                         slar_metadata(scene, sim, pic, info).dump(2) + "\n");
+                         slar_metadata(scene, sim, pic, info, extra_metadata).dump(2) + "\n");
   dir.commit();
 }
 

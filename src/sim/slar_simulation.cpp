@@ -46,8 +46,8 @@ std::vector<std::string> sar_resolution_warnings(const Scene& scene, const SlarG
     out.push_back(fmt::format(
         "{}: the SAR azimuth resolution ({:.2f} m{}) is finer than the scene's azimuth sampling "
         "({:.2f} m, the azimuth line spacing): the image shows no detail finer than the scene's "
-        "cells, point targets fall on the nearest line, and a coherent image has fewer than one "
-        "ground sample per resolution cell (speckle not fully developed)",
+        "cells, point targets fall on the nearest line, and a coherent image's speckle has the "
+        "grain of the scene's cells rather than of the resolution",
         radar.source_file, az_m,
         radar.sar.antenna_length_m > 0.0
             ? fmt::format(", half the {:.2f} m antenna", radar.sar.antenna_length_m)
@@ -63,8 +63,7 @@ std::vector<std::string> sar_resolution_warnings(const Scene& scene, const SlarG
     out.push_back(fmt::format(
         "{}: the SAR ground-range resolution ({:.2f} m at far range, from {}) is finer than the "
         "scene's cells ({:.2f} m): the image shows no detail finer than the scene's cells, and a "
-        "coherent image has fewer than one ground sample per resolution cell (speckle not fully "
-        "developed)",
+        "coherent image's speckle has the grain of the scene's cells rather than of the resolution",
         radar.source_file, ground_res_m,
         radar.sar.bandwidth_hz > 0.0
             ? fmt::format("c / (2 B) = {:.2f} m slant with B = {:.1f} MHz",
@@ -133,6 +132,7 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
     sim.point_returns =
         point_returns_on_lines(options.targets, scene, sim.geometry, &sim.hidden_targets);
     imaging.point_returns = sim.point_returns;
+    imaging.keep_element_power = radar.mode == RadarMode::sar && radar.sar.coherent;
     sim.image = form_slar_image(sim.geometry, rs.lut, imaging, radar.source_file);
   }
   std::tie(sim.range_corrected, sim.area_corrected) = apply_switch_corrections(sim.image, rs.terms);
@@ -158,7 +158,8 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   return sim;
 }
 
-SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed) {
+SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed,
+                         std::span<const float> coherent_intensity) {
   const SlarImage& img = sim.image;
   SlarPictures pic;
   pic.seed = seed;
@@ -168,8 +169,16 @@ SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed) {
 
   // Fading keyed by (seed, pixel) and greytones (equation 15), the reference
   // from the mean power so the grey scale does not depend on the seed.
-  GreytoneImage g = make_greytone_image(sim.radar, img.mean_power_w, img.lines, img.bins,
+  const bool coherent = !coherent_intensity.empty();
+  RadarParams radar = sim.radar;
+  if (coherent) radar.switches.fading = false;  // the speckle is in the intensity
+  GreytoneImage g = make_greytone_image(radar, img.mean_power_w, img.lines, img.bins,
                                         img.range.near_m, img.range.bin_m, seed, no_data);
+  if (coherent) {
+    RIS_CHECK(coherent_intensity.size() == img.mean_power_w.size());
+    g.speckled_power_w.assign(coherent_intensity.begin(), coherent_intensity.end());
+    greytones(g.speckled_power_w, g.greytone, g.map, no_data);
+  }
   pic.looks = std::move(g.looks_per_bin);
   pic.speckled_power_w = std::move(g.speckled_power_w);
   pic.slant_grey = std::move(g.greytone);

@@ -81,6 +81,9 @@ struct SlarImagingParams {
   double range_window_bins = 0.0;
   // Point scatterers, added to their line's range profile.
   std::span<const PointReturn> point_returns;
+  // Keep each visible element's power P_i (SlarImage::element_power_w), for
+  // the coherent SAR (ris/sim/sar_coherent.h).
+  bool keep_element_power = false;
 };
 
 // Slant-range pixel mask bits.
@@ -104,6 +107,11 @@ struct SlarImage {
   std::vector<std::uint16_t> mapped_count;   // elements with data
   std::vector<std::uint16_t> visible_count;  // of which visible (lit, facing)
   std::int64_t samples_in_swath = 0;         // elements with data whose centre is in a bin
+  // Only with keep_element_power: geometry lines x samples, P_i of each
+  // visible element (0 otherwise), W.
+  std::vector<float> element_power_w;
+  // Per point return (same order), the power it added, W.
+  std::vector<double> point_power_w;
 
   std::size_t index(int line, int bin) const {
     return static_cast<std::size_t>(line) * static_cast<std::size_t>(bins) +

@@ -29,6 +29,7 @@
 //   ris::TrackSpec scene_spec = ris::scene_track_from_geo(radar.track, scene, radar.source_file);
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "ris/io/config_table.h"
@@ -36,6 +37,10 @@
 #include "ris/sensor/radar_params.h"
 
 namespace ris {
+
+// [latitude, longitude] in degrees (plain numbers or "<n> deg") from `key`,
+// range-checked (InputError naming the key otherwise).
+std::array<double, 2> parse_lat_lon(ConfigTable& t, const std::string& key);
 
 // Reads start_latlon/end_latlon, or near_range_point (with heading), from the
 // [track] table into spec.geo and finishes the table; returns false (reading

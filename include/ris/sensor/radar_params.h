@@ -7,6 +7,7 @@
 // (resolutions, swath, N): ris/sensor/radar_derived.h.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -135,7 +136,10 @@ struct SarParams {
 // PPI (mode = "ppi", tables [site] and [scan]; MODEL.md section 2, "PPI").
 enum class PpiPresentation { slant, ground };
 struct PpiParams {
-  double site_x_m = 0.0, site_y_m = 0.0;        // the radar's ground position, scene metres
+  double site_x_m = 0.0, site_y_m = 0.0;  // the radar's ground position, scene metres
+  // Or [latitude, longitude] in degrees ([site] latlon), placed on the scene
+  // through its CRS when the geometry is computed (ris/scene/geo_frame.h).
+  std::optional<std::array<double, 2>> site_latlon_deg;
   std::optional<double> altitude_m;             // antenna above the datum, or
   std::optional<double> height_above_ground_m;  // above the terrain at the site (a mast)
   double scan_start_rad = 0.0;                  // sector start, clockwise from north

@@ -42,8 +42,11 @@ struct SlarRunInfo {
 };
 
 // metadata.json's content.
+// extra (added, backward compatible): merged into the top level (SAR:
+// warnings, noise, point-target measurements).
 nlohmann::json slar_metadata(const Scene& scene, const SlarSimulation& sim,
-                             const SlarPictures& pictures, const SlarRunInfo& info);
+                             const SlarPictures& pictures, const SlarRunInfo& info,
+                             const nlohmann::json& extra = nlohmann::json::object());
 // The same for a scene whose arrays are not in memory (a streamed run,
 // ris/sim/slar_stream.h): `grid` gives the grid and CRS, the elevation range
 // of the cells with data is given (+inf, -inf when none).
@@ -71,6 +74,7 @@ BlockOrder scene_line_order(const Track& track);
 
 void write_slar_products(const std::filesystem::path& out_dir, const Scene& scene,
                          const SlarSimulation& sim, const SlarPictures& pictures,
-                         const SlarRunInfo& info);
+                         const SlarRunInfo& info,
+                         const nlohmann::json& extra_metadata = nlohmann::json::object());
 
 }  // namespace ris

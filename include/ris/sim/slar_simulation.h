@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -106,6 +107,11 @@ struct SlarPictures {
   double film_offset = 0.0;
 };
 
-SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed);
+// coherent_intensity (optional, lines x bins): the coherent SAR's intensity
+// (ris/sim/sar_coherent.h), which then stands in for the fading of the mean
+// power (the speckle is already in it); the grey scale still comes from the
+// mean power.
+SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed,
+                         std::span<const float> coherent_intensity = {});
 
 }  // namespace ris

@@ -1,0 +1,36 @@
+// The products of a PPI simulation, written through StagedDirectory (all or
+// nothing; docs/outputs.md, "PPI"):
+//
+//   ppi_scope.png            greytones, Cartesian scope centred on the radar,
+//                            north up (range rings when configured)
+//   ppi_scope_power.tif      float32 speckled power on the scope (W); ground
+//                            presentation: georeferenced like the scene
+//   ppi_scope_mask.tif       uint8 on the scope: 1 shadow, 2 layover, 4 no data
+//   bscope.png               greytones, rays (rows, from the scan start
+//                            clockwise) x slant-range bins (columns)
+//   mean_power_bscope.tif    float32 mean power before speckle (W)
+//   speckled_power_bscope.tif float32 power after fading (W)
+//   mask_bscope.tif          uint8: 1 shadow, 2 layover, 4 no data
+//   metadata.json            inputs, derived quantities, software version
+//
+// Example:
+//   ris::write_ppi_products("out", scene, sim, pictures, info);
+#pragma once
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "ris/scene/scene.h"
+#include "ris/sim/ppi_simulation.h"
+#include "ris/sim/slar_products.h"
+
+namespace ris {
+
+nlohmann::json ppi_metadata(const Scene& scene, const PpiSimulation& sim, const PpiPictures& pic,
+                            const SlarRunInfo& info);
+
+void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene,
+                        const PpiSimulation& sim, const PpiPictures& pic, const SlarRunInfo& info);
+
+}  // namespace ris

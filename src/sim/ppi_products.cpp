@@ -1,0 +1,122 @@
+#include "ris/sim/ppi_products.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "ris/io/atomic_file.h"
+#include "ris/io/raster_io.h"
+#include "ris/sensor/radar_json.h"
+#include "ris/util/units.h"
+
+namespace ris {
+
+nlohmann::json ppi_metadata(const Scene& scene, const PpiSimulation& sim, const PpiPictures& pic,
+                            const SlarRunInfo& info) {
+  using nlohmann::json;
+  const PpiGeometry& g = sim.geometry;
+  const PpiScopeGrid& sg = sim.scope_grid;
+  json categories = json::array();
+  for (std::size_t i = 0; i < sim.categories.size(); ++i)
+    categories.push_back({{"id", sim.categories[i]}, {"name", sim.category_names[i]}});
+  return {{"software", {{"name", "ris"}, {"version", RIS_VERSION}}},
+          {"mode", "ppi"},
+          {"earth_model", "flat"},
+          {"inputs",
+           {{"scene",
+             {{"path", info.scene_path},
+              {"rows", scene.rows},
+              {"cols", scene.cols},
+              {"cell_x_m", scene.dx_m},
+              {"cell_y_m", scene.dy_m},
+              {"categories", categories}}},
+            {"radar", radar_to_json(sim.radar)},
+            {"backscatter",
+             {{"path", info.backscatter_path}, {"description", sim.backscatter_description}}},
+            {"seed", info.seed},
+            {"threads", info.threads}}},
+          {"derived",
+           {{"radar", derived_to_json(sim.derived)},
+            {"site",
+             {{"x_m", g.site_x_m},
+              {"y_m", g.site_y_m},
+              {"terrain_height_m", g.site_ground_m},
+              {"antenna_altitude_m", g.altitude_m}}},
+            {"rays",
+             {{"in_sector", g.scan_rays},
+              {"padding_each_side", g.pad},
+              {"spacing_deg", rad_to_deg(g.ray_spacing_rad)},
+              {"first_ray_centre_deg", rad_to_deg(g.azimuth_rad(g.pad))},
+              {"beamwidth_in_rays", sim.beam_rays},
+              {"samples_per_ray", g.rays.samples},
+              {"sample_step_m", g.rays.sample_step_m},
+              {"shadow_samples", g.rays.shadow_samples},
+              {"layover_samples", g.rays.layover_samples},
+              {"back_facing_samples", g.rays.back_facing_samples}}},
+            {"scope",
+             {{"pixels", sg.size},
+              {"pixel_m", sg.pixel_m},
+              {"presentation",
+               sg.presentation == PpiPresentation::slant ? "slant range" : "ground range"},
+              {"range_rings_m", sim.radar.ppi.ring_spacing_m},
+              {"resampling", "nearest ray and range bin"}}},
+            {"targets", {{"seen", sim.point_returns.size()}, {"hidden", sim.hidden_targets}}},
+            {"greytone",
+             {{"reference_power_w", pic.reference_power_w},
+              {"reference_greytone", pic.reference_greytone},
+              {"greytones_per_decade", pic.greytones_per_decade}}}}},
+          {"products",
+           {{"ppi_scope.png", "greytones, scope centred on the radar, north up"},
+            {"ppi_scope_power.tif", "float32 speckled power on the scope (W)"},
+            {"ppi_scope_mask.tif", "uint8 scope mask: 1 shadow, 2 layover, 4 no data"},
+            {"bscope.png", "greytones, rays (rows, clockwise from the scan start) x slant range"},
+            {"mean_power_bscope.tif", "float32 mean power before speckle (W)"},
+            {"speckled_power_bscope.tif", "float32 power after fading (W)"},
+            {"mask_bscope.tif", "uint8 B-scope mask: 1 shadow, 2 layover, 4 no data"},
+            {"metadata.json", "this file"}}}};
+}
+
+void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene,
+                        const PpiSimulation& sim, const PpiPictures& pic, const SlarRunInfo& info) {
+  StagedDirectory dir(out_dir);
+  const SlarImage& b = sim.bscope;
+  const PpiScopeGrid& sg = sim.scope_grid;
+  const RasterMetadata bmeta = {{"RIS_ROWS", "rays, clockwise from the scan start"},
+                                {"RIS_COLUMNS", "slant-range bins, near first"},
+                                {"RIS_NEAR_SLANT_RANGE_M", fmt::format("{:.6f}", b.range.near_m)},
+                                {"RIS_RANGE_BIN_M", fmt::format("{:.6f}", b.range.bin_m)},
+                                {"RIS_VERSION", RIS_VERSION}};
+  write_png_gray(dir.path("ppi_scope.png"), pic.scope_grey.data(), sg.size, sg.size);
+  write_png_gray(dir.path("bscope.png"), pic.bscope_grey.data(), b.bins, b.lines);
+  std::vector<float> mean = b.mean_power_w;
+  for (std::size_t i = 0; i < mean.size(); ++i)
+    if (b.mask[i] & pixel_flag::kNoData) mean[i] = std::numeric_limits<float>::quiet_NaN();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  write_geotiff<float>(dir.path("mean_power_bscope.tif"), mean.data(), b.bins, b.lines, nullptr,
+                       nan, bmeta, "mean_power_w");
+  write_geotiff<float>(dir.path("speckled_power_bscope.tif"), pic.speckled_power_w.data(), b.bins,
+                       b.lines, nullptr, nan, bmeta, "speckled_power_w");
+  write_geotiff<std::uint8_t>(dir.path("mask_bscope.tif"), b.mask.data(), b.bins, b.lines, nullptr,
+                              std::nullopt, bmeta, "mask");
+  // The ground presentation is a map: georeference it like the scene.
+  const double half = 0.5 * sg.size * sg.pixel_m;
+  const Georef georef{{sim.geometry.site_x_m - half, sg.pixel_m, 0.0, sim.geometry.site_y_m + half,
+                       0.0, -sg.pixel_m},
+                      scene.crs_wkt};
+  const Georef* scope_ref = sg.presentation == PpiPresentation::ground ? &georef : nullptr;
+  const RasterMetadata smeta = {
+      {"RIS_PRESENTATION", sg.presentation == PpiPresentation::slant ? "radius = slant range"
+                                                                     : "radius = ground range"},
+      {"RIS_PIXEL_M", fmt::format("{:.6f}", sg.pixel_m)},
+      {"RIS_VERSION", RIS_VERSION}};
+  write_geotiff<float>(dir.path("ppi_scope_power.tif"), pic.scope_power_w.data(), sg.size, sg.size,
+                       scope_ref, nan, smeta, "speckled_power_w");
+  write_geotiff<std::uint8_t>(dir.path("ppi_scope_mask.tif"), pic.scope_mask.data(), sg.size,
+                              sg.size, scope_ref, std::nullopt, smeta, "mask");
+  write_text_file_atomic(dir.path("metadata.json"),
+                         ppi_metadata(scene, sim, pic, info).dump(2) + "\n");
+  dir.commit();
+}
+
+}  // namespace ris

@@ -1,0 +1,136 @@
+// End-to-end: `ris simulate` dispatching on the radar's mode (SAR with point
+// targets and their impulse-response measurements; PPI products), and bad
+// input leaving nothing behind.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+#include "ris/io/scene_io.h"
+#include "ris/scene/scene.h"
+#include "test_util.h"
+
+namespace ris {
+namespace {
+
+namespace fs = std::filesystem;
+using test::read_file;
+using test::run_ris;
+using test::TempDir;
+using test::write_file;
+
+const char* kLibrary = R"(
+[library]
+name = "test"
+[[category]]
+id = 1
+name = "grass"
+colour = "#30a030"
+[category.model]
+name = "constant_gamma"
+gamma_db = -15.0
+)";
+
+const char* kSar = R"(
+mode = "sar"
+frequency = "9.6 GHz"
+polarisation = "VV"
+near_range = "1420 m"
+far_range = "1550 m"
+range_bin = "1 m"
+[sar]
+range_resolution = "3 m"
+azimuth_resolution = "3 m"
+nesz_db = -30
+coherent = true
+[track]
+altitude = "1000 m"
+near_edge_distance = "1000 m"
+)";
+
+const char* kPpi = R"(
+mode = "ppi"
+frequency = "9.41 GHz"
+polarisation = "HH"
+pulse_width = "50 ns"
+near_range = 0
+far_range = "120 m"
+azimuth_beamwidth = "2 deg"
+[site]
+position = [100.0, 130.0]
+height = "30 m"
+[scan]
+range_rings = "50 m"
+)";
+
+struct Inputs {
+  TempDir dir;
+  std::string scene, library;
+  Inputs() {
+    scene = (dir / "scene.tif").string();
+    library = (dir / "library.toml").string();
+    write_scene_geotiff(Scene::flat(260, 200, 1.0, 0.0f, 1), scene);
+    write_file(library, kLibrary);
+  }
+  std::string args(const std::string& radar_text, const fs::path& out,
+                   const std::string& extra = "") const {
+    const std::string radar = (dir / "radar.toml").string();
+    write_file(radar, radar_text);
+    return "simulate --scene " + scene + " --radar " + radar + " --backscatter " + library +
+           " --out " + out.string() + " " + extra;
+  }
+};
+
+TEST(ModesCli, CoherentSarMeasuresTheTargetsImpulseResponse) {
+  Inputs in;
+  const std::string targets = (in.dir / "targets.toml").string();
+  write_file(targets, "[[target]]\nname = \"cr\"\nposition = [100.5, 130.5]\nrcs_db = 50\n");
+  const fs::path out = in.dir / "out";
+  const auto r = run_ris(in.args(kSar, out, "--targets " + targets));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("PSLR"), std::string::npos) << r.output;
+  const auto meta = nlohmann::json::parse(read_file(out / "metadata.json"));
+  EXPECT_EQ(meta["mode"], "sar");
+  ASSERT_EQ(meta["point_targets"]["seen"].size(), 1u);
+  const auto& irf = meta["point_targets"]["seen"][0];
+  EXPECT_NEAR(irf["range_resolution_3db_m"].get<double>(), 3.0, 0.3);
+  EXPECT_NEAR(irf["azimuth_resolution_3db_m"].get<double>(), 3.0, 0.3);
+  EXPECT_TRUE(fs::exists(out / "slant_range.png"));
+}
+
+TEST(ModesCli, PpiWritesScopeAndBScope) {
+  Inputs in;
+  const fs::path out = in.dir / "out";
+  const auto r = run_ris(in.args(kPpi, out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* f : {"ppi_scope.png", "ppi_scope_power.tif", "ppi_scope_mask.tif", "bscope.png",
+                        "mean_power_bscope.tif", "speckled_power_bscope.tif", "mask_bscope.tif",
+                        "metadata.json"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  const auto meta = nlohmann::json::parse(read_file(out / "metadata.json"));
+  EXPECT_EQ(meta["mode"], "ppi");
+  EXPECT_EQ(meta["derived"]["rays"]["in_sector"], 360);
+}
+
+TEST(ModesCli, BadPpiSiteAndOffSceneTargetLeaveNothingBehind) {
+  Inputs in;
+  const fs::path out = in.dir / "out";
+  std::string bad = kPpi;
+  bad.replace(bad.find("[100.0, 130.0]"), 14, "[900.0, 130.0]");
+  auto r = run_ris(in.args(bad, out));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("site.position"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+  const std::string targets = (in.dir / "targets.toml").string();
+  write_file(targets, "[[target]]\nposition = [5000.0, 130.0]\nrcs = 10\n");
+  r = run_ris(in.args(kSar, out, "--targets " + targets));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("target[0].position"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("off the scene"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace ris
