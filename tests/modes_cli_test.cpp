@@ -105,9 +105,9 @@ TEST(ModesCli, PpiWritesScopeAndBScope) {
   const fs::path out = in.dir / "out";
   const auto r = run_ris(in.args(kPpi, out));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* f : {"ppi_scope.png", "ppi_scope_power.tif", "ppi_scope_mask.tif", "bscope.png",
-                        "mean_power_bscope.tif", "speckled_power_bscope.tif", "mask_bscope.tif",
-                        "metadata.json"})
+  for (const char* f :
+       {"ppi_scope.png", "ppi_scope_power.tif", "ppi_scope_mask.tif", "bscope.png",
+        "mean_power_bscope.tif", "speckled_power_bscope.tif", "mask_bscope.tif", "metadata.json"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   const auto meta = nlohmann::json::parse(read_file(out / "metadata.json"));
   EXPECT_EQ(meta["mode"], "ppi");
@@ -130,6 +130,30 @@ TEST(ModesCli, BadPpiSiteAndOffSceneTargetLeaveNothingBehind) {
   EXPECT_NE(r.output.find("target[0].position"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("off the scene"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(ModesCli, ShippedSarAndPpiRadarsRunOnTheStandardScene) {
+  TempDir dir;
+  const std::string data = RIS_DATA_DIR;
+  // The example SAR with the example corner reflectors: every reflector seen
+  // and measured at the design resolution, 2 looks x 7.5 m = 15 m, within 10%.
+  const fs::path sar_out = dir / "sar";
+  auto r =
+      run_ris("simulate --quiet --radar " + data + "/radars/sar-x-band-stripmap.toml" +
+              " --targets " + data + "/targets/corner-reflectors.toml --out " + sar_out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto meta = nlohmann::json::parse(read_file(sar_out / "metadata.json"));
+  ASSERT_EQ(meta["point_targets"]["seen"].size(), 3u) << meta["point_targets"].dump(2);
+  for (const auto& irf : meta["point_targets"]["seen"]) {
+    EXPECT_NEAR(irf["range_resolution_3db_m"].get<double>(), 15.0, 1.5) << irf.dump();
+    EXPECT_NEAR(irf["azimuth_resolution_3db_m"].get<double>(), 15.0, 1.5) << irf.dump();
+  }
+  for (const char* radar : {"ppi-ground-mast-30m.toml", "ppi-airborne-nav-10000ft.toml"}) {
+    const fs::path out = dir / radar;
+    r = run_ris("simulate --quiet --radar " + data + "/radars/" + radar + " --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << radar << "\n" << r.output;
+    EXPECT_TRUE(fs::exists(out / "ppi_scope.png")) << radar;
+  }
 }
 
 }  // namespace

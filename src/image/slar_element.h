@@ -94,8 +94,7 @@ inline bool accumulate_element(const SlarElementContext& c, std::uint8_t f, floa
   if (visible && (f & sample_flag::kLayover)) bits |= slar_touch::kLayover;
   for (int b = b0; b <= b1; ++b) touch_row[b] |= bits;
   if (!visible) return in_swath;
-  const double power =
-      element_power_w(c, R, incidence_rad, local_incidence_rad, area_m2, category);
+  const double power = element_power_w(c, R, incidence_rad, local_incidence_rad, area_m2, category);
   // Half the element (near end to centre, centre to far end) each.
   const double half_area = 0.5 * double(area_m2);
   spread(acc, acc_area, (r_a - c.near_m) * c.inv_dr, pos, 0.5 * power, half_area, bins);
