@@ -10,6 +10,7 @@
 #include "ris/io/raster_io.h"
 #include "ris/io/scene_io.h"
 #include "ris/scene/scene.h"
+#include "test_inputs.h"
 #include "test_util.h"
 
 namespace ris {
@@ -73,31 +74,10 @@ TEST(GreytoneCli, ReproducesTheSimulationsSlantRangeImage) {
     for (int c = 50; c < 70; ++c) scene.elevation_m[scene.index(r, c)] = 100.0f;
   }
   write_scene_geotiff(scene, dir / "scene.tif");
-  const std::string radar_text = R"(
-mode = "slar"
-frequency = "9.4 GHz"
-polarisation = "HH"
-pulse_width = "0.1 us"
-sweep_delay = "33.4 us"
-sweep_length = "8 us"
-azimuth_beamwidth = "5 mrad"
-independent_samples = 3
-[track]
-altitude = "3000 m"
-near_edge_distance = "4000 m"
-)";
+  // Few independent samples, so the fading (and the seed) shows.
+  const std::string radar_text = "independent_samples = 3\n" + test::kSmallSlarRadar;
   test::write_file(dir / "radar.toml", radar_text);
-  test::write_file(dir / "library.toml", R"(
-[library]
-name = "test"
-[[category]]
-id = 1
-name = "grass"
-colour = "#30a030"
-[category.model]
-name = "constant_gamma"
-gamma_db = -12.0
-)");
+  test::write_file(dir / "library.toml", test::constant_gamma_library({{1, "grass", -12.0, ""}}));
   const auto out = dir / "out";
   const test::RunResult sim =
       test::run_ris("simulate --scene " + (dir / "scene.tif").string() + " --radar " +

@@ -10,6 +10,7 @@
 
 #include "ris/io/scene_io.h"
 #include "ris/scene/scene.h"
+#include "test_inputs.h"
 #include "test_util.h"
 
 namespace ris {
@@ -21,17 +22,7 @@ using test::run_ris;
 using test::TempDir;
 using test::write_file;
 
-const char* kLibrary = R"(
-[library]
-name = "test"
-[[category]]
-id = 1
-name = "grass"
-colour = "#30a030"
-[category.model]
-name = "constant_gamma"
-gamma_db = -15.0
-)";
+const std::string kLibrary = test::constant_gamma_library({{1, "grass", -15.0, ""}});
 
 const char* kSar = R"(
 mode = "sar"

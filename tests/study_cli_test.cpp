@@ -12,6 +12,7 @@
 #include "ris/io/raster_io.h"
 #include "ris/io/scene_io.h"
 #include "ris/scene/scene.h"
+#include "test_inputs.h"
 #include "test_util.h"
 
 namespace ris {
@@ -32,38 +33,10 @@ Scene two_blocks() {
   return s;
 }
 
-const char* kRadar = R"(
-mode = "slar"
-frequency = "9.4 GHz"
-polarisation = "HH"
-pulse_width = "0.1 us"
-sweep_delay = "33.4 us"
-sweep_length = "10 us"
-azimuth_beamwidth = "5 mrad"
-[track]
-altitude = "3000 m"
-near_edge_distance = "4000 m"
-)";
-
-const char* kLibrary = R"(
-[library]
-name = "two"
-[[category]]
-id = 1
-name = "grass"
-colour = "#30a030"
-[category.model]
-name = "constant_gamma"
-gamma_db = -12.0
-valid_frequency = ["1 GHz", "18 GHz"]
-[[category]]
-id = 2
-name = "crop"
-colour = "#a0a030"
-[category.model]
-name = "constant_gamma"
-gamma_db = -6.0
-)";
+const std::string kRadar = test::kSmallSlarRadar;
+const std::string kLibrary = test::constant_gamma_library(
+    {{1, "grass", -12.0, "valid_frequency = [\"1 GHz\", \"18 GHz\"]\n"}, {2, "crop", -6.0, ""}},
+    "two");
 
 struct Inputs {
   TempDir dir;

@@ -8,6 +8,7 @@
 #include "ris/io/atomic_file.h"
 #include "ris/io/raster_io.h"
 #include "ris/sensor/radar_json.h"
+#include "ris/sim/run_metadata.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -17,64 +18,50 @@ nlohmann::json ppi_metadata(const Scene& scene, const PpiSimulation& sim, const 
   using nlohmann::json;
   const PpiGeometry& g = sim.geometry;
   const PpiScopeGrid& sg = sim.scope_grid;
-  json categories = json::array();
-  for (std::size_t i = 0; i < sim.categories.size(); ++i)
-    categories.push_back({{"id", sim.categories[i]}, {"name", sim.category_names[i]}});
-  return {{"software", {{"name", "ris"}, {"version", RIS_VERSION}}},
-          {"mode", "ppi"},
-          {"earth_model", "flat"},
-          {"inputs",
-           {{"scene",
-             {{"path", info.scene_path},
-              {"rows", scene.rows},
-              {"cols", scene.cols},
-              {"cell_x_m", scene.dx_m},
-              {"cell_y_m", scene.dy_m},
-              {"categories", categories}}},
-            {"radar", radar_to_json(sim.radar)},
-            {"backscatter",
-             {{"path", info.backscatter_path}, {"description", sim.backscatter_description}}},
-            {"seed", info.seed},
-            {"threads", info.threads}}},
-          {"derived",
-           {{"radar", derived_to_json(sim.derived)},
-            {"site",
-             {{"x_m", g.site_x_m},
-              {"y_m", g.site_y_m},
-              {"terrain_height_m", g.site_ground_m},
-              {"antenna_altitude_m", g.altitude_m}}},
-            {"rays",
-             {{"in_sector", g.scan_rays},
-              {"padding_each_side", g.pad},
-              {"spacing_deg", rad_to_deg(g.ray_spacing_rad)},
-              {"first_ray_centre_deg", rad_to_deg(g.azimuth_rad(g.pad))},
-              {"beamwidth_in_rays", sim.beam_rays},
-              {"samples_per_ray", g.rays.samples},
-              {"sample_step_m", g.rays.sample_step_m},
-              {"shadow_samples", g.rays.shadow_samples},
-              {"layover_samples", g.rays.layover_samples},
-              {"back_facing_samples", g.rays.back_facing_samples}}},
-            {"scope",
-             {{"pixels", sg.size},
-              {"pixel_m", sg.pixel_m},
-              {"presentation",
-               sg.presentation == PpiPresentation::slant ? "slant range" : "ground range"},
-              {"range_rings_m", sim.radar.ppi.ring_spacing_m},
-              {"resampling", "nearest ray and range bin"}}},
-            {"targets", {{"seen", sim.point_returns.size()}, {"hidden", sim.hidden_targets}}},
-            {"greytone",
-             {{"reference_power_w", pic.reference_power_w},
-              {"reference_greytone", pic.reference_greytone},
-              {"greytones_per_decade", pic.greytones_per_decade}}}}},
-          {"products",
-           {{"ppi_scope.png", "greytones, scope centred on the radar, north up"},
-            {"ppi_scope_power.tif", "float32 speckled power on the scope (W)"},
-            {"ppi_scope_mask.tif", "uint8 scope mask: 1 shadow, 2 layover, 4 no data"},
-            {"bscope.png", "greytones, rays (rows, clockwise from the scan start) x slant range"},
-            {"mean_power_bscope.tif", "float32 mean power before speckle (W)"},
-            {"speckled_power_bscope.tif", "float32 power after fading (W)"},
-            {"mask_bscope.tif", "uint8 B-scope mask: 1 shadow, 2 layover, 4 no data"},
-            {"metadata.json", "this file"}}}};
+  json out = run_header_json("ppi");
+  out["inputs"] = run_inputs_json(summarise_scene(scene), sim.radar, sim.categories,
+                                  sim.category_names, sim.backscatter_description, info);
+  out.update(
+      json{{"derived",
+            {{"radar", derived_to_json(sim.derived)},
+             {"site",
+              {{"x_m", g.site_x_m},
+               {"y_m", g.site_y_m},
+               {"terrain_height_m", g.site_ground_m},
+               {"antenna_altitude_m", g.altitude_m}}},
+             {"rays",
+              {{"in_sector", g.scan_rays},
+               {"padding_each_side", g.pad},
+               {"spacing_deg", rad_to_deg(g.ray_spacing_rad)},
+               {"first_ray_centre_deg", rad_to_deg(g.azimuth_rad(g.pad))},
+               {"beamwidth_in_rays", sim.beam_rays},
+               {"samples_per_ray", g.rays.samples},
+               {"sample_step_m", g.rays.sample_step_m},
+               {"shadow_samples", g.rays.shadow_samples},
+               {"layover_samples", g.rays.layover_samples},
+               {"back_facing_samples", g.rays.back_facing_samples}}},
+             {"scope",
+              {{"pixels", sg.size},
+               {"pixel_m", sg.pixel_m},
+               {"presentation",
+                sg.presentation == PpiPresentation::slant ? "slant range" : "ground range"},
+               {"range_rings_m", sim.radar.ppi.ring_spacing_m},
+               {"resampling", "nearest ray and range bin"}}},
+             {"targets", {{"seen", sim.point_returns.size()}, {"hidden", sim.hidden_targets}}},
+             {"greytone",
+              {{"reference_power_w", pic.reference_power_w},
+               {"reference_greytone", pic.reference_greytone},
+               {"greytones_per_decade", pic.greytones_per_decade}}}}},
+           {"products",
+            {{"ppi_scope.png", "greytones, scope centred on the radar, north up"},
+             {"ppi_scope_power.tif", "float32 speckled power on the scope (W)"},
+             {"ppi_scope_mask.tif", "uint8 scope mask: 1 shadow, 2 layover, 4 no data"},
+             {"bscope.png", "greytones, rays (rows, clockwise from the scan start) x slant range"},
+             {"mean_power_bscope.tif", "float32 mean power before speckle (W)"},
+             {"speckled_power_bscope.tif", "float32 power after fading (W)"},
+             {"mask_bscope.tif", "uint8 B-scope mask: 1 shadow, 2 layover, 4 no data"},
+             {"metadata.json", "this file"}}}});
+  return out;
 }
 
 void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene,

@@ -12,6 +12,7 @@
 #include "ris/io/raster_io.h"
 #include "ris/scene/geo_frame.h"
 #include "ris/sensor/radar_json.h"
+#include "ris/sim/run_metadata.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -118,49 +119,22 @@ BlockOrder scene_line_order(const Track& t) {
 
 json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPictures& pic,
                    const SlarRunInfo& info, const json& extra) {
-  float h_min = std::numeric_limits<float>::infinity(), h_max = -h_min;
-  for (std::size_t i = 0; i < scene.size(); ++i) {
-    if (!scene.valid[i]) continue;
-    h_min = std::min(h_min, scene.elevation_m[i]);
-    h_max = std::max(h_max, scene.elevation_m[i]);
-  }
-  json out = slar_metadata(scene, h_min, h_max, sim, pic, info);
+  const SceneSummary sum = summarise_scene(scene);
+  json out = slar_metadata(scene, sum.elevation_min_m, sum.elevation_max_m, sim, pic, info);
   out.update(extra);
   return out;
 }
 
 json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimulation& sim,
                    const SlarPictures& pic, const SlarRunInfo& info) {
-  json categories = json::array();
-  for (std::size_t i = 0; i < sim.categories.size(); ++i)
-    categories.push_back({{"id", sim.categories[i]}, {"name", sim.category_names[i]}});
   const SlarGeometry& g = sim.geometry;
   const SlarImage& img = sim.image;
   const GroundRangeGrid& gr = sim.ground_grid;
   const auto [looks_min, looks_max] = std::minmax_element(pic.looks.begin(), pic.looks.end());
-  json out = {
-      {"software", {{"name", "ris"}, {"version", RIS_VERSION}}},
-      {"mode", sim.radar.mode == RadarMode::sar ? "sar" : "slar"},
-      {"earth_model", "flat"},
-      {"inputs",
-       {{"scene",
-         {{"path", info.scene_path},
-          {"rows", scene.rows},
-          {"cols", scene.cols},
-          {"cell_x_m", scene.dx_m},
-          {"cell_y_m", scene.dy_m},
-          {"origin_x_m", scene.origin_x_m},
-          {"origin_y_m", scene.origin_y_m},
-          {"crs_wkt", scene.crs_wkt},
-          {"elevation_min_m", h_min},
-          {"elevation_max_m", h_max},
-          {"nodata_cells", g.nodata_cells},
-          {"categories", categories}}},
-        {"radar", radar_to_json(sim.radar)},
-        {"backscatter",
-         {{"path", info.backscatter_path}, {"description", sim.backscatter_description}}},
-        {"seed", info.seed},
-        {"threads", info.threads}}},
+  json out = run_header_json(sim.radar.mode == RadarMode::sar ? "sar" : "slar");
+  out["inputs"] = run_inputs_json({scene, h_min, h_max, g.nodata_cells}, sim.radar, sim.categories,
+                                  sim.category_names, sim.backscatter_description, info);
+  out.update(json{
       {"derived",
        {{"radar", derived_to_json(sim.derived)},
         {"track", track_json(sim.track, scene)},
@@ -222,7 +196,7 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
         {"geocoded_grey.tif",
          "uint8 greytones on the scene grid (map geometry, scene CRS), 0 no pixel"},
         {"shadowmap.txt", "the seed's shadow map: 9 no data, 0 shadow, 1-8 count, # more"},
-        {"metadata.json", "this file"}}}};
+        {"metadata.json", "this file"}}}});
   return out;
 }
 

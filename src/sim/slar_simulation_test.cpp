@@ -10,6 +10,7 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/slar_products.h"
 #include "slar_fixtures.h"
+#include "test_inputs.h"
 #include "test_util.h"
 
 namespace ris {
@@ -18,19 +19,7 @@ namespace {
 constexpr double kCell = 10.0;
 
 RadarParams small_radar() {
-  return radar_from_toml(toml::parse(R"(
-mode = "slar"
-frequency = "9.4 GHz"
-polarisation = "HH"
-pulse_width = "0.1 us"
-sweep_delay = "33.4 us"
-sweep_length = "10 us"
-azimuth_beamwidth = "5 mrad"
-[track]
-altitude = "3000 m"
-near_edge_distance = "4000 m"
-)"),
-                         "r.toml");
+  return radar_from_toml(toml::parse(test::kSmallSlarRadar), "r.toml");
 }
 
 Scene small_scene() {
