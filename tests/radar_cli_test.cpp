@@ -16,6 +16,21 @@ TEST(RadarCli, InfoPrintsTheSeedFigure45Numbers) {
   EXPECT_NE(r.output.find("(109998 ft)"), std::string::npos) << r.output;
 }
 
+TEST(RadarCli, InfoShowsTheSarAndPpiParts) {
+  const std::string dir = std::string(RIS_DATA_DIR) + "/radars/";
+  test::RunResult r = test::run_ris("radar info " + dir + "sar-x-band-stripmap.toml");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("mode                      sar,"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(c / 2B, B = 20.0 MHz)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("2 x 2: pixel resolution 14.99 m x 15.00 m"), std::string::npos)
+      << r.output;
+  r = test::run_ris("radar info " + dir + "ppi-ground-mast-30m.toml");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("mode                      ppi,"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("rays every 0.500 deg (720 rays)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("30.0 m (98 ft) above the terrain"), std::string::npos) << r.output;
+}
+
 TEST(RadarCli, BadRadarFileFailsNamingFileAndKey) {
   test::TempDir dir;
   const auto path = dir / "bad.toml";

@@ -1,7 +1,9 @@
 // `ris radar info [RADAR.toml]`: the radar's derived quantities over flat
-// ground (ris/sensor/radar_derived.h).
+// ground (ris/sensor/radar_derived.h), with the SAR's resolutions, looks and
+// noise, or the PPI's site and scan (docs/modes.md).
 #include <fmt/format.h>
 
+#include <cmath>
 #include <string>
 
 #include "command_registry.h"
@@ -16,15 +18,65 @@ std::string metres_feet(double m) {
   return fmt::format("{:.1f} m ({:.0f} ft)", m, m / kFeetToMetres);
 }
 
+void print_sar(const SarParams& s) {
+  fmt::print("  SAR range resolution      {}{}\n", metres_feet(s.range_resolution_m),
+             s.bandwidth_hz > 0.0 ? fmt::format(" (c / 2B, B = {:.1f} MHz)", s.bandwidth_hz * 1e-6)
+                                  : std::string(" (given)"));
+  fmt::print(
+      "  SAR azimuth resolution    {}{}\n", metres_feet(s.azimuth_resolution_m),
+      s.antenna_length_m > 0.0
+          ? fmt::format(" (L / 2, L = {:.2f} m; the same at every range)", s.antenna_length_m)
+          : std::string(" (given; the same at every range)"));
+  fmt::print("  looks range x azimuth     {} x {}: pixel resolution {:.2f} m x {:.2f} m\n",
+             s.range_looks, s.azimuth_looks, s.range_resolution_looks_m(),
+             s.azimuth_resolution_looks_m());
+  fmt::print("  NESZ                      {}\n",
+             s.nesz ? fmt::format("{:.1f} dB", 10.0 * std::log10(*s.nesz)) : std::string("none"));
+  fmt::print("  speckle                   {}\n",
+             s.coherent ? "coherent (random-phase scatterers, sinc impulse responses)"
+                        : "fading law, N = looks");
+}
+
+void print_ppi(const RadarParams& r) {
+  const PpiParams& p = r.ppi;
+  if (p.site_latlon_deg) {
+    fmt::print("  site                      lat {:.6f} deg, lon {:.6f} deg\n",
+               (*p.site_latlon_deg)[0], (*p.site_latlon_deg)[1]);
+  } else {
+    fmt::print("  site                      x {:.1f} m, y {:.1f} m (scene)\n", p.site_x_m,
+               p.site_y_m);
+  }
+  const double spacing_deg = rad_to_deg(p.ray_spacing_rad);
+  fmt::print(
+      "  scan                      {:.1f} deg from {:.1f} deg (clockwise from north), rays "
+      "every {:.3f} deg ({:.0f} rays), beam {:.2f} deg\n",
+      rad_to_deg(p.scan_width_rad), rad_to_deg(p.scan_start_rad), spacing_deg,
+      std::round(p.scan_width_rad / p.ray_spacing_rad), rad_to_deg(r.azimuth_beamwidth_rad));
+  fmt::print(
+      "  scope                     {} range{}\n",
+      p.presentation == PpiPresentation::slant ? "slant" : "ground",
+      p.ring_spacing_m > 0.0 ? ", rings every " + metres_feet(p.ring_spacing_m) : std::string());
+}
+
 void print_info(const std::string& path) {
   const RadarParams r = load_radar(path);
   const RadarDerived d = derive(r);
   const auto deg = [](double rad) { return fmt::format("{:.3f} deg", rad_to_deg(rad)); };
   fmt::print("radar {}\n", path);
   if (!r.name.empty()) fmt::print("  name                      {}\n", r.name);
-  fmt::print("  mode                      slar, {:.4g} GHz {}, wavelength {:.4f} m\n",
+  const char* mode =
+      r.mode == RadarMode::slar ? "slar" : (r.mode == RadarMode::sar ? "sar" : "ppi");
+  fmt::print("  mode                      {}, {:.4g} GHz {}, wavelength {:.4f} m\n", mode,
              r.frequency_hz * 1e-9, to_string(r.polarisation), d.wavelength_m);
-  fmt::print("  altitude                  {}\n", metres_feet(r.track.altitude_m));
+  if (r.mode == RadarMode::ppi) print_ppi(r);
+  if (r.mode == RadarMode::ppi && r.ppi.height_above_ground_m) {
+    fmt::print(
+        "  antenna height            {} above the terrain at the site (the figures\n"
+        "                            below: over flat ground at the site's height)\n",
+        metres_feet(*r.ppi.height_above_ground_m));
+  } else {
+    fmt::print("  altitude                  {}\n", metres_feet(r.track.altitude_m));
+  }
   fmt::print("  range resolution c tau/2  {}\n", metres_feet(d.range_resolution_m));
   fmt::print("  range bin                 {}\n", metres_feet(d.range_bin_m));
   fmt::print("  range bins                {}\n", d.range_bins);
@@ -37,8 +89,12 @@ void print_info(const std::string& path) {
              deg(d.far_depression_rad));
   fmt::print("  incidence near / far      {} / {}\n", deg(d.near_incidence_rad),
              deg(d.far_incidence_rad));
-  fmt::print("  azimuth footprint R phi   {} / {}\n", metres_feet(d.near_azimuth_footprint_m),
-             metres_feet(d.far_azimuth_footprint_m));
+  if (r.mode == RadarMode::sar) {
+    print_sar(r.sar);
+  } else {
+    fmt::print("  azimuth footprint R phi   {} / {}\n", metres_feet(d.near_azimuth_footprint_m),
+               metres_feet(d.far_azimuth_footprint_m));
+  }
   fmt::print("  N, equation 16 near / far {:.3f} / {:.3f}\n", d.near_samples_eq16,
              d.far_samples_eq16);
   fmt::print("  N used for fading         {:.3f} / {:.3f} ({})\n", d.near_samples, d.far_samples,
