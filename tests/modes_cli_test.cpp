@@ -7,7 +7,9 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "ris/io/raster_io.h"
 #include "ris/io/scene_io.h"
 #include "ris/scene/scene.h"
 #include "test_inputs.h"
@@ -89,6 +91,33 @@ TEST(ModesCli, CoherentSarMeasuresTheTargetsImpulseResponse) {
   EXPECT_NEAR(irf["range_resolution_3db_m"].get<double>(), 3.0, 0.3);
   EXPECT_NEAR(irf["azimuth_resolution_3db_m"].get<double>(), 3.0, 0.3);
   EXPECT_TRUE(fs::exists(out / "slant_range.png"));
+
+  // `ris irf` on the saved image re-measures the same numbers.
+  const fs::path json = in.dir / "irf.json";
+  const std::string image = (out / "speckled_power_slant.tif").string();
+  const auto m =
+      run_ris("irf " + image + " --line " + std::to_string(irf["peak_line"].get<int>()) +
+              " --bin " + std::to_string(irf["peak_bin"].get<int>()) + " --json " + json.string());
+  ASSERT_EQ(m.exit_code, 0) << m.output;
+  const auto again = nlohmann::json::parse(read_file(json));
+  EXPECT_NEAR(again["range_resolution_3db_m"].get<double>(),
+              irf["range_resolution_3db_m"].get<double>(), 1e-9);
+  EXPECT_NEAR(again["azimuth_pslr_db"].get<double>(), irf["azimuth_pslr_db"].get<double>(), 1e-9);
+  // Bad input: a pixel off the image; a raster without pixel sizes.
+  auto bad = run_ris("irf " + image + " --line 100000 --bin 3");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("outside"), std::string::npos) << bad.output;
+  bad = run_ris("irf " + in.scene + " --line 3 --bin 3");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("expected one band"), std::string::npos) << bad.output;
+  const std::string plain = (in.dir / "plain.tif").string();
+  const std::vector<float> ones(64, 1.0f);
+  write_geotiff<float>(plain, ones.data(), 8, 8, nullptr, std::nullopt, {}, "power");
+  bad = run_ris("irf " + plain + " --line 3 --bin 3");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("--range-pixel"), std::string::npos) << bad.output;
+  EXPECT_EQ(
+      run_ris("irf " + plain + " --line 3 --bin 3 --range-pixel 1 --azimuth-pixel 1").exit_code, 0);
 }
 
 TEST(ModesCli, PpiWritesScopeAndBScope) {
