@@ -279,7 +279,7 @@ void run_fractal(const FractalArgs& args) {
             ? std::set<std::uint16_t>{p.category}
             : std::set<std::uint16_t>(p.patch_categories.begin(), p.patch_categories.end());
     for (auto& [k, v] : category_labels(label, used, names)) metadata[k] = v;
-    ris::SceneGeoTiffWriter out(args.output, grid, metadata, {"ZSTD", 3, true});
+    ris::SceneGeoTiffWriter out(args.output, grid, metadata, {"ZSTD", 1, 3, true});
     constexpr int kBlockRows = 256;
     const std::size_t n = std::size_t(kBlockRows) * std::size_t(p.cols);
     std::vector<float> z(n);

@@ -201,6 +201,7 @@ void run_streamed(const SimulateArgs& a, std::chrono::steady_clock::time_point t
       "  shadow {:.2f}%, layover {:.2f}%, back-facing {:.2f}% of samples; {} no-data cells\n",
       100.0 * double(g.shadow_samples) / samples, 100.0 * double(g.layover_samples) / samples,
       100.0 * double(g.back_facing_samples) / samples, g.nodata_cells);
+  for (const auto& [name, t] : s.stage_seconds) fmt::print("  {:.2f} s  {}\n", t, name);
   fmt::print("  {:.2f} s; outputs in {}\n", seconds,
              std::filesystem::absolute(a.out).lexically_normal().string());
 }

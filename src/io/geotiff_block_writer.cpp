@@ -59,6 +59,10 @@ GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int
   char** options = nullptr;
   options = CSLSetNameValue(options, "TILED", "YES");
   options = CSLSetNameValue(options, "COMPRESS", compression.method.c_str());
+  if (compression.method == "DEFLATE" || compression.method == "ZSTD") {
+    options = CSLSetNameValue(options, compression.method == "ZSTD" ? "ZSTD_LEVEL" : "ZLEVEL",
+                              std::to_string(compression.level).c_str());
+  }
   if (compression.predictor != 1)
     options = CSLSetNameValue(options, "PREDICTOR", std::to_string(compression.predictor).c_str());
   if (compression.all_threads) options = CSLSetNameValue(options, "NUM_THREADS", "ALL_CPUS");

@@ -81,7 +81,15 @@ SceneStreamReader::SceneStreamReader(const std::filesystem::path& path,
                      "import " +
                          p + " -o scene.tif");
   }
-  impl_->ds = open_raster(p);
+  // GDAL (3.6+) decodes the tiles a RasterIO request spans on all cores.
+  CPLSetThreadLocalConfigOption("GDAL_NUM_THREADS", "ALL_CPUS");
+  try {
+    impl_->ds = open_raster(p);
+  } catch (...) {
+    CPLSetThreadLocalConfigOption("GDAL_NUM_THREADS", nullptr);
+    throw;
+  }
+  CPLSetThreadLocalConfigOption("GDAL_NUM_THREADS", nullptr);
   GDALDatasetH ds = handle(impl_->ds);
   const Grid g = grid_of(ds);
   if (g.has_gt && (g.gt[2] != 0.0 || g.gt[4] != 0.0)) {

@@ -31,9 +31,9 @@ struct FractalNoise::Cache {
   struct Octave {
     int iy = INT_MIN;
     std::vector<double> lo, hi;  // lattice rows iy and iy + 1
+    std::vector<double> weight;  // smoothstep at (k + 1/2) / w, k < w
   };
   std::vector<Octave> octaves;
-  std::vector<double> row;  // lerped lattice row
 };
 
 FractalNoise::FractalNoise(const FractalParams& params) : p_(params) {
@@ -67,10 +67,12 @@ void FractalNoise::raw_row(int r, double* out, Cache& cache) const {
   for (int o = 0; o < n_oct; ++o) {
     const double w = wavelength_[static_cast<std::size_t>(o)];
     const double amp = amplitude_[static_cast<std::size_t>(o)];
-    const double y = (r + 0.5) / w;
-    const int iy = static_cast<int>(std::floor(y));
-    const double ty = smoothstep(y - iy);
-    const int nx = static_cast<int>(std::floor((cols - 0.5) / w)) + 2;  // lattice columns used
+    // Cells sit at (k + 1/2) / w of a lattice interval (w a power of two):
+    // the same smoothstep weights in every interval, along x and y.
+    const int wi = static_cast<int>(w);
+    const int iy = r / wi;
+    const double ty = smoothstep((r % wi + 0.5) / w);
+    const int nx = (cols - 1) / wi + 2;  // lattice columns used
     Cache::Octave& c = cache.octaves[static_cast<std::size_t>(o)];
     const std::size_t nxs = static_cast<std::size_t>(nx);
     if (c.iy != iy) {
@@ -86,15 +88,18 @@ void FractalNoise::raw_row(int r, double* out, Cache& cache) const {
       for (int ix = 0; ix < nx; ++ix)
         c.hi[static_cast<std::size_t>(ix)] = lattice(p_.seed, o, iy + 1, ix);
       c.iy = iy;
+      c.weight.resize(static_cast<std::size_t>(wi));
+      for (int k = 0; k < wi; ++k)
+        c.weight[static_cast<std::size_t>(k)] = smoothstep((k + 0.5) / w);
     }
-    cache.row.resize(nxs);
-    for (std::size_t ix = 0; ix < nxs; ++ix) cache.row[ix] = c.lo[ix] + ty * (c.hi[ix] - c.lo[ix]);
-    const double* v = cache.row.data();
-    for (int col = 0; col < cols; ++col) {
-      const double x = (col + 0.5) / w;
-      const int ix = static_cast<int>(x);
-      const double tx = smoothstep(x - ix);
-      out[col] += amp * (v[ix] + tx * (v[ix + 1] - v[ix]));
+    const double* wt = c.weight.data();
+    for (int ix = 0; ix * wi < cols; ++ix) {
+      const std::size_t i = static_cast<std::size_t>(ix);
+      const double a = amp * (c.lo[i] + ty * (c.hi[i] - c.lo[i]));
+      const double b = amp * (c.lo[i + 1] + ty * (c.hi[i + 1] - c.lo[i + 1]));
+      double* o_ = out + ix * wi;
+      const int n = std::min(wi, cols - ix * wi);
+      for (int k = 0; k < n; ++k) o_[k] += a + wt[k] * (b - a);
     }
   }
 }
@@ -118,9 +123,11 @@ void FractalNoise::rows(int row0, int count, float* elevation_m, std::uint16_t* 
       for (std::size_t c = 0; c < cols; ++c) {
         const double h = std::clamp((z[c] - lo_) * scale_, 0.0, p_.relief_m);
         out[c] = static_cast<float>(p_.base_m + h);
-        cat[c] = p_.patch_categories.empty()
-                     ? p_.category
-                     : fractal_patch_category(p_, (double(c) + 0.5) * p_.cell_m, y);
+      }
+      if (p_.patch_categories.empty()) {
+        std::fill(cat, cat + cols, p_.category);
+      } else {
+        fractal_patch_row(p_, y, 0.5 * p_.cell_m, p_.cell_m, p_.cols, cat);
       }
     }
   }

@@ -94,37 +94,56 @@ std::vector<float> spectral_fbm(int grid_rows, int grid_cols, double hurst, std:
 void paint_patches(Scene& s, const FractalParams& p) {
 #pragma omp parallel for schedule(static)
   for (int r = 0; r < s.rows; ++r) {
-    for (int c = 0; c < s.cols; ++c) {
-      const auto [x, y] = s.cell_centre(r, c);
-      s.category[s.index(r, c)] = fractal_patch_category(p, x, y);
-    }
+    const auto [x0, y] = s.cell_centre(r, 0);
+    fractal_patch_row(p, y, x0, s.dx_m, s.cols, s.category.data() + s.index(r, 0));
   }
 }
 
 }  // namespace
 
 // Voronoi patches of jittered seeds, one per patch_size square (Worley 1996).
-std::uint16_t fractal_patch_category(const FractalParams& p, double x, double y) {
+// The seeds of the 3 x (span + 2) patch squares around a row of points are
+// drawn once for the row.
+void fractal_patch_row(const FractalParams& p, double y, double x0, double dx, int count,
+                       std::uint16_t* out) {
+  if (count <= 0) return;
   const double size = p.patch_size_m;
   const int n_cats = static_cast<int>(p.patch_categories.size());
-  const auto gx = static_cast<long long>(std::floor(x / size));
   const auto gy = static_cast<long long>(std::floor(y / size));
-  double best = std::numeric_limits<double>::infinity();
-  double best_pick = 0.0;
+  const auto gx_lo = static_cast<long long>(std::floor(std::min(x0, x0 + (count - 1) * dx) / size));
+  const auto gx_hi = static_cast<long long>(std::floor(std::max(x0, x0 + (count - 1) * dx) / size));
+  const long long nx = gx_hi - gx_lo + 3;
+  struct Seed {
+    double x, y, pick;
+  };
+  std::vector<Seed> seeds(static_cast<std::size_t>(3 * nx));
   for (long long jy = gy - 1; jy <= gy + 1; ++jy) {
-    for (long long jx = gx - 1; jx <= gx + 1; ++jx) {
+    for (long long jx = gx_lo - 1; jx <= gx_hi + 1; ++jx) {
       // Wrapping negative indices to 32 bits keeps them distinct keys.
       CounterRng rng(p.seed, static_cast<std::uint32_t>(jy), static_cast<std::uint32_t>(jx),
                      kPatchStream);
-      const double sx = (double(jx) + rng.uniform()) * size;
-      const double sy = (double(jy) + rng.uniform()) * size;
-      const double dist = (sx - x) * (sx - x) + (sy - y) * (sy - y);
-      if (dist < best) best = dist, best_pick = rng.uniform();
+      Seed& sd = seeds[static_cast<std::size_t>((jy - gy + 1) * nx + (jx - gx_lo + 1))];
+      sd.x = (double(jx) + rng.uniform()) * size;
+      sd.y = (double(jy) + rng.uniform()) * size;
+      sd.pick = rng.uniform();
     }
   }
-  const auto pick =
-      std::min(static_cast<std::size_t>(best_pick * n_cats), static_cast<std::size_t>(n_cats - 1));
-  return p.patch_categories[pick];
+  for (int i = 0; i < count; ++i) {
+    const double x = x0 + i * dx;
+    const auto gx = static_cast<long long>(std::floor(x / size));
+    double best = std::numeric_limits<double>::infinity();
+    double best_pick = 0.0;
+    for (long long jy = 0; jy < 3; ++jy) {
+      for (long long jx = gx - 1; jx <= gx + 1; ++jx) {
+        const Seed& sd = seeds[static_cast<std::size_t>(jy * nx + (jx - gx_lo + 1))];
+        const double dist = (sd.x - x) * (sd.x - x) + (sd.y - y) * (sd.y - y);
+        if (dist < best) best = dist, best_pick = sd.pick;
+      }
+    }
+    const auto pick = std::min(static_cast<std::size_t>(best_pick * n_cats),
+                               static_cast<std::size_t>(n_cats - 1));
+    out[i] = p.patch_categories[pick];
+  }
 }
 
 // Refuses a size whose synthesis does not fit in memory.

@@ -56,7 +56,7 @@ json track_json(const Track& t, const Scene& scene) {
 SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img) {
   // Slant-range rasters carry no map georeferencing (their axes are azimuth
   // line and slant range); their geometry goes into the file's metadata.
-  const auto slant = [&img](const std::string& product, const std::string& units) {
+  const auto slant_meta = [&img](const std::string& product, const std::string& units) {
     return RasterMetadata{{"RIS_PRODUCT", product},
                           {"RIS_UNITS", units},
                           {"RIS_ROWS", "azimuth lines, track start first"},
@@ -68,11 +68,12 @@ SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img) {
   };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   if (file == "mean_power_slant.tif")
-    return {slant("mean power before speckle", "W"), "mean_power_w", nan, false};
+    return {slant_meta("mean power before speckle", "W"), "mean_power_w", nan, false};
   if (file == "speckled_power_slant.tif")
-    return {slant("power after fading", "W"), "speckled_power_w", std::nullopt, false};
+    return {slant_meta("power after fading", "W"), "speckled_power_w", std::nullopt, false};
   if (file == "mask_slant.tif")
-    return {slant("mask: 1 shadow, 2 layover, 4 no data", "bits"), "mask", std::nullopt, false};
+    return {slant_meta("mask: 1 shadow, 2 layover, 4 no data", "bits"), "mask", std::nullopt,
+            false};
   if (file == "scene_mask.tif") {
     return {{{"RIS_PRODUCT",
               "scene geometry mask: 1 shadow, 2 layover, 4 no data, 8 back-facing, 16 outside "
@@ -98,6 +99,16 @@ SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img) {
             nan,
             true};
   }
+  if (file == "slant_range.tif" || file == "ground_range.tif") {
+    const bool slant = file == "slant_range.tif";
+    RasterMetadata m =
+        slant ? slant_meta("greytones, slant range", "greytone")
+              : RasterMetadata{{"RIS_PRODUCT", "greytones, ground range over the reference height"},
+                               {"RIS_ROWS", "azimuth lines, track start first"},
+                               {"RIS_COLUMNS", "ground-range pixels, near range first"},
+                               {"RIS_VERSION", RIS_VERSION}};
+    return {m, "greytone", std::nullopt, false};
+  }
   RIS_CHECK(file == "geocoded_grey.tif");
   return {{{"RIS_PRODUCT",
             "slant-range greytones geocoded onto the scene grid (nearest pixel); 0 = "
@@ -106,6 +117,10 @@ SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img) {
           "greytone",
           0.0,
           true};
+}
+
+std::string picture_file(const std::string& stem, int cols, int rows, std::int64_t max_png_pixels) {
+  return stem + (std::int64_t(cols) * rows <= max_png_pixels ? ".png" : ".tif");
 }
 
 BlockOrder scene_line_order(const Track& t) {
@@ -179,10 +194,11 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
           {"greytones_per_decade", pic.greytones_per_decade},
           {"film_offset", pic.film_offset}}}}},
       {"products",
-       {{"slant_range.png",
+       {{picture_file("slant_range", img.bins, img.lines, info.max_png_pixels),
          "greytones, slant range: rows azimuth lines (track start first), "
          "columns range bins (near first)"},
-        {"ground_range.png", "greytones, ground range over the reference height"},
+        {picture_file("ground_range", gr.count, img.lines, info.max_png_pixels),
+         "greytones, ground range over the reference height"},
         {"mean_power_slant.tif", "float32 mean received power (W) before speckle, slant range"},
         {"speckled_power_slant.tif", "float32 received power (W) after fading, slant range"},
         {"mask_slant.tif", "uint8 slant-range mask: 1 shadow, 2 layover, 4 no data"},
@@ -205,9 +221,19 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
                          const SlarRunInfo& info, const json& extra_metadata) {
   StagedDirectory dir(out_dir);
   const SlarImage& img = sim.image;
-  write_png_gray(dir.path("slant_range.png"), pic.slant_grey.data(), img.bins, img.lines);
-  write_png_gray(dir.path("ground_range.png"), pic.ground_grey.data(), sim.ground_grid.count,
-                 img.lines);
+  // The pictures: PNG, or a tiled GeoTIFF when too large for one.
+  const auto picture = [&](const std::string& stem, const std::uint8_t* grey, int cols, int rows) {
+    const std::string file = picture_file(stem, cols, rows, info.max_png_pixels);
+    if (file.ends_with(".png")) {
+      write_png_gray(dir.path(file), grey, cols, rows);
+    } else {
+      const SlarRasterSpec spec = slar_raster_spec(file, img);
+      write_geotiff(dir.path(file), grey, cols, rows, nullptr, spec.nodata, spec.metadata,
+                    spec.band);
+    }
+  };
+  picture("slant_range", pic.slant_grey.data(), img.bins, img.lines);
+  picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines);
   // No-data pixels are NaN in the power rasters (the files' no-data value).
   std::vector<float> mean = img.mean_power_w;
   for (std::size_t i = 0; i < mean.size(); ++i)

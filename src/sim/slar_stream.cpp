@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -178,6 +179,7 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
   }
 
   const std::int64_t cells = std::int64_t(grid.rows) * grid.cols;
+  std::chrono::steady_clock::time_point mark;
   ProgressBar bar("simulate (streamed)", 3 * cells, "cells", options.quiet);
 
   // Pass 0: scene statistics.
@@ -194,8 +196,18 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
   summary.block_lines = std::min(block_lines, lines);
   // Scene rows read at a time by the passes over whole rows.
   const int scene_block_rows = std::min(grid.rows, std::max(in.block_rows(), 256));
-  bar.set_stage("scene statistics");
+  const auto stage = [&](const std::string& name) {
+    summary.stage_seconds.emplace_back(name, 0.0);
+    bar.set_stage(name);
+    mark = std::chrono::steady_clock::now();
+  };
+  const auto stage_done = [&] {
+    summary.stage_seconds.back().second =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - mark).count();
+  };
+  stage("scene statistics");
   SceneSummary ss = summarise_scene(in, scene_block_rows, bar);
+  stage_done();
   if (ss.valid_cells == 0) throw InputError("scene", "", "the scene has no cell with data");
   check_terrain_below_sensor(ss.h_max, ss.max_row, ss.max_col, sim.track.altitude_m,
                              radar.source_file);
@@ -294,7 +306,7 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
       mask_out->write(mask.data(), n);
     };
 
-    bar.set_stage("geometry + image formation");
+    stage("geometry, image formation, scene maps, fading (pass 1)");
     for (int l0 = 0; l0 < lines; l0 += summary.block_lines) {
       const int l1 = std::min(lines, l0 + summary.block_lines);
       int row0 = 0, rows = 0, col0 = 0, cols = 0;
@@ -370,12 +382,13 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
     incidence_out->close();
     shadow_text.close();
     if (!shadow_text) throw InputError(dir.path("shadowmap.txt").string(), "", "write failed");
+    stage_done();
 
     // ---- Pass 1b: the median mean power (auto greytone reference) -------
     double median_power = std::numeric_limits<double>::quiet_NaN();
     const std::uint64_t n_power = power.total();
     if (radar.reference.automatic && n_power > 0) {
-      bar.set_stage("median power");
+      stage("median mean power (pass 1b)");
       power.select(median_ranks(n_power, true));
       GdalDataset mean_ds = open_raster(dir.path("mean_power_slant.tif").string());
       GdalDataset mask_ds = open_raster(dir.path("mask_slant.tif").string());
@@ -390,6 +403,7 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
           if (valid_power(mean[i], mask[i])) power.refine(mean[i]);
       }
       median_power = median_value(power, n_power, true);
+      stage_done();
     }
     // (make_greytone_image's map and N per bin, for the metadata.)
     const GreytoneMap map = make_greytone_map_for_median(radar, median_power);
@@ -409,18 +423,29 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
     const GroundRangeGrid& gg = sim.ground_grid;
 
     // ---- Pass 2: greytones, ground range, PNGs ----------------------------
-    bar.set_stage("greytones");
+    stage("greytones, ground range, PNGs (pass 2)");
     {
       GdalDataset sp_ds = open_raster(dir.path("speckled_power_slant.tif").string());
       GdalDataset mask_ds = open_raster(dir.path("mask_slant.tif").string());
-      // The pictures go through tiled temporaries in the staging folder
+      // The pictures: a tiled GeoTIFF when too large for a PNG
+      // (picture_file), else through a tiled temporary in the staging folder
       // (removed before it is committed), then to PNG row by row.
-      const std::filesystem::path slant_tmp = dir.path(".slant_grey.tmp.tif");
-      const std::filesystem::path ground_tmp = dir.path(".ground_grey.tmp.tif");
+      const std::string slant_file = picture_file("slant_range", bins, lines, info.max_png_pixels);
+      const std::string ground_file =
+          picture_file("ground_range", gg.count, lines, info.max_png_pixels);
+      const auto picture_path = [&](const std::string& file) {
+        return file.ends_with(".png") ? dir.path("." + file + ".tmp.tif") : dir.path(file);
+      };
       {
-        GeoTiffBlockWriter<std::uint8_t> slant_grey_out(slant_tmp, bins, lines, {""}, nullptr);
-        GeoTiffBlockWriter<std::uint8_t> ground_grey_out(ground_tmp, gg.count, lines, {""},
-                                                         nullptr);
+        const auto open_picture = [&](const std::string& file, int cols) {
+          const SlarRasterSpec spec =
+              file.ends_with(".png") ? SlarRasterSpec{} : slar_raster_spec(file, img);
+          return std::make_unique<GeoTiffBlockWriter<std::uint8_t>>(
+              picture_path(file), cols, lines, std::vector<std::string>{spec.band}, nullptr,
+              spec.nodata, spec.metadata);
+        };
+        auto slant_grey_out = open_picture(slant_file, bins);
+        auto ground_grey_out = open_picture(ground_file, gg.count);
         std::vector<std::uint8_t> no_data, grey, ground_no_data, ground_grey;
         for (int k0 = 0; k0 < lines; k0 += summary.block_lines) {
           const int n = std::min(summary.block_lines, lines - k0);
@@ -433,7 +458,7 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
           for (std::size_t i = 0; i < np; ++i) no_data[i] = (mask[i] & pixel_flag::kNoData) ? 1 : 0;
           grey.resize(np);
           greytones(speckled, grey, map, no_data);
-          slant_grey_out.write(grey.data(), n);
+          slant_grey_out->write(grey.data(), n);
           // Ground range (render_slar).
           const std::vector<float> ground_power = to_ground_range(speckled, n, img.range, gg);
           const std::vector<std::uint8_t> ground_mask =
@@ -443,18 +468,21 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
             ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
           ground_grey.resize(ground_power.size());
           greytones(ground_power, ground_grey, map, ground_no_data);
-          ground_grey_out.write(ground_grey.data(), n);
+          ground_grey_out->write(ground_grey.data(), n);
+          bar.advance(0);
         }
-        slant_grey_out.close();
-        ground_grey_out.close();
+        slant_grey_out->close();
+        ground_grey_out->close();
       }
-      write_png_gray_from_raster(dir.path("slant_range.png"), slant_tmp);
-      write_png_gray_from_raster(dir.path("ground_range.png"), ground_tmp);
-      std::filesystem::remove(slant_tmp);
-      std::filesystem::remove(ground_tmp);
+      for (const std::string& file : {slant_file, ground_file}) {
+        if (!file.ends_with(".png")) continue;
+        write_png_gray_from_raster(dir.path(file), picture_path(file));
+        std::filesystem::remove(picture_path(file));
+      }
+      stage_done();
 
       // ---- Pass 2b: geocoded products, scene rows top down ---------------
-      bar.set_stage("geocoding");
+      stage("geocoded products (pass 2b)");
       auto power_out = open_writer("geocoded_power.tif", grid.cols, grid.rows, float{});
       auto grey_out = open_writer("geocoded_grey.tif", grid.cols, grid.rows, std::uint8_t{});
       // Free pass 1's window, read scene rows a tile row at a time.
@@ -518,6 +546,7 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
       }
       power_out->close();
       grey_out->close();
+      stage_done();
     }
 
     // ---- metadata.json ----------------------------------------------------

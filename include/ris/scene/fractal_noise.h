@@ -21,7 +21,7 @@
 // Scaling: heights are mapped so that the lowest and highest of a sample of
 // the field (every 16th row) go to base_m and base_m + relief_m;
 // the few cells beyond are clamped into that range. Patches of categories
-// are those of fractal_terrain (fractal_patch_category).
+// are those of fractal_terrain (fractal_patch_row).
 //
 // Example:
 //   ris::FractalNoise gen(params);

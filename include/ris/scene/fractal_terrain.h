@@ -53,11 +53,12 @@ struct FractalParams {
 // refuses a grid too large for memory.
 Scene fractal_terrain(const FractalParams& params);
 
-// The patch category of the point (x, y) (scene metres, in the local frame
-// of Scene::flat: south-west corner at 0, 0); p.patch_categories not empty.
-// Per point, so a streamed generator (ris/scene/fractal_noise.h) paints the
-// same patches.
-std::uint16_t fractal_patch_category(const FractalParams& p, double x_m, double y_m);
+// The patch categories of `count` points (x0_m + i dx_m, y_m) (scene metres,
+// in the local frame of Scene::flat: south-west corner at 0, 0);
+// p.patch_categories not empty. Per row of points, so a streamed generator
+// (ris/scene/fractal_noise.h) paints the same patches.
+void fractal_patch_row(const FractalParams& p, double y_m, double x0_m, double dx_m, int count,
+                       std::uint16_t* category);
 
 // Whether fractal_terrain's spectral synthesis fits in memory for p's size
 // (else it refuses; ris/scene/fractal_noise.h streams instead).

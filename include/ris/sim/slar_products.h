@@ -3,8 +3,9 @@
 // does (docs/outputs.md describes each product).
 //
 //   slant_range.png          greytones, slant range (rows: azimuth lines,
-//                            track start first; columns: range bins, near first)
-//   ground_range.png         greytones, ground range over h_ref
+//                            track start first; columns: range bins, near first);
+//                            .tif above kMaxPngPixels (picture_file)
+//   ground_range.png         greytones, ground range over h_ref (.tif likewise)
 //   mean_power_slant.tif     float32, mean received power (W) before speckle
 //   speckled_power_slant.tif float32, power after fading (W)
 //   mask_slant.tif           uint8: 1 shadow, 2 layover, 4 no data
@@ -32,6 +33,14 @@
 
 namespace ris {
 
+// The pictures (slant_range, ground_range) are PNG up to kMaxPngPixels
+// pixels and tiled compressed GeoTIFFs of the same greytones above (a PNG is
+// one zlib stream: slow to write and to open at that size, where a tiled
+// GeoTIFF opens at any zoom in a GIS). picture_file gives the file name.
+inline constexpr std::int64_t kMaxPngPixels = std::int64_t(1) << 28;  // 268 M, 16384^2
+std::string picture_file(const std::string& stem, int cols, int rows,
+                         std::int64_t max_png_pixels = kMaxPngPixels);
+
 // Where the inputs came from, for metadata.json.
 struct SlarRunInfo {
   std::string scene_path;
@@ -39,6 +48,8 @@ struct SlarRunInfo {
   std::string backscatter_path;
   std::uint64_t seed = 0;
   int threads = 0;
+  // Pictures larger than this are GeoTIFFs (picture_file; tests lower it).
+  std::int64_t max_png_pixels = kMaxPngPixels;
 };
 
 // metadata.json's content.

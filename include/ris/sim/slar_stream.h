@@ -45,6 +45,8 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/scene/scene.h"
@@ -70,6 +72,8 @@ struct SlarStreamSummary {
   SlarSimulation sim;  // layout, counts, image size, ground grid (no pixel arrays)
   int block_lines = 0;
   int blocks = 0;
+  // Wall time of each pass (name, seconds), for the user and benchmarks.
+  std::vector<std::pair<std::string, double>> stage_seconds;
 };
 
 // Runs the simulation and writes every product of write_slar_products into
