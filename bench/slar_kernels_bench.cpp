@@ -18,6 +18,7 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_derived.h"
 #include "ris/sim/slar_simulation.h"
+#include "ris/util/memory_reuse.h"
 #include "ris/util/units.h"
 
 namespace {
@@ -87,4 +88,11 @@ BENCHMARK(BM_Render)->ArgsProduct({{1, 2}, {0, 1}})->Unit(benchmark::kMillisecon
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  ris::keep_freed_memory_for_reuse();  // as the ris tool does
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -9,6 +9,7 @@
 
 #include "command_registry.h"
 #include "ris/util/error.h"
+#include "ris/util/memory_reuse.h"
 
 namespace ris::app {
 
@@ -38,6 +39,7 @@ std::string default_radar_path() {
 }  // namespace ris::app
 
 int main(int argc, char** argv) {
+  ris::keep_freed_memory_for_reuse();
   CLI::App app{"ris: radar image simulator (SLAR, SAR and PPI images from terrain)", "ris"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("ris ") + RIS_VERSION);

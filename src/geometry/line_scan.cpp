@@ -5,26 +5,123 @@
 #include <cstddef>
 #include <limits>
 
+#include "ris/util/fast_math.h"
+
 namespace ris {
 
 namespace {
 constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
 }
 
-void line_element_ends(const LineSamples& l) {
-  const double H = l.altitude_m;
-  const double half_step = 0.5 * l.step_m;
-  const auto has_data = [&](int j) { return j >= 0 && j < l.samples && !(l.flags[j] & kSkip); };
-  for (int j = 0; j < l.samples; ++j) {
-    if (!has_data(j)) continue;
-    const double h = l.height_m[j];
-    const double slope_half = double(l.dh_du[j]) * half_step;
-    const double h_near = has_data(j - 1) ? 0.5 * (h + l.height_m[j - 1]) : h - slope_half;
-    const double h_far = has_data(j + 1) ? 0.5 * (h + l.height_m[j + 1]) : h + slope_half;
-    const double u = l.first_u_m + j * l.step_m;
-    l.range_near_end_m[j] = static_cast<float>(std::hypot(u - half_step, H - h_near));
-    l.range_far_end_m[j] = static_cast<float>(std::hypot(u + half_step, H - h_far));
+namespace {
+
+// look_line's loops, with restrict-qualified parameters: the arrays never
+// alias, which lets them vectorise without run-time overlap checks.
+void look_kernel(int n, float H, float lx, float ly, float element, const float* __restrict u_m,
+                 const float* __restrict height, const float* __restrict gx,
+                 const float* __restrict gy, float* __restrict range, float* __restrict local,
+                 float* __restrict area, float* __restrict dh_du) {
+  for (int j = 0; j < n; ++j) {
+    const float u = u_m[j];
+    const float D = H - height[j];
+    const float R = std::sqrt(u * u + D * D);
+    // Slope along the look direction and the facet normal's length
+    // |(-dz/dx, -dz/dy, 1)| (MODEL.md section 2-3; as look_at).
+    const float dh = gx[j] * lx + gy[j] * ly;
+    const float n_len = std::sqrt(1.0f + gx[j] * gx[j] + gy[j] * gy[j]);
+    // theta_l = atan2(|n x l|, n . l) with n = (-dz/dx, -dz/dy, 1) and l =
+    // (-u look, D) / R towards the sensor: unlike acos(n . l) in single
+    // precision, accurate to ~1e-7 rad also near theta_l = 0. n . l R =
+    // u dh + D, whose sign is that of cos(theta_l).
+    const float dot = u * dh + D;
+    const float cx = u * ly - gy[j] * D;
+    const float cy = gx[j] * D - u * lx;
+    const float cz = u * (gx[j] * ly - gy[j] * lx);
+    const float cross = std::sqrt(cx * cx + cy * cy + cz * cz);
+    const float a = fast_atan(cross / std::fabs(dot));
+    range[j] = R;
+    local[j] = dot < 0.0f ? kPiF - a : a;
+    area[j] = element * n_len;
+    dh_du[j] = dh;
   }
+}
+
+// Back-facing where n . l <= 0 (look_kernel's expression, so the same float).
+void back_facing_kernel(int n, float H, const float* __restrict u_m, const float* __restrict height,
+                        const float* __restrict dh_du, std::uint8_t* __restrict flags) {
+  for (int j = 0; j < n; ++j) {
+    const float dot = u_m[j] * dh_du[j] + (H - height[j]);
+    flags[j] = static_cast<std::uint8_t>(flags[j] | (dot <= 0.0f ? sample_flag::kBackFacing : 0));
+  }
+}
+
+// The look angle from nadir atan2(u, D) = atan(u / D): D > 0 (terrain below
+// the sensor is checked before).
+void incidence_kernel(int n, float H, const float* __restrict u_m, const float* __restrict height,
+                      float* __restrict inc) {
+  for (int j = 0; j < n; ++j) inc[j] = fast_atan(u_m[j] / (H - height[j]));
+}
+
+}  // namespace
+
+void look_line(const LineTerrain& in, const LineLookFrame& fr, const LineLook& out) {
+  const float H = static_cast<float>(fr.altitude_m);
+  look_kernel(in.samples, H, static_cast<float>(fr.look_x), static_cast<float>(fr.look_y),
+              static_cast<float>(fr.element_m2), in.u_m, in.height_m, in.dz_dx, in.dz_dy,
+              out.slant_range_m, out.local_incidence_rad, out.area_m2, out.dh_du);
+  back_facing_kernel(in.samples, H, in.u_m, in.height_m, out.dh_du, out.flags);
+  if (out.incidence_rad) incidence_kernel(in.samples, H, in.u_m, in.height_m, out.incidence_rad);
+}
+
+namespace {
+
+// The slant range of element j's two ends (line_element_ends) given whether
+// it and its neighbours have data; NaN when it has none.
+inline void element_ends_at(int j, bool has, bool has_lo, bool has_hi, float u, float h_lo, float h,
+                            float h_hi, float dh_du, float H, float half_step,
+                            float* __restrict near_end, float* __restrict far_end) {
+  const float slope_half = dh_du * half_step;
+  const float h_near = has_lo ? 0.5f * (h + h_lo) : h - slope_half;
+  const float h_far = has_hi ? 0.5f * (h + h_hi) : h + slope_half;
+  const float un = u - half_step, uf = u + half_step;
+  const float dn = H - h_near, df = H - h_far;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  near_end[j] = has ? std::sqrt(un * un + dn * dn) : nan;
+  far_end[j] = has ? std::sqrt(uf * uf + df * df) : nan;
+}
+
+// Samples [1, n - 1), whose two neighbours exist: no branches, so that it
+// vectorises.
+void element_ends_interior(int n, double first_u, double step, float H, float half_step,
+                           const float* __restrict h, const float* __restrict dh_du,
+                           const std::uint8_t* __restrict flags, float* __restrict near_end,
+                           float* __restrict far_end) {
+  for (int j = 1; j < n - 1; ++j) {
+    element_ends_at(j, !(flags[j] & kSkip), !(flags[j - 1] & kSkip), !(flags[j + 1] & kSkip),
+                    static_cast<float>(first_u + j * step), h[j - 1], h[j], h[j + 1], dh_du[j], H,
+                    half_step, near_end, far_end);
+  }
+}
+
+}  // namespace
+
+void line_element_ends(const LineSamples& l) {
+  const float H = static_cast<float>(l.altitude_m);
+  const float half_step = static_cast<float>(0.5 * l.step_m);
+  const int n = l.samples;
+  if (n <= 0) return;
+  const auto has = [&](int j) { return j >= 0 && j < n && !(l.flags[j] & kSkip); };
+  const auto h = [&](int j) { return j >= 0 && j < n ? l.height_m[j] : 0.0f; };
+  const auto edge = [&](int j) {
+    element_ends_at(j, has(j), has(j - 1), has(j + 1),
+                    static_cast<float>(l.first_u_m + j * l.step_m), h(j - 1), h(j), h(j + 1),
+                    l.dh_du[j], H, half_step, l.range_near_end_m, l.range_far_end_m);
+  };
+  edge(0);
+  if (n == 1) return;
+  element_ends_interior(n, l.first_u_m, l.step_m, H, half_step, l.height_m, l.dh_du, l.flags,
+                        l.range_near_end_m, l.range_far_end_m);
+  edge(n - 1);
 }
 
 void mark_shadow_and_layover(const LineSamples& l) {

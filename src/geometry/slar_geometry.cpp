@@ -84,45 +84,47 @@ bool nearly(double a, double b) {
   return std::abs(a - b) < 1e-9;
 }
 
-// Fills one line: per-sample quantities, then the shadow and layover scans.
+// One thread's line scratch (allocated once per thread).
+struct LineScratch {
+  std::vector<float> u, dz_dx, dz_dy, dh_du;
+  explicit LineScratch(const SlarGeometry& g)
+      : u(static_cast<std::size_t>(g.samples)), dz_dx(u.size()), dz_dy(u.size()), dh_du(u.size()) {
+    for (int j = 0; j < g.samples; ++j) u[static_cast<std::size_t>(j)] = float(g.sample_u_m(j));
+  }
+};
+
+// Fills one line: the terrain under each sample, the look geometry over the
+// line (look_line), then the element ends and the shadow and layover scans
+// (shared with PPI rays and the fused path: ris/geometry/line_scan.h).
 template <typename Sampler>
-void fill_line(SlarGeometry& g, Sampler& sampler, int line, std::vector<float>& dh_du_scratch) {
+void fill_line(SlarGeometry& g, Sampler& sampler, int line, LineScratch& s) {
   const Track& t = g.track;
   const double H = g.altitude_m;
   sampler.start_line(t, g.line_s_m(line));
   const std::size_t base = g.index(line, 0);
-  const double element_m2 = g.line_spacing_m * g.sample_step_m;
 
   for (int j = 0; j < g.samples; ++j) {
     const std::size_t i = base + static_cast<std::size_t>(j);
-    const double u = g.sample_u_m(j);
+    const std::size_t jj = static_cast<std::size_t>(j);
     const TerrainSample ts = sampler.at(j);
     std::uint8_t f = 0;
     if (!ts.inside) f |= sample_flag::kUnseen;
     if (ts.inside && !ts.valid) f |= sample_flag::kNoData;
-    if (!(u > 0.0)) f |= sample_flag::kUnseen;
-    if (!ts.inside || !ts.valid) {
-      g.height_m[i] = g.slant_range_m[i] = g.incidence_rad[i] = kNaN;
-      g.local_incidence_rad[i] = g.area_m2[i] = kNaN;
-      g.range_near_end_m[i] = g.range_far_end_m[i] = kNaN;
-      g.category[i] = 0;
-      g.flags[i] = f;
-      continue;
-    }
-    const SampleLook look = look_at(ts, u, H, t.cross_x, t.cross_y);  // H > h: checked before
-    if (look.cos_local <= 0.0) f |= sample_flag::kBackFacing;
-    g.height_m[i] = ts.height_m;
-    g.slant_range_m[i] = static_cast<float>(look.slant_range_m);
-    g.incidence_rad[i] = static_cast<float>(look.incidence_rad);
-    g.local_incidence_rad[i] = static_cast<float>(local_incidence_rad(look));
-    g.area_m2[i] = static_cast<float>(element_m2 * look.normal_length);
-    dh_du_scratch[static_cast<std::size_t>(j)] = static_cast<float>(look.dh_du);
-    g.category[i] = ts.category;
+    if (!(g.sample_u_m(j) > 0.0)) f |= sample_flag::kUnseen;
     g.flags[i] = f;
+    const bool terrain = ts.inside && ts.valid;
+    g.height_m[i] = terrain ? ts.height_m : kNaN;
+    s.dz_dx[jj] = terrain ? ts.dz_dx : kNaN;
+    s.dz_dy[jj] = terrain ? ts.dz_dy : kNaN;
+    g.category[i] = terrain ? ts.category : 0;
   }
+  const LineTerrain terrain{g.samples, s.u.data(), &g.height_m[base], s.dz_dx.data(),
+                            s.dz_dy.data()};
+  const LineLookFrame frame{H, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
+  look_line(terrain, frame,
+            {&g.slant_range_m[base], &g.incidence_rad[base], &g.local_incidence_rad[base],
+             &g.area_m2[base], s.dh_du.data(), &g.flags[base]});
 
-  // The element's ends, then the shadow and layover scans (shared with PPI
-  // rays: ris/geometry/line_scan.h).
   const LineSamples ls{g.samples,
                        g.first_sample_u_m,
                        g.sample_step_m,
@@ -131,7 +133,7 @@ void fill_line(SlarGeometry& g, Sampler& sampler, int line, std::vector<float>& 
                        &g.slant_range_m[base],
                        &g.range_near_end_m[base],
                        &g.range_far_end_m[base],
-                       dh_du_scratch.data(),
+                       s.dh_du.data(),
                        &g.flags[base]};
   line_element_ends(ls);
   mark_shadow_and_layover(ls);
@@ -238,13 +240,13 @@ SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, doubl
   // thread (they hold only the current line's position), scratch per thread.
 #pragma omp parallel firstprivate(direct, bilinear)
   {
-    std::vector<float> dh_du(static_cast<std::size_t>(g.samples));
+    LineScratch scratch(g);
 #pragma omp for schedule(dynamic, 16)
     for (int line = 0; line < g.lines; ++line) {
       if (g.direct_sampling)
-        fill_line(g, direct, line, dh_du);
+        fill_line(g, direct, line, scratch);
       else
-        fill_line(g, bilinear, line, dh_du);
+        fill_line(g, bilinear, line, scratch);
     }
   }
 

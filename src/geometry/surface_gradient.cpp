@@ -5,16 +5,6 @@
 
 namespace ris {
 
-namespace {
-// Slope from the two neighbours (lo at -step, hi at +step) of a valid centre.
-float difference(bool lo_ok, float z_lo, bool hi_ok, float z_hi, float z_c, double step_m) {
-  if (lo_ok && hi_ok) return static_cast<float>((double(z_hi) - double(z_lo)) / (2.0 * step_m));
-  if (hi_ok) return static_cast<float>((double(z_hi) - double(z_c)) / step_m);
-  if (lo_ok) return static_cast<float>((double(z_c) - double(z_lo)) / step_m);
-  return 0.0f;
-}
-}  // namespace
-
 SurfaceGradient surface_gradient(const Scene& scene) {
   SurfaceGradient g;
   const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -32,9 +22,11 @@ SurfaceGradient surface_gradient(const Scene& scene) {
       if (!ok(r, c)) continue;
       const std::size_t i = scene.index(r, c);
       const float zc = scene.elevation_m[i];
-      g.dz_dx[i] = difference(ok(r, c - 1), z(r, c - 1), ok(r, c + 1), z(r, c + 1), zc, scene.dx_m);
+      g.dz_dx[i] =
+          slope_difference(ok(r, c - 1), z(r, c - 1), ok(r, c + 1), z(r, c + 1), zc, scene.dx_m);
       // North (+y) is towards row r - 1.
-      g.dz_dy[i] = difference(ok(r + 1, c), z(r + 1, c), ok(r - 1, c), z(r - 1, c), zc, scene.dy_m);
+      g.dz_dy[i] =
+          slope_difference(ok(r + 1, c), z(r + 1, c), ok(r - 1, c), z(r - 1, c), zc, scene.dy_m);
     }
   }
   return g;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "image/slar_element.h"
+#include "ris/geometry/surface_gradient.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -17,39 +18,87 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-// Slope from the two neighbours (lo at -step, hi at +step) of a valid centre:
-// the same expression as ris/geometry/surface_gradient.cpp, so the slopes are
-// the same floats.
-inline float difference(bool lo_ok, float z_lo, bool hi_ok, float z_hi, float z_c, double step_m) {
-  if (lo_ok && hi_ok) return static_cast<float>((double(z_hi) - double(z_lo)) / (2.0 * step_m));
-  if (hi_ok) return static_cast<float>((double(z_hi) - double(z_c)) / step_m);
-  if (lo_ok) return static_cast<float>((double(z_c) - double(z_lo)) / step_m);
-  return 0.0f;
-}
-
 bool nearly(double a, double b) {
   return std::abs(a - b) < 1e-9;
 }
 
 // One thread's line scratch, allocated once per run() call and thread.
 struct LineScratch {
-  std::vector<float> height, range, incidence, local_incidence, area, near_end, far_end, dh_du;
+  std::vector<float> u, height, dz_dx, dz_dy, range, incidence, local_incidence, area, near_end,
+      far_end, dh_du;
   std::vector<std::uint16_t> category;
   std::vector<std::uint8_t> flags;
+  std::vector<std::uint8_t> unseen;      // kUnseen where u <= 0 (the same for every line)
+  std::vector<std::uint8_t> none_valid;  // a row of no-data cells, beyond the scene's edge
+  std::vector<float> none_z;
   SlarLineAccumulator acc;
-  LineScratch(int samples, int bins)
-      : height(static_cast<std::size_t>(samples)),
-        range(static_cast<std::size_t>(samples)),
-        incidence(static_cast<std::size_t>(samples)),
-        local_incidence(static_cast<std::size_t>(samples)),
-        area(static_cast<std::size_t>(samples)),
-        near_end(static_cast<std::size_t>(samples)),
-        far_end(static_cast<std::size_t>(samples)),
-        dh_du(static_cast<std::size_t>(samples)),
-        category(static_cast<std::size_t>(samples)),
-        flags(static_cast<std::size_t>(samples)),
-        acc(bins) {}
+  LineScratch(const SlarGeometry& g, int bins)
+      : u(static_cast<std::size_t>(g.samples)),
+        height(u.size()),
+        dz_dx(u.size()),
+        dz_dy(u.size()),
+        range(u.size()),
+        incidence(u.size()),
+        local_incidence(u.size()),
+        area(u.size()),
+        near_end(u.size()),
+        far_end(u.size()),
+        dh_du(u.size()),
+        category(u.size()),
+        flags(u.size()),
+        unseen(u.size()),
+        none_valid(u.size(), 0),
+        none_z(u.size(), 0.0f),
+        acc(bins) {
+    for (int j = 0; j < g.samples; ++j) {
+      u[static_cast<std::size_t>(j)] = float(g.sample_u_m(j));
+      unseen[static_cast<std::size_t>(j)] = g.sample_u_m(j) > 0.0 ? 0 : sample_flag::kUnseen;
+    }
+  }
 };
+
+// The cells of row r of the window (all columns) into the scratch in column
+// order: height, slope (slope_difference, as surface_gradient), category and
+// the no-data flag; NaN height and slope where a cell has no data. Rows
+// outside the scene read `none` (no data). The interior columns take no
+// branches, so the loop vectorises.
+void gather_row(const SceneWindow& in, int scene_rows, int r, double dx_m, double dy_m,
+                const std::uint8_t* none_valid, const float* none_z, LineScratch& s) {
+  const int cols = in.cols;
+  const std::size_t base = in.index(r, in.col0);
+  const float* __restrict z = in.elevation_m + base;
+  const std::uint8_t* __restrict v = in.valid + base;
+  const std::uint16_t* __restrict cat = in.category + base;
+  // North (+y) is towards row r - 1: the "hi" neighbour of dz/dy.
+  const bool up_in = r - 1 >= 0, down_in = r + 1 < scene_rows;
+  const float* __restrict zu = up_in ? z - in.cols : none_z;
+  const std::uint8_t* __restrict vu = up_in ? v - in.cols : none_valid;
+  const float* __restrict zd = down_in ? z + in.cols : none_z;
+  const std::uint8_t* __restrict vd = down_in ? v + in.cols : none_valid;
+  float* __restrict h = s.height.data();
+  float* __restrict gx = s.dz_dx.data();
+  float* __restrict gy = s.dz_dy.data();
+  std::uint16_t* __restrict cg = s.category.data();
+  std::uint8_t* __restrict fl = s.flags.data();
+  const auto one = [&](int c, bool left_ok, bool right_ok, float zl, float zr) {
+    const bool ok = v[c] != 0;
+    const float zc = z[c];
+    const float sx = slope_difference(left_ok, zl, right_ok, zr, zc, dx_m);
+    const float sy = slope_difference(vd[c] != 0, zd[c], vu[c] != 0, zu[c], zc, dy_m);
+    h[c] = ok ? zc : kNaN;
+    gx[c] = ok ? sx : kNaN;
+    gy[c] = ok ? sy : kNaN;
+    cg[c] = ok ? cat[c] : std::uint16_t{0};
+    fl[c] = ok ? std::uint8_t{0} : sample_flag::kNoData;
+  };
+  if (cols == 1) {
+    one(0, false, false, 0.0f, 0.0f);
+    return;
+  }
+  one(0, false, v[1] != 0, 0.0f, z[1]);
+  for (int c = 1; c < cols - 1; ++c) one(c, v[c - 1] != 0, v[c + 1] != 0, z[c - 1], z[c + 1]);
+  one(cols - 1, v[cols - 2] != 0, false, z[cols - 2], 0.0f);
+}
 
 }  // namespace
 
@@ -143,8 +192,7 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
   const double H = g.altitude_m;
   const int samples = g.samples;
   const int bins = prof.bins;
-  const double element_m2 = g.line_spacing_m * g.sample_step_m;
-  const double half_step = 0.5 * g.sample_step_m;
+  const LineLookFrame frame{H, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
   const bool need_incidence = !gain2_.uniform();
   const double near_m = params_.range.near_m, far_m = params_.range.far_m();
 
@@ -167,7 +215,7 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
   std::int64_t in_swath = 0;
 #pragma omp parallel reduction(+ : in_swath)
   {
-    LineScratch s(samples, bins);
+    LineScratch s(g, bins);
     SlarLineCounts local;
 #pragma omp for schedule(dynamic, 16)
     for (int line = line0; line < line1; ++line) {
@@ -182,94 +230,63 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
         }
       };
 
-      // Per-sample quantities (as slar_geometry.cpp fill_line with its
-      // DirectSampler, the slope computed in place).
-      for (int j = 0; j < samples; ++j) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        const double u = g.sample_u_m(j);
-        std::uint8_t f = 0;
-        int r = 0, c = 0;
-        bool valid = false;
-        if (lc < 0) {
-          f |= sample_flag::kUnseen;
-        } else {
-          cell_of(j, r, c);
-          valid = in.valid[in.index(r, c)] != 0;
-          if (!valid) f |= sample_flag::kNoData;
+      // The terrain under each sample (as slar_geometry.cpp fill_line with
+      // its DirectSampler, the slope computed in place as surface_gradient).
+      if (cross_is_x_ && lc >= 0 && in.col0 == 0 && in.cols == samples) {
+        // A row of cells, contiguous in memory.
+        gather_row(in, scene.rows, lc, scene.dx_m, scene.dy_m, s.none_valid.data(), s.none_z.data(),
+                   s);
+        if (!u_grows_with_index_) {
+          std::reverse(s.height.begin(), s.height.end());
+          std::reverse(s.dz_dx.begin(), s.dz_dx.end());
+          std::reverse(s.dz_dy.begin(), s.dz_dy.end());
+          std::reverse(s.category.begin(), s.category.end());
+          std::reverse(s.flags.begin(), s.flags.end());
         }
-        if (!(u > 0.0)) f |= sample_flag::kUnseen;
-        if (lc < 0 || !valid) {
-          s.height[jj] = s.range[jj] = s.incidence[jj] = kNaN;
-          s.local_incidence[jj] = s.area[jj] = kNaN;
-          s.near_end[jj] = s.far_end[jj] = kNaN;
-          s.category[jj] = 0;
+        for (int j = 0; j < samples; ++j)
+          s.flags[static_cast<std::size_t>(j)] |= s.unseen[static_cast<std::size_t>(j)];
+      } else
+        for (int j = 0; j < samples; ++j) {
+          const std::size_t jj = static_cast<std::size_t>(j);
+          std::uint8_t f = 0;
+          int r = 0, c = 0;
+          bool valid = false;
+          if (lc < 0) {
+            f |= sample_flag::kUnseen;
+          } else {
+            cell_of(j, r, c);
+            valid = in.valid[in.index(r, c)] != 0;
+            if (!valid) f |= sample_flag::kNoData;
+          }
+          if (!(g.sample_u_m(j) > 0.0)) f |= sample_flag::kUnseen;
           s.flags[jj] = f;
-          continue;
+          if (lc < 0 || !valid) {
+            s.height[jj] = s.dz_dx[jj] = s.dz_dy[jj] = kNaN;
+            s.category[jj] = 0;
+            continue;
+          }
+          const std::size_t i = in.index(r, c);
+          const float zc = in.elevation_m[i];
+          s.height[jj] = zc;
+          s.dz_dx[jj] = slope_difference(ok(r, c - 1), z(r, c - 1), ok(r, c + 1), z(r, c + 1), zc,
+                                         scene.dx_m);
+          // North (+y) is towards row r - 1.
+          s.dz_dy[jj] = slope_difference(ok(r + 1, c), z(r + 1, c), ok(r - 1, c), z(r - 1, c), zc,
+                                         scene.dy_m);
+          s.category[jj] = in.category[i];
         }
-        const std::size_t i = in.index(r, c);
-        const float zc = in.elevation_m[i];
-        const float dz_dx =
-            difference(ok(r, c - 1), z(r, c - 1), ok(r, c + 1), z(r, c + 1), zc, scene.dx_m);
-        // North (+y) is towards row r - 1.
-        const float dz_dy =
-            difference(ok(r + 1, c), z(r + 1, c), ok(r - 1, c), z(r - 1, c), zc, scene.dy_m);
-        const double h = zc;
-        const double D = H - h;
-        const double R = std::hypot(u, D);
-        const double dh_du = double(dz_dx) * t.cross_x + double(dz_dy) * t.cross_y;
-        const double n_len = std::sqrt(1.0 + double(dz_dx) * dz_dx + double(dz_dy) * dz_dy);
-        const double cos_l = (u * dh_du + D) / (R * n_len);
-        if (cos_l <= 0.0) f |= sample_flag::kBackFacing;
-        s.height[jj] = zc;
-        s.range[jj] = static_cast<float>(R);
-        s.incidence[jj] = need_incidence ? static_cast<float>(std::atan2(u, D)) : 0.0f;
-        s.local_incidence[jj] = static_cast<float>(std::acos(std::clamp(cos_l, -1.0, 1.0)));
-        s.area[jj] = static_cast<float>(element_m2 * n_len);
-        s.dh_du[jj] = static_cast<float>(dh_du);
-        s.category[jj] = in.category[i];
-        s.flags[jj] = f;
-      }
 
-      // The element's ends: heights halfway to the neighbours with data.
+      // Look geometry, element ends, cast shadow and layover (MODEL.md
+      // section 2; the code the stage path runs: ris/geometry/line_scan.h).
+      look_line({samples, s.u.data(), s.height.data(), s.dz_dx.data(), s.dz_dy.data()}, frame,
+                {s.range.data(), need_incidence ? s.incidence.data() : nullptr,
+                 s.local_incidence.data(), s.area.data(), s.dh_du.data(), s.flags.data()});
+      const LineSamples ls{samples,         g.first_sample_u_m, g.sample_step_m,   H,
+                           s.height.data(), s.range.data(),     s.near_end.data(), s.far_end.data(),
+                           s.dh_du.data(),  s.flags.data()};
+      line_element_ends(ls);
+      mark_shadow_and_layover(ls);
       constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
-      const auto has_data = [&](int j) {
-        return j >= 0 && j < samples && !(s.flags[static_cast<std::size_t>(j)] & kSkip);
-      };
-      for (int j = 0; j < samples; ++j) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        if (!has_data(j)) continue;
-        const double h = s.height[jj];
-        const double slope_half = s.dh_du[jj] * half_step;
-        const double h_near = has_data(j - 1) ? 0.5 * (h + s.height[jj - 1]) : h - slope_half;
-        const double h_far = has_data(j + 1) ? 0.5 * (h + s.height[jj + 1]) : h + slope_half;
-        const double u = g.sample_u_m(j);
-        s.near_end[jj] = static_cast<float>(std::hypot(u - half_step, H - h_near));
-        s.far_end[jj] = static_cast<float>(std::hypot(u + half_step, H - h_far));
-      }
-
-      // Cast shadow and layover (MODEL.md section 2; as fill_line).
-      double max_t = -std::numeric_limits<double>::infinity();
-      for (int j = 0; j < samples; ++j) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        if (s.flags[jj] & kSkip) continue;
-        const double tt = g.sample_u_m(j) / (H - double(s.height[jj]));
-        if (max_t > tt) s.flags[jj] |= sample_flag::kShadow;
-        max_t = std::max(max_t, tt);
-      }
-      float max_r = -std::numeric_limits<float>::infinity();
-      for (int j = 0; j < samples; ++j) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        if (s.flags[jj] & kSkip) continue;
-        if (s.range[jj] < max_r) s.flags[jj] |= sample_flag::kLayover;
-        max_r = std::max(max_r, s.range[jj]);
-      }
-      float min_r = std::numeric_limits<float>::infinity();
-      for (int j = samples - 1; j >= 0; --j) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        if (s.flags[jj] & kSkip) continue;
-        if (s.range[jj] > min_r) s.flags[jj] |= sample_flag::kLayover;
-        min_r = std::min(min_r, s.range[jj]);
-      }
 
       // Image formation (form_slar_image's per-line step) and the scene-grid
       // maps (scene_geometry_maps: each cell is its own sample here).

@@ -70,6 +70,43 @@ inline double local_incidence_rad(const SampleLook& s) {
   return std::acos(std::clamp(s.cos_local, -1.0, 1.0));
 }
 
+// One line's terrain, the input of look_line: per sample its ground distance
+// u from the sensor's nadir, its height and its slope. Height and slope are
+// NaN where the sample has no terrain (outside the scene, no data): its
+// outputs are then NaN.
+struct LineTerrain {
+  int samples = 0;
+  const float* u_m = nullptr;
+  const float* height_m = nullptr;
+  const float* dz_dx = nullptr;
+  const float* dz_dy = nullptr;
+};
+
+// look_line's outputs, `samples` values each.
+struct LineLook {
+  float* slant_range_m = nullptr;
+  float* incidence_rad = nullptr;  // may be null: not wanted (uniform elevation pattern)
+  float* local_incidence_rad = nullptr;
+  float* area_m2 = nullptr;
+  float* dh_du = nullptr;
+  std::uint8_t* flags = nullptr;  // kBackFacing is added where cos(theta_l) <= 0
+};
+
+// The sensor and element constants of look_line.
+struct LineLookFrame {
+  double altitude_m = 0.0;            // H
+  double look_x = 0.0, look_y = 0.0;  // unit ground look direction
+  double element_m2 = 0.0;            // horizontal area of one element
+};
+
+// look_at() and local_incidence_rad() over a whole line, in single precision
+// and without branches so that it vectorises: R = sqrt(u^2 + D^2), the look
+// angle atan(u / D) (D = H - h > 0), theta_l = atan2(|n x l|, n . l) (the
+// same angle as look_at's acos(n . l), accurate near 0 in single precision),
+// area = element_m2 |n|, atan by ris/util/fast_math.h. Differs from look_at
+// only by float rounding (~1e-7; tested in line_scan_test.cpp).
+void look_line(const LineTerrain& in, const LineLookFrame& frame, const LineLook& out);
+
 // One line's samples: sample j at ground distance u_j = first_u_m + j step_m
 // from the sensor's nadir. Pointers to `samples` values each; samples flagged
 // kNoData or kUnseen are skipped by both scans.

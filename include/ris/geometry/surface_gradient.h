@@ -26,4 +26,19 @@ struct SurfaceGradient {
 
 SurfaceGradient surface_gradient(const Scene& scene);
 
+// The slope at a cell with data from its two neighbours along one axis (lo at
+// -step_m, hi at +step_m; *_ok: the neighbour exists and has data), as above.
+// Written with selects only (no branches), so that a loop over a row of cells
+// vectorises; the fused SLAR path (ris/sim/slar_line_blocks.h) calls it too,
+// so both paths get the same floats.
+inline float slope_difference(bool lo_ok, float z_lo, bool hi_ok, float z_hi, float z_c,
+                              double step_m) {
+  const double num = (lo_ok && hi_ok) ? double(z_hi) - double(z_lo)
+                     : hi_ok          ? double(z_hi) - double(z_c)
+                     : lo_ok          ? double(z_c) - double(z_lo)
+                                      : 0.0;
+  const double den = (lo_ok && hi_ok) ? 2.0 * step_m : step_m;
+  return static_cast<float>(num / den);
+}
+
 }  // namespace ris

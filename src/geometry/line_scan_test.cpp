@@ -1,0 +1,79 @@
+#include "ris/geometry/line_scan.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace ris {
+namespace {
+
+// look_line (single precision, vectorised) agrees with look_at (double, libm)
+// to float rounding: slant range and area to 2e-7 relative, the angles to
+// 1e-6 rad (the sigma0 table's step is 1.7e-4 rad), and the back-facing flag
+// wherever cos(theta_l) is not within rounding of 0.
+TEST(LineScan, LookLineMatchesLookAtToFloatRounding) {
+  const int n = 4000;
+  const double H = 12192.0, first_u = -300.0, step = 6.0;
+  const double look_x = std::cos(0.3), look_y = -std::sin(0.3);
+  std::vector<float> u(n), h(n), gx(n), gy(n);
+  for (int j = 0; j < n; ++j) {
+    u[j] = static_cast<float>(first_u + j * step);
+    h[j] = static_cast<float>(800.0 * std::sin(0.01 * j) + 300.0 * std::cos(0.037 * j));
+    gx[j] = static_cast<float>(1.5 * std::sin(0.05 * j));
+    gy[j] = static_cast<float>(0.8 * std::cos(0.031 * j));
+  }
+  h[7] = gx[7] = gy[7] = std::numeric_limits<float>::quiet_NaN();  // no terrain
+  std::vector<float> range(n), inc(n), local(n), area(n), dh(n);
+  std::vector<std::uint8_t> flags(n, 0);
+  look_line({n, u.data(), h.data(), gx.data(), gy.data()}, {H, look_x, look_y, 36.0},
+            {range.data(), inc.data(), local.data(), area.data(), dh.data(), flags.data()});
+  EXPECT_TRUE(std::isnan(range[7]) && std::isnan(local[7]) && std::isnan(area[7]));
+  EXPECT_TRUE(std::isnan(inc[7]));
+  EXPECT_EQ(flags[7], 0);
+  int back = 0;
+  for (int j = 0; j < n; ++j) {
+    if (j == 7) continue;
+    TerrainSample ts;
+    ts.inside = ts.valid = true;
+    ts.height_m = h[j];
+    ts.dz_dx = gx[j];
+    ts.dz_dy = gy[j];
+    const SampleLook s = look_at(ts, u[j], H, look_x, look_y);
+    EXPECT_NEAR(range[j], s.slant_range_m, 2e-7 * s.slant_range_m) << j;
+    EXPECT_NEAR(area[j], 36.0 * s.normal_length, 2e-7 * 36.0 * s.normal_length) << j;
+    EXPECT_NEAR(inc[j], s.incidence_rad, 1e-6) << j;
+    EXPECT_NEAR(local[j], local_incidence_rad(s), 1e-6) << j;
+    EXPECT_NEAR(dh[j], s.dh_du, 1e-6 * (1.0 + std::abs(s.dh_du))) << j;
+    if (std::abs(s.cos_local) > 1e-5) {
+      EXPECT_EQ((flags[j] & sample_flag::kBackFacing) != 0, s.cos_local <= 0.0) << j;
+    }
+    back += (flags[j] & sample_flag::kBackFacing) ? 1 : 0;
+  }
+  EXPECT_GT(back, 0) << "the test line has back-facing slopes";
+}
+
+// Element ends of a flat line: R at u -+ step/2 and the datum height, and the
+// local slope's extrapolation where a neighbour has no data.
+TEST(LineScan, ElementEndsOfAFlatLineAndAtAGap) {
+  const int n = 5;
+  const double H = 1000.0, first_u = 100.0, step = 10.0;
+  std::vector<float> h(n, 0.0f), range(n), near_end(n), far_end(n), dh(n, 0.0f);
+  std::vector<std::uint8_t> flags(n, 0);
+  flags[2] = sample_flag::kNoData;
+  h[2] = std::numeric_limits<float>::quiet_NaN();
+  dh[3] = 0.1f;  // sample 3 tilts: its near end (no neighbour) follows the slope
+  const LineSamples l{
+      n,         first_u,     step, H, h.data(), range.data(), near_end.data(), far_end.data(),
+      dh.data(), flags.data()};
+  line_element_ends(l);
+  EXPECT_NEAR(near_end[0], std::hypot(95.0, H), 1e-3);
+  EXPECT_NEAR(far_end[4], std::hypot(145.0, H), 1e-3);
+  EXPECT_TRUE(std::isnan(near_end[2]) && std::isnan(far_end[2]));
+  EXPECT_NEAR(near_end[3], std::hypot(125.0, H + 0.5), 1e-3);  // h_near = -0.1 x 5 m
+  EXPECT_NEAR(far_end[3], std::hypot(135.0, H), 1e-3);         // shares sample 4's mean
+}
+
+}  // namespace
+}  // namespace ris
