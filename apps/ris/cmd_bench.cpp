@@ -3,7 +3,7 @@
 // in the same run (docs/performance.md).
 //
 //   ris bench [--size N | --rows R --cols C] [--cell 6.096] [--repeats 5]
-//             [--oblique-heading 30] [--no-standard] [--no-io] [--seed 7]
+//             [--oblique-heading 30] [--no-oblique] [--no-standard] [--no-io] [--seed 7]
 //
 // Prints, per track (along a grid axis, oblique) and thread count (1, 2):
 // the median wall time of simulate_slar + render_slar (geometry, radiometry,
@@ -64,6 +64,7 @@ struct BenchArgs {
   int repeats = 5;
   double oblique_heading_deg = 30.0;
   bool standard = true;
+  bool oblique = true;
   bool io = true;
   std::uint64_t seed = 7;
 };
@@ -191,9 +192,11 @@ void run_bench(const BenchArgs& a) {
     std::string name;
     double heading_deg;
   };
-  const std::vector<TrackCase> tracks{
-      {"along-axis track (heading 0)", 0.0},
-      {fmt::format("oblique track (heading {:g})", a.oblique_heading_deg), a.oblique_heading_deg}};
+  std::vector<TrackCase> tracks{{"along-axis track (heading 0)", 0.0}};
+  if (a.oblique) {
+    tracks.push_back({fmt::format("oblique track (heading {:g})", a.oblique_heading_deg),
+                      a.oblique_heading_deg});
+  }
   double cells_per_s_2 = 0.0;
   for (const TrackCase& tc : tracks) {
     const RadarParams radar = bench_radar(base, scene, deg_to_rad(tc.heading_deg));
@@ -262,6 +265,7 @@ void add_bench(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Fractal scene seed")->capture_default_str();
   cmd->add_flag("!--no-standard", args->standard, "Skip the standard scene");
+  cmd->add_flag("!--no-oblique", args->oblique, "Skip the oblique track");
   cmd->add_flag("!--no-io", args->io, "Skip the product-writing (I/O) timing");
   cmd->callback([args] { run_bench(*args); });
 }

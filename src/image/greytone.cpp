@@ -10,6 +10,7 @@
 
 #include "ris/image/greytone_terms.h"
 #include "ris/util/error.h"
+#include "ris/util/float_select.h"
 
 namespace ris {
 
@@ -33,17 +34,14 @@ bool valid_pixel(float p, std::span<const std::uint8_t> no_data, std::size_t i) 
 
 double median_valid_power_w(std::span<const float> power_w, std::span<const std::uint8_t> no_data) {
   RIS_CHECK(no_data.empty() || no_data.size() == power_w.size());
-  std::vector<float> v;
-  v.reserve(power_w.size());
-  for (std::size_t i = 0; i < power_w.size(); ++i) {
-    if (valid_pixel(power_w[i], no_data, i)) v.push_back(power_w[i]);
-  }
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  const std::size_t mid = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid), v.end());
-  const double upper = v[mid];
-  if (v.size() % 2 == 1) return upper;
-  const double lower = *std::max_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid));
+  // A parallel radix select (ris/util/float_select.h), not a sorted copy.
+  const auto keep = [&](std::size_t i) { return valid_pixel(power_w[i], no_data, i); };
+  const std::size_t n = count_kept(power_w.size(), keep);
+  if (n == 0) return std::numeric_limits<double>::quiet_NaN();
+  const std::size_t mid = n / 2;
+  const double upper = *kth_smallest_float(power_w, mid, keep);
+  if (n % 2 == 1) return upper;
+  const double lower = *kth_smallest_float(power_w, mid - 1, keep);
   return 0.5 * (lower + upper);
 }
 

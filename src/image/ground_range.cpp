@@ -78,6 +78,12 @@ std::vector<std::uint8_t> to_ground_range_nearest(std::span<const std::uint8_t> 
   RIS_CHECK(slant.size() == static_cast<std::size_t>(lines) * static_cast<std::size_t>(bins.count));
   const std::vector<double> pos = bin_positions(bins, grid);
   const std::size_t cols = static_cast<std::size_t>(grid.count);
+  // The nearest bin of each column, once (-1: none), not per pixel.
+  std::vector<int> nearest(cols, -1);
+  for (std::size_t j = 0; j < cols; ++j) {
+    const double k = std::round(pos[j]);
+    if (k >= 0.0 && k < bins.count) nearest[j] = static_cast<int>(k);
+  }
   std::vector<std::uint8_t> out(static_cast<std::size_t>(lines) * cols, fill);
 #pragma omp parallel for schedule(static)
   for (int line = 0; line < lines; ++line) {
@@ -85,8 +91,7 @@ std::vector<std::uint8_t> to_ground_range_nearest(std::span<const std::uint8_t> 
         slant.data() + static_cast<std::size_t>(line) * static_cast<std::size_t>(bins.count);
     std::uint8_t* dst = out.data() + static_cast<std::size_t>(line) * cols;
     for (std::size_t j = 0; j < cols; ++j) {
-      const double k = std::round(pos[j]);
-      if (k >= 0.0 && k < bins.count) dst[j] = row[static_cast<int>(k)];
+      if (nearest[j] >= 0) dst[j] = row[nearest[j]];
     }
   }
   return out;

@@ -16,6 +16,7 @@
 #include "ris/sim/radiometry_setup.h"
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/util/error.h"
+#include "ris/util/float_select.h"
 
 namespace ris {
 
@@ -25,15 +26,14 @@ void report(const SlarOptions& o, std::string_view stage, double fraction) {
   if (o.progress) o.progress(stage, fraction);
 }
 
+// The median of the cells with data (the upper one of an even count, as
+// nth_element at n / 2), by a parallel radix select (ris/util/float_select.h).
 double median_valid_elevation(const Scene& scene) {
-  std::vector<float> h;
-  h.reserve(scene.size());
-  for (std::size_t i = 0; i < scene.size(); ++i)
-    if (scene.valid[i] && std::isfinite(scene.elevation_m[i])) h.push_back(scene.elevation_m[i]);
-  if (h.empty()) return 0.0;
-  const auto mid = h.begin() + static_cast<std::ptrdiff_t>(h.size() / 2);
-  std::nth_element(h.begin(), mid, h.end());
-  return *mid;
+  const auto keep = [&](std::size_t i) {
+    return scene.valid[i] && std::isfinite(scene.elevation_m[i]);
+  };
+  const std::size_t n = count_kept(scene.size(), keep);
+  return n ? *kth_smallest_float(scene.elevation_m, n / 2, keep) : 0.0;
 }
 
 // A SAR resolution finer than the scene's sampling cannot show more detail

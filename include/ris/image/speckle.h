@@ -6,9 +6,9 @@
 //     N-look intensity for fully developed speckle (the seed's "chi-squared
 //     distribution with 2N degrees of freedom", normalised to mean 1). N may
 //     be non-integer. Drawn by Marsaglia and Tsang's method (ACM TOMS 26(3),
-//     2000), boosted by U^(1/N) for N < 1.
+//     2000) over ziggurat normals, boosted by U^(1/N) for N < 1.
 //   seed (equation 21): Y = max(kSeedFadingFloor, 1 + RN / sqrt(N)), RN a
-//     standard normal. In greytones this is the seed's
+//     standard normal (ziggurat). In greytones this is the seed's
 //     G_fad = (255/X) gamma log10(1 + RN / sqrt(N)) exactly, because
 //     GreytoneMap maps P * Y to G(P) + (255/X) gamma log10(Y). The floor
 //     (0.01, i.e. -20 dB: black on any film with X / gamma <= 2) stands in for
@@ -41,13 +41,17 @@
 
 #include "ris/sensor/radar_params.h"
 #include "ris/util/counter_rng.h"
+#include "ris/util/ziggurat_normal.h"
 
 namespace ris {
 
 inline constexpr double kSeedFadingFloor = 0.01;
 
-// Gamma(shape, 1) by Marsaglia and Tsang (2000); shape > 0.
+// Gamma(shape, 1) by Marsaglia and Tsang (2000); shape > 0. The normals come
+// from the ziggurat (ris/util/ziggurat_normal.h) and the acceptance test's
+// uniform from one 32-bit word: usually one Philox block per variate.
 inline double gamma_variate(CounterRng& rng, double shape) {
+  const ZigguratTables& zig = ziggurat_tables();
   double boost = 1.0;
   if (shape < 1.0) {
     // Gamma(a) = Gamma(a + 1) U^(1/a) (Marsaglia and Tsang, section 6).
@@ -59,11 +63,11 @@ inline double gamma_variate(CounterRng& rng, double shape) {
   for (;;) {
     double x = 0.0, v = 0.0;
     do {
-      x = rng.normal();
+      x = ziggurat_normal(rng, zig);
       v = 1.0 + c * x;
     } while (v <= 0.0);
     v = v * v * v;
-    const double u = rng.uniform();
+    const double u = rng.uniform32();
     const double x2 = x * x;
     if (u < 1.0 - 0.0331 * x2 * x2) return boost * d * v;
     if (std::log(u) < 0.5 * x2 + d * (1.0 - v + std::log(v))) return boost * d * v;
@@ -75,7 +79,7 @@ inline double fading_factor(FadingLaw law, double looks, std::uint64_t seed, std
                             std::uint32_t bin) {
   CounterRng rng(seed, bin, line, CounterRng::kFadingStream);
   if (law == FadingLaw::exact_gamma) return gamma_variate(rng, looks) / looks;
-  const double y = 1.0 + rng.normal() / std::sqrt(looks);
+  const double y = 1.0 + ziggurat_normal(rng, ziggurat_tables()) / std::sqrt(looks);
   return y > kSeedFadingFloor ? y : kSeedFadingFloor;
 }
 

@@ -73,6 +73,10 @@ class CounterRng {
     return (static_cast<double>((hi << 26) | lo) + 0.5) * 0x1.0p-53;
   }
 
+  // Uniform in (0, 1) from one 32-bit word (2^-32 resolution): for
+  // acceptance tests, where 53 bits buy nothing.
+  double uniform32() { return (static_cast<double>(next_u32()) + 0.5) * 0x1.0p-32; }
+
   // Standard normal by the Box-Muller transform (Box and Muller, Ann. Math.
   // Statist. 29, 1958), both variates of a pair used in turn.
   double normal() {

@@ -1,0 +1,76 @@
+#include "ris/util/float_select.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace ris {
+namespace {
+
+// Against std::nth_element on a filtered copy: every rank of a small set and
+// the median and extremes of a large one, with negative values, duplicates,
+// signed zeros, infinities, NaN and masked values; 1 and 2 threads.
+TEST(FloatSelect, MatchesNthElement) {
+  const int saved = omp_get_max_threads();
+  std::mt19937 gen(5);
+  std::normal_distribution<float> normal(0.0f, 300.0f);
+  for (int n : {1, 2, 7, 1000, 300001}) {
+    std::vector<float> v(static_cast<std::size_t>(n));
+    std::vector<std::uint8_t> mask(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      v[i] = (i % 5 == 0) ? std::round(normal(gen)) : normal(gen);  // duplicates
+      if (i % 97 == 3) v[i] = std::numeric_limits<float>::quiet_NaN();
+      if (i % 89 == 4) v[i] = (i % 2) ? -0.0f : 0.0f;
+      if (i % 1009 == 5) v[i] = std::numeric_limits<float>::infinity();
+      mask[i] = (i % 11 != 7) ? 1 : 0;
+    }
+    const auto keep = [&](std::size_t i) { return mask[i] && !std::isnan(v[i]); };
+    std::vector<float> ref;
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (keep(i)) ref.push_back(v[i]);
+    ASSERT_EQ(count_kept(v.size(), keep), ref.size());
+    std::vector<std::size_t> ranks;
+    if (n < 100) {
+      for (std::size_t k = 0; k < ref.size(); ++k) ranks.push_back(k);
+    } else {
+      ranks = {0, ref.size() / 2, ref.size() / 2 - 1, ref.size() - 1, 12345 % ref.size()};
+    }
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      for (std::size_t k : ranks) {
+        std::vector<float> copy = ref;
+        std::nth_element(copy.begin(), copy.begin() + static_cast<std::ptrdiff_t>(k), copy.end());
+        const std::optional<float> got = kth_smallest_float(v, k, keep);
+        ASSERT_TRUE(got.has_value());
+        EXPECT_EQ(*got, copy[k]) << "n " << n << " k " << k << " threads " << threads;
+      }
+      EXPECT_FALSE(kth_smallest_float(v, ref.size(), keep).has_value());
+    }
+  }
+  omp_set_num_threads(saved);
+}
+
+TEST(FloatSelect, OrderKeysSortAsTheFloats) {
+  const std::vector<float> sorted = {-std::numeric_limits<float>::infinity(),
+                                     -1e30f,
+                                     -2.5f,
+                                     -1e-40f,
+                                     -0.0f,
+                                     0.0f,
+                                     1e-40f,
+                                     1.0f,
+                                     3e38f,
+                                     std::numeric_limits<float>::infinity()};
+  for (std::size_t i = 0; i + 1 < sorted.size(); ++i) {
+    EXPECT_LT(detail::float_order_key(sorted[i]), detail::float_order_key(sorted[i + 1])) << i;
+  }
+  for (float f : sorted) EXPECT_EQ(detail::float_from_order_key(detail::float_order_key(f)), f);
+}
+
+}  // namespace
+}  // namespace ris
