@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -24,6 +25,33 @@ GreytoneMap::GreytoneMap(const RadarParams& radar, double p_ref_w, double g_ref)
   if (radar.switches.film_k) film_offset_ += scale * std::log10(f.k2 / f.k1);
   if (radar.switches.receiver_m) film_offset_ += scale * f.gamma * std::log10(f.m2 / f.m1);
   offset_ = g_ref_ + film_offset_ - per_decade_ * std::log10(p_ref_w_);
+  // quantised() is non-decreasing in the power (log10 and rounding are), so
+  // each threshold is found by bisection over the positive floats, whose bit
+  // patterns order as they do.
+  const auto as_float = [](std::uint32_t bits) {
+    float out = 0.0f;
+    std::memcpy(&out, &bits, sizeof out);
+    return out;
+  };
+  constexpr std::uint32_t kInfBits = 0x7f800000u;
+  table_ = per_decade_ > 0.0;
+  if (!table_) return;
+  threshold_[0] = 0.0f;
+  for (unsigned k = 1; k < 256; ++k) {
+    std::uint32_t lo = 0, hi = kInfBits;  // quantised(lo) < k; hi: answer candidate
+    if (quantised(double(as_float(hi))) < k) {
+      threshold_[k] = std::numeric_limits<float>::infinity();
+      continue;
+    }
+    while (hi - lo > 1) {
+      const std::uint32_t mid = lo + (hi - lo) / 2;
+      if (quantised(double(as_float(mid))) >= k)
+        hi = mid;
+      else
+        lo = mid;
+    }
+    threshold_[k] = as_float(hi);
+  }
 }
 
 namespace {
@@ -83,7 +111,7 @@ void greytones(std::span<const float> power_w, std::span<std::uint8_t> out, cons
     const auto k = static_cast<std::size_t>(i);
     const float p = power_w[k];
     const bool masked = std::isnan(p) || (!no_data.empty() && no_data[k] != 0);
-    out[k] = masked ? no_data_greytone : map.quantised(p);
+    out[k] = masked ? no_data_greytone : map.quantised_fast(p);
   }
 }
 

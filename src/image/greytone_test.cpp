@@ -181,6 +181,34 @@ TEST(Greytone, RoundThenClamp) {
   EXPECT_EQ(map.quantised(std::numeric_limits<double>::quiet_NaN()), 0);
 }
 
+// The table lookup gives quantised() on every float tried: each threshold
+// and its neighbours, a sweep over 40 decades around the reference, and
+// special values.
+TEST(Greytone, FastQuantisedEqualsQuantisedOnEveryFloatTried) {
+  for (const char* extra : {"", "[film.terms]\nk = false\nm = false\n"}) {
+    const GreytoneMap map = make_greytone_map(radar_with(extra), {});
+    const auto check = [&](float p) {
+      ASSERT_EQ(map.quantised_fast(p), map.quantised(double(p))) << p;
+    };
+    std::vector<int> seen(256, 0);
+    for (int k = 0; k <= 2000000; ++k) {
+      const double g = -200.0 + 600.0 * k / 2000000.0;
+      const auto p = static_cast<float>(map.reference_power_w() *
+                                        std::pow(10.0, (g - 128.0) / map.greytones_per_decade()));
+      check(p);
+      check(std::nextafter(p, 0.0f));
+      check(std::nextafter(p, 1.0f));
+      seen[map.quantised_fast(p)] = 1;
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), 256) << "the sweep makes every greytone";
+    for (float p : {0.0f, -0.0f, -1.0f, std::numeric_limits<float>::denorm_min(),
+                    std::numeric_limits<float>::min(), std::numeric_limits<float>::max(),
+                    std::numeric_limits<float>::infinity()}) {
+      check(p);
+    }
+  }
+}
+
 TEST(Greytone, AutoReferenceMapsTheMedianToTheGivenGreytone) {
   const std::string text =
       kRadar.substr(0, kRadar.find("[reference]")) + "[reference]\nauto = true\ngreytone = 140\n";

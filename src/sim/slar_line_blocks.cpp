@@ -9,6 +9,7 @@
 
 #include "image/slar_element.h"
 #include "ris/geometry/surface_gradient.h"
+#include "ris/geometry/terrain_sample.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -148,6 +149,68 @@ int line_cell(const Scene& scene, const SlarGeometry& g, bool cross_is_x, int li
   return (f >= 0.0 && f < n) ? static_cast<int>(std::floor(f)) : -1;
 }
 
+// The constant part of a run's image formation (as form_slar_image).
+detail::SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainTable& gain2,
+                                           const Sigma0Lut& lut, int bins) {
+  detail::SlarElementContext ctx;
+  ctx.k_radar = p.transmit_power_w * p.wavelength_m * p.wavelength_m / std::pow(4.0 * kPi, 3.0);
+  ctx.near_m = p.range.near_m;
+  ctx.inv_dr = 1.0 / p.range.bin_m;
+  ctx.bins = bins;
+  ctx.gain2 = &gain2;
+  ctx.lut = &lut;
+  return ctx;
+}
+
+// The look geometry, element ends, cast shadow and layover of a line whose
+// terrain is in the scratch (MODEL.md section 2; the code the stage path
+// runs: ris/geometry/line_scan.h).
+void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_incidence,
+                   LineScratch& s) {
+  const int samples = g.samples;
+  look_line({samples, s.u.data(), s.height.data(), s.dz_dx.data(), s.dz_dy.data()}, frame,
+            {s.range.data(), need_incidence ? s.incidence.data() : nullptr,
+             s.local_incidence.data(), s.area.data(), s.dh_du.data(), s.flags.data()});
+  const LineSamples ls{samples,         g.first_sample_u_m, g.sample_step_m,   g.altitude_m,
+                       s.height.data(), s.range.data(),     s.near_end.data(), s.far_end.data(),
+                       s.dh_du.data(),  s.flags.data()};
+  line_element_ends(ls);
+  mark_shadow_and_layover(ls);
+}
+
+// Image formation's per-line step (as form_slar_image): the line's elements
+// into its range profile row; counts into `counts`. Returns the number of
+// elements whose centre falls in a bin.
+std::int64_t accumulate_line(const detail::SlarElementContext& ctx, int samples, LineScratch& s,
+                             SlarLineProfiles& prof, int line, SlarLineCounts& counts) {
+  constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
+  std::int64_t in_swath = 0;
+  std::fill(s.acc.acc.begin(), s.acc.acc.end(), 0.0);
+  std::fill(s.acc.acc_area.begin(), s.acc.acc_area.end(), 0.0);
+  const std::size_t row = prof.index(line, 0);
+  for (int j = 0; j < samples; ++j) {
+    const std::size_t jj = static_cast<std::size_t>(j);
+    const std::uint8_t sf = s.flags[jj];
+    counts.nodata += (sf & sample_flag::kNoData) ? 1 : 0;
+    counts.shadow += (sf & sample_flag::kShadow) ? 1 : 0;
+    counts.back_facing += (sf & sample_flag::kBackFacing) ? 1 : 0;
+    counts.layover += (sf & sample_flag::kLayover) ? 1 : 0;
+    if (sf & kSkip) continue;
+    counts.r_min_m = std::min(counts.r_min_m, s.range[jj]);
+    counts.r_max_m = std::max(counts.r_max_m, s.range[jj]);
+    in_swath += detail::accumulate_element(
+        ctx, sf, s.range[jj], s.near_end[jj], s.far_end[jj], s.incidence[jj], s.local_incidence[jj],
+        s.area[jj], s.category[jj], prof.touch.data() + row, prof.mapped_count.data() + row,
+        prof.visible_count.data() + row, s.acc.acc.data(), s.acc.acc_area.data());
+  }
+  for (int b = 0; b < prof.bins; ++b) {
+    const std::size_t bb = static_cast<std::size_t>(b);
+    prof.power_w[row + bb] = static_cast<float>(s.acc.acc[bb]);
+    prof.area_m2[row + bb] = static_cast<float>(s.acc.acc_area[bb]);
+  }
+  return in_swath;
+}
+
 }  // namespace
 
 int SlarLineEngine::cell_of_line(int line) const {
@@ -196,14 +259,7 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
   const bool need_incidence = !gain2_.uniform();
   const double near_m = params_.range.near_m, far_m = params_.range.far_m();
 
-  detail::SlarElementContext ctx;
-  ctx.k_radar = params_.transmit_power_w * params_.wavelength_m * params_.wavelength_m /
-                std::pow(4.0 * kPi, 3.0);
-  ctx.near_m = near_m;
-  ctx.inv_dr = 1.0 / params_.range.bin_m;
-  ctx.bins = bins;
-  ctx.gain2 = &gain2_;
-  ctx.lut = &lut_;
+  const detail::SlarElementContext ctx = element_context(params_, gain2_, lut_, bins);
 
   const auto ok = [&](int r, int c) {
     return scene.contains(r, c) && in.valid[in.index(r, c)] != 0;
@@ -276,62 +332,21 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
           s.category[jj] = in.category[i];
         }
 
-      // Look geometry, element ends, cast shadow and layover (MODEL.md
-      // section 2; the code the stage path runs: ris/geometry/line_scan.h).
-      look_line({samples, s.u.data(), s.height.data(), s.dz_dx.data(), s.dz_dy.data()}, frame,
-                {s.range.data(), need_incidence ? s.incidence.data() : nullptr,
-                 s.local_incidence.data(), s.area.data(), s.dh_du.data(), s.flags.data()});
-      const LineSamples ls{samples,         g.first_sample_u_m, g.sample_step_m,   H,
-                           s.height.data(), s.range.data(),     s.near_end.data(), s.far_end.data(),
-                           s.dh_du.data(),  s.flags.data()};
-      line_element_ends(ls);
-      mark_shadow_and_layover(ls);
-      constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
+      line_geometry(g, frame, need_incidence, s);
+      in_swath += accumulate_line(ctx, samples, s, prof, line, local);
 
-      // Image formation (form_slar_image's per-line step) and the scene-grid
-      // maps (scene_geometry_maps: each cell is its own sample here).
-      std::fill(s.acc.acc.begin(), s.acc.acc.end(), 0.0);
-      std::fill(s.acc.acc_area.begin(), s.acc.acc_area.end(), 0.0);
-      const std::size_t row = prof.index(line, 0);
-      for (int j = 0; j < samples; ++j) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        const std::uint8_t sf = s.flags[jj];
-        local.nodata += (sf & sample_flag::kNoData) ? 1 : 0;
-        local.shadow += (sf & sample_flag::kShadow) ? 1 : 0;
-        local.back_facing += (sf & sample_flag::kBackFacing) ? 1 : 0;
-        local.layover += (sf & sample_flag::kLayover) ? 1 : 0;
-        const bool has = !(sf & kSkip);
-        if (has) {
-          local.r_min_m = std::min(local.r_min_m, s.range[jj]);
-          local.r_max_m = std::max(local.r_max_m, s.range[jj]);
-          in_swath += detail::accumulate_element(
-              ctx, sf, s.range[jj], s.near_end[jj], s.far_end[jj], s.incidence[jj],
-              s.local_incidence[jj], s.area[jj], s.category[jj], prof.touch.data() + row,
-              prof.mapped_count.data() + row, prof.visible_count.data() + row, s.acc.acc.data(),
-              s.acc.acc_area.data());
+      // The scene-grid maps (scene_geometry_maps: each cell is its own
+      // sample here).
+      if (lc >= 0) {
+        for (int j = 0; j < samples; ++j) {
+          const std::size_t jj = static_cast<std::size_t>(j);
+          int r = 0, c = 0;
+          cell_of(j, r, c);
+          const std::size_t cell = maps.index(r, c);
+          scene_map_cell(in.valid[in.index(r, c)] != 0, s.flags[jj], s.range[jj],
+                         s.local_incidence[jj], near_m, far_m, maps.mask[cell],
+                         maps.local_incidence_deg[cell]);
         }
-        if (lc < 0) continue;
-        int r = 0, c = 0;
-        cell_of(j, r, c);
-        std::uint8_t m = in.valid[in.index(r, c)] ? 0 : scene_flag::kNoData;
-        if (sf & sample_flag::kNoData) m |= scene_flag::kNoData;
-        if (sf & sample_flag::kShadow) m |= scene_flag::kShadow;
-        if (sf & sample_flag::kLayover) m |= scene_flag::kLayover;
-        if (sf & sample_flag::kBackFacing) m |= scene_flag::kBackFacing;
-        const double R = s.range[jj];
-        if ((sf & sample_flag::kUnseen) || (has && !(R >= near_m && R < far_m))) {
-          m |= scene_flag::kOutsideSwath;
-        }
-        const std::size_t cell = maps.index(r, c);
-        maps.local_incidence_deg[cell] = (has && !(m & scene_flag::kNoData))
-                                             ? static_cast<float>(rad_to_deg(s.local_incidence[jj]))
-                                             : kNaN;
-        maps.mask[cell] = m;
-      }
-      for (int b = 0; b < bins; ++b) {
-        const std::size_t bb = static_cast<std::size_t>(b);
-        prof.power_w[row + bb] = static_cast<float>(s.acc.acc[bb]);
-        prof.area_m2[row + bb] = static_cast<float>(s.acc.acc_area[bb]);
       }
     }
 #pragma omp critical(ris_slar_line_counts)
@@ -340,21 +355,126 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
   prof.samples_in_swath += in_swath;
 }
 
+bool fused_slar_image_applies(const Scene& scene, const SlarGeometry& layout) {
+  return fused_slar_applies(scene, layout) || !layout.direct_sampling;
+}
+
+namespace {
+
+// Writes the scene-map cells whose nearest line is `line` (scene_geometry_maps'
+// rule, scene_cell_sample) from the line's samples. The cells of one line
+// form a strip across the grid: scanned row by row (or column by column,
+// whichever axis the strip crosses more steeply) over the few cells where the
+// along-track distance is within a line of it, each checked exactly. Every
+// cell belongs to one line, so lines in parallel never write the same cell.
+void scatter_line_cells(const Scene& scene, const SlarGeometry& g, int line, const LineScratch& s,
+                        double near_m, double far_m, SceneGeometryMaps& maps) {
+  const Track& t = g.track;
+  const double ds = g.line_spacing_m;
+  const double s_lo = line * ds, s_hi = (line + 1) * ds;
+  // Along-track distance per column (x east) and per row (y north = row - 1).
+  const double ds_dc = t.along_x * scene.dx_m, ds_dr = -t.along_y * scene.dy_m;
+  const bool by_rows = std::abs(ds_dc) >= std::abs(ds_dr);
+  const int outer_n = by_rows ? scene.rows : scene.cols;
+  const int inner_n = by_rows ? scene.cols : scene.rows;
+  const double step = by_rows ? ds_dc : ds_dr;
+  for (int o = 0; o < outer_n; ++o) {
+    const int r0 = by_rows ? o : 0, c0 = by_rows ? 0 : o;
+    const auto [x0, y0] = scene.cell_centre(r0, c0);
+    const double s0 = t.along_cross(x0, y0).first;
+    const double ia = (s_lo - s0) / step, ib = (s_hi - s0) / step;
+    const int lo = std::max(0, static_cast<int>(std::floor(std::min(ia, ib))) - 1);
+    const int hi = std::min(inner_n - 1, static_cast<int>(std::ceil(std::max(ia, ib))) + 1);
+    for (int k = lo; k <= hi; ++k) {
+      const int r = by_rows ? o : k, c = by_rows ? k : o;
+      int cell_line = 0, j = 0;
+      // Cells outside the swath keep their initial mask.
+      if (!scene_cell_sample(scene, g, r, c, cell_line, j) || cell_line != line) continue;
+      const std::size_t cell = scene.index(r, c);
+      const std::size_t jj = static_cast<std::size_t>(j);
+      scene_map_cell(scene.valid[cell] != 0, s.flags[jj], s.range[jj], s.local_incidence[jj],
+                     near_m, far_m, maps.mask[cell], maps.local_incidence_deg[cell]);
+    }
+  }
+}
+
+// The fused run for any other heading: the stage path's bilinear sampler
+// (slar_geometry.cpp fill_line with BilinearSampler: bilinear height and
+// slope at half a cell, the nearest cell's category) line by line, then the
+// shared line geometry and image formation, and the scene maps scattered
+// per line. Only the slope rasters (8 bytes per cell) are whole-scene.
+void run_oblique(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
+                 const SlarImagingParams& p, const std::string& radar_file, SlarLineProfiles& prof,
+                 SceneGeometryMaps& maps, SlarLineCounts& counts) {
+  const SurfaceGradient grad = surface_gradient(scene);
+  const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, radar_file);
+  const detail::SlarElementContext ctx = element_context(p, gain2, lut, prof.bins);
+  const Track& t = g.track;
+  const LineLookFrame frame{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
+  const bool need_incidence = !gain2.uniform();
+  const double near_m = p.range.near_m, far_m = p.range.far_m();
+  const auto n_cells = static_cast<std::int64_t>(scene.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n_cells; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    maps.mask[k] = (scene.valid[k] ? 0 : scene_flag::kNoData) | scene_flag::kOutsideSwath;
+    maps.local_incidence_deg[k] = kNaN;
+  }
+  std::int64_t in_swath = 0;
+#pragma omp parallel reduction(+ : in_swath)
+  {
+    LineScratch s(g, prof.bins);
+    SlarLineCounts local;
+#pragma omp for schedule(dynamic, 16)
+    for (int line = 0; line < g.lines; ++line) {
+      const auto [line_x, line_y] = t.world_from_along_cross(g.line_s_m(line), 0.0);
+      for (int j = 0; j < g.samples; ++j) {
+        const std::size_t jj = static_cast<std::size_t>(j);
+        const double u = g.sample_u_m(j);
+        const TerrainSample ts =
+            bilinear_terrain_sample(scene, &grad, line_x + u * t.cross_x, line_y + u * t.cross_y);
+        std::uint8_t f = 0;
+        if (!ts.inside) f |= sample_flag::kUnseen;
+        if (ts.inside && !ts.valid) f |= sample_flag::kNoData;
+        f |= s.unseen[jj];
+        s.flags[jj] = f;
+        const bool terrain = ts.inside && ts.valid;
+        s.height[jj] = terrain ? ts.height_m : kNaN;
+        s.dz_dx[jj] = terrain ? ts.dz_dx : kNaN;
+        s.dz_dy[jj] = terrain ? ts.dz_dy : kNaN;
+        s.category[jj] = terrain ? ts.category : std::uint16_t{0};
+      }
+      line_geometry(g, frame, need_incidence, s);
+      in_swath += accumulate_line(ctx, g.samples, s, prof, line, local);
+      scatter_line_cells(scene, g, line, s, near_m, far_m, maps);
+    }
+#pragma omp critical(ris_slar_line_counts)
+    counts.add(local);
+  }
+  prof.samples_in_swath += in_swath;
+}
+
+}  // namespace
+
 SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeometryMaps& maps,
                                 const Sigma0Lut& lut, const SlarImagingParams& p,
                                 const std::string& radar_file) {
-  RIS_CHECK(fused_slar_applies(scene, g));
+  RIS_CHECK(fused_slar_image_applies(scene, g));
   RIS_CHECK(p.range.count > 0 && p.range.bin_m > 0.0);
   RIS_CHECK(p.azimuth_beamwidth_rad > 0.0);
-  const SlarLineEngine engine(scene, g, lut, p, radar_file);
   SlarLineProfiles prof;
   prof.allocate(g.lines, p.range.count);
   maps.mask.assign(scene.size(), 0);
   maps.local_incidence_deg.resize(scene.size());
-  const SceneMapsWindow out{
-      0, 0, scene.rows, scene.cols, maps.mask.data(), maps.local_incidence_deg.data()};
   SlarLineCounts counts;
-  engine.run(0, g.lines, SceneWindow::whole(scene), prof, out, counts);
+  if (g.direct_sampling) {
+    const SlarLineEngine engine(scene, g, lut, p, radar_file);
+    const SceneMapsWindow out{
+        0, 0, scene.rows, scene.cols, maps.mask.data(), maps.local_incidence_deg.data()};
+    engine.run(0, g.lines, SceneWindow::whole(scene), prof, out, counts);
+  } else {
+    run_oblique(scene, g, lut, p, radar_file, prof, maps, counts);
+  }
   g.nodata_samples = counts.nodata;
   g.shadow_samples = counts.shadow;
   g.back_facing_samples = counts.back_facing;

@@ -96,7 +96,7 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   const SlarGeometry layout = slar_geometry_layout(scene, sim.track, radar.azimuth_line_spacing_m);
   // SAR and point targets need the per-sample geometry: stage by stage.
   const bool fused = !options.keep_geometry && radar.mode == RadarMode::slar &&
-                     options.targets.empty() && fused_slar_applies(scene, layout);
+                     options.targets.empty() && fused_slar_image_applies(scene, layout);
   if (fused) {
     scene.validate("scene");
     check_terrain_below_sensor(scene, sim.track.altitude_m, radar.source_file);

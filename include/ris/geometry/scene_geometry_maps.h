@@ -16,12 +16,15 @@
 //   ris::SceneGeometryMaps m = ris::scene_geometry_maps(scene, geometry, img.range);
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "ris/geometry/slar_geometry.h"
 #include "ris/image/slar_image.h"
 #include "ris/scene/scene.h"
+#include "ris/util/units.h"
 
 namespace ris {
 
@@ -40,5 +43,43 @@ struct SceneGeometryMaps {
 
 SceneGeometryMaps scene_geometry_maps(const Scene& scene, const SlarGeometry& geometry,
                                       const SlantRangeBins& bins);
+
+// One cell's mask bits and local incidence (degrees, NaN when none) from the
+// geometry sample it takes: shared by scene_geometry_maps and the fused paths
+// (ris/sim/slar_line_blocks.h) so that they agree to the bit. far_m:
+// bins.far_m().
+inline void scene_map_cell(bool cell_valid, std::uint8_t sample_flags, float slant_range_m,
+                           float local_incidence_rad, double near_m, double far_m,
+                           std::uint8_t& mask, float& local_incidence_deg) {
+  std::uint8_t f = cell_valid ? 0 : scene_flag::kNoData;
+  const std::uint8_t sf = sample_flags;
+  if (sf & sample_flag::kNoData) f |= scene_flag::kNoData;
+  if (sf & sample_flag::kShadow) f |= scene_flag::kShadow;
+  if (sf & sample_flag::kLayover) f |= scene_flag::kLayover;
+  if (sf & sample_flag::kBackFacing) f |= scene_flag::kBackFacing;
+  const double R = slant_range_m;
+  const bool has_data = !(sf & (sample_flag::kNoData | sample_flag::kUnseen));
+  if ((sf & sample_flag::kUnseen) || (has_data && !(R >= near_m && R < far_m))) {
+    f |= scene_flag::kOutsideSwath;
+  }
+  local_incidence_deg = (has_data && !(f & scene_flag::kNoData))
+                            ? static_cast<float>(rad_to_deg(local_incidence_rad))
+                            : std::numeric_limits<float>::quiet_NaN();
+  mask = f;
+}
+
+// The (line, sample) a cell takes: the nearest line and sample to its centre
+// (false: none, the cell is outside the swath).
+inline bool scene_cell_sample(const Scene& scene, const SlarGeometry& g, int r, int c, int& line,
+                              int& sample) {
+  const auto [x, y] = scene.cell_centre(r, c);
+  const auto [s, u] = g.track.along_cross(x, y);
+  const double l = std::round(s / g.line_spacing_m - 0.5);
+  const double j = std::round((u - g.first_sample_u_m) / g.sample_step_m);
+  if (!(l >= 0 && l < g.lines && j >= 0 && j < g.samples)) return false;
+  line = static_cast<int>(l);
+  sample = static_cast<int>(j);
+  return true;
+}
 
 }  // namespace ris

@@ -28,6 +28,7 @@
 //   ris::greytones(speckled_power, grey, map, no_data_mask);
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -50,6 +51,20 @@ class GreytoneMap {
     return g >= 255.0 ? std::uint8_t{255} : static_cast<std::uint8_t>(g);
   }
 
+  // quantised() of a float power, without a logarithm: the greytone is the
+  // number of thresholds at or below p, where threshold k is the smallest
+  // float whose quantised() is k or more (found once, in the constructor, by
+  // bisection over the floats with quantised() itself, so the two agree on
+  // every float; tested). A branch-free binary search of 8 steps.
+  std::uint8_t quantised_fast(float power_w) const {
+    if (!table_) return quantised(power_w);
+    unsigned k = 0;
+    for (unsigned step = 128; step > 0; step >>= 1) {
+      k = power_w >= threshold_[k + step] ? k + step : k;
+    }
+    return static_cast<std::uint8_t>(k);
+  }
+
   double reference_power_w() const { return p_ref_w_; }
   double reference_greytone() const { return g_ref_; }
   double greytones_per_decade() const { return per_decade_; }  // 255 gamma / X
@@ -62,6 +77,10 @@ class GreytoneMap {
   double per_decade_;
   double film_offset_;
   double offset_;  // G_ref + film_offset - per_decade log10(P_ref)
+  // threshold_[k]: the smallest float power with quantised() >= k (k >= 1;
+  // +inf when none); threshold_[0] unused.
+  std::array<float, 256> threshold_{};
+  bool table_ = false;  // false: greytones do not grow with power (never in practice)
 };
 
 // Median of the valid pixels of `power_w` (see above); NaN when none is valid.

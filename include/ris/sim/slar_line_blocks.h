@@ -78,6 +78,11 @@ struct SlarLineCounts {
 // direct sampling with one line per row (track along y) or column.
 bool fused_slar_applies(const Scene& scene, const SlarGeometry& layout);
 
+// Whether form_slar_image_fused runs this layout: fused_slar_applies, or a
+// heading off the grid axes (bilinear sampling; in memory only: it is not a
+// SlarLineEngine, whose lines are cell rows or columns).
+bool fused_slar_image_applies(const Scene& scene, const SlarGeometry& layout);
+
 class SlarLineEngine {
  public:
   // scene: its grid (rows, cols, cell size, origin); its arrays are not read
@@ -111,8 +116,11 @@ class SlarLineEngine {
 
 // The whole fused run for an in-memory scene: fills `maps` (rows x cols),
 // sets layout's counts, returns the image as form_slar_image does (same
-// InputError for a swath that misses the scene). fused_slar_applies() must
-// hold; every category of a valid cell must be in lut.
+// InputError for a swath that misses the scene). fused_slar_image_applies()
+// must hold; every category of a valid cell must be in lut. Oblique tracks
+// (bilinear sampling) run line by line too, with the scene maps scattered per
+// line: the same bytes as the stage path (tested), with whole-scene slope
+// rasters (8 bytes per cell) but no per-sample geometry buffers.
 SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& layout, SceneGeometryMaps& maps,
                                 const Sigma0Lut& lut, const SlarImagingParams& params,
                                 const std::string& radar_file);
