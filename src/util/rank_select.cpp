@@ -1,19 +1,14 @@
 #include "ris/util/rank_select.h"
 
-#include <cstring>
-
 #include "ris/util/error.h"
+#include "ris/util/float_select.h"
 
 namespace ris {
 
 FloatRankSelect::FloatRankSelect() : top_(65536, 0) {}
 
 std::uint32_t FloatRankSelect::key(float v) {
-  std::uint32_t u = 0;
-  std::memcpy(&u, &v, sizeof u);
-  // Positive floats order as their bits with the sign bit set; negative ones
-  // in reverse, so flip all their bits.
-  return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+  return detail::float_order_key(v);
 }
 
 void FloatRankSelect::merge_counts(const FloatRankSelect& other) {
@@ -54,11 +49,7 @@ float FloatRankSelect::value(std::size_t i) const {
   std::uint32_t lo = 0;
   while (lo < 65536 && below + w.low[lo] <= w.rank) below += w.low[lo++];
   RIS_CHECK(lo < 65536);  // pass 2 saw the same values as pass 1
-  std::uint32_t k = (w.bucket << 16) | lo;
-  const std::uint32_t u = (k & 0x80000000u) ? (k & 0x7FFFFFFFu) : ~k;
-  float v = 0.0f;
-  std::memcpy(&v, &u, sizeof v);
-  return v;
+  return detail::float_from_order_key((w.bucket << 16) | lo);
 }
 
 }  // namespace ris

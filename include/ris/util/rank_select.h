@@ -8,7 +8,10 @@
 //
 // A streamed run (ris/sim/slar_stream.h) takes the median elevation (the
 // ground-range reference height) and the median mean power (the auto
-// greytone reference) this way, so they equal the in-memory medians.
+// greytone reference) this way, so they equal the in-memory medians, which
+// ris/util/float_select.h finds by the same method (same key encoding) over
+// an array in memory. This class is its form for values that arrive in
+// blocks and cannot be held.
 //
 // Example:
 //   ris::FloatRankSelect sel;
@@ -40,7 +43,7 @@ class FloatRankSelect {
   // After pass 2: the value at ranks[i].
   float value(std::size_t i) const;
 
-  // Order-preserving encoding of a float's bits (negative values flipped).
+  // Order-preserving encoding of a float's bits (detail::float_order_key).
   static std::uint32_t key(float v);
 
  private:
