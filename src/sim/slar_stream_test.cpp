@@ -43,6 +43,9 @@ RadarParams test_radar(const Scene& s, double heading_deg, bool auto_reference) 
   r = bench_radar(r, s, deg_to_rad(heading_deg));
   r.track.altitude_m = 600.0;  // steep enough for shadow over the relief
   r.track.near_edge_ground_m = 1500.0;
+  // Left-looking on the east-west tracks (lines are columns, cells counted
+  // the other way across).
+  if (heading_deg == 90.0 || heading_deg == 270.0) r.track.look_side = LookSide::left;
   r = bench_radar(r, s, deg_to_rad(heading_deg));
   r.reference.automatic = auto_reference;
   if (!auto_reference) {
@@ -71,7 +74,8 @@ void expect_same_folders(const fs::path& a, const fs::path& b, const std::string
 }
 
 // The test: streamed and in-memory runs give identical bytes, for
-// every axis-aligned heading (lines along rows or columns, either way), block
+// every axis-aligned heading (lines along rows or columns, either way; both
+// look sides), block
 // sizes that do and do not divide the line count, 1 and 2 threads, and both
 // greytone references (the auto one takes the streamed exact median).
 TEST(SlarStream, StreamedEqualsInMemoryByteForByte) {
