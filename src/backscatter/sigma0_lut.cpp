@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <exception>
+#include <vector>
 
 #include "ris/scene/scene.h"
 #include "ris/util/error.h"
@@ -18,6 +20,7 @@ Sigma0Lut Sigma0Lut::build(const Sigma0Source& source, const RadarBand& band,
     if (c != kNoDataCategory) max_category = std::max(max_category, c);
   }
   lut.offset_.assign(static_cast<size_t>(max_category) + 1, -1);
+  std::vector<std::uint16_t> order;  // tabulated categories, in first-seen order
   for (std::uint16_t c : categories) {
     if (c == kNoDataCategory || lut.offset_[c] >= 0) continue;
     if (!source.has_category(c)) {
@@ -26,18 +29,40 @@ Sigma0Lut Sigma0Lut::build(const Sigma0Source& source, const RadarBand& band,
                                    "the backscatter file)",
                                    c));
     }
-    lut.offset_[c] = static_cast<std::int64_t>(lut.table_.size());
-    for (int i = 0; i <= kSteps; ++i) {
-      const double theta = std::min(i * kStepRad, kPi / 2.0);
-      const double s0 = source.sigma0(c, theta, band);
-      if (!std::isfinite(s0) || s0 < 0.0) {
-        throw InputError(source_name, "",
-                         fmt::format("category {} gives sigma0 = {} at {:.2f} deg; expected a "
-                                     "finite value >= 0",
-                                     c, s0, rad_to_deg(theta)));
-      }
-      lut.table_.push_back(static_cast<float>(s0));
+    lut.offset_[c] = static_cast<std::int64_t>(order.size()) * (kSteps + 1);
+    order.push_back(c);
+    // The first evaluation, here in category order, is where a model checks
+    // the band (an InputError is thrown from this thread, as before).
+    (void)source.sigma0(c, 0.0, band);
+  }
+  // The samples in parallel (the models are const and thread-safe; a large
+  // scene's categories cost ~1 ms each on one thread), then checked in order.
+  const std::int64_t n = static_cast<std::int64_t>(order.size()) * (kSteps + 1);
+  std::vector<double> s0(static_cast<std::size_t>(n));
+  std::exception_ptr error;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const std::uint16_t c = order[static_cast<std::size_t>(k / (kSteps + 1))];
+    const double theta = std::min(static_cast<int>(k % (kSteps + 1)) * kStepRad, kPi / 2.0);
+    try {
+      s0[static_cast<std::size_t>(k)] = source.sigma0(c, theta, band);
+    } catch (...) {
+#pragma omp critical(ris_sigma0_lut_error)
+      if (!error) error = std::current_exception();
     }
+  }
+  if (error) std::rethrow_exception(error);
+  lut.table_.resize(s0.size());
+  for (std::size_t k = 0; k < s0.size(); ++k) {
+    if (!std::isfinite(s0[k]) || s0[k] < 0.0) {
+      const std::uint16_t c = order[k / (kSteps + 1)];
+      const double theta = std::min(static_cast<int>(k % (kSteps + 1)) * kStepRad, kPi / 2.0);
+      throw InputError(source_name, "",
+                       fmt::format("category {} gives sigma0 = {} at {:.2f} deg; expected a "
+                                   "finite value >= 0",
+                                   c, s0[k], rad_to_deg(theta)));
+    }
+    lut.table_[k] = static_cast<float>(s0[k]);
   }
   return lut;
 }

@@ -92,6 +92,16 @@ inline bool accumulate_element(const SlarElementContext& c, std::uint8_t f, floa
   std::uint8_t bits = slar_touch::kData;
   if (visible) bits |= slar_touch::kVisible;
   if (visible && (f & sample_flag::kLayover)) bits |= slar_touch::kLayover;
+  if (b0 == b1 && lo >= 0.0 && hi < bins) {
+    // The whole element in one bin (most elements: a cell's slant span is
+    // well under a bin): all its power and area go there, as the two halves'
+    // spread() below would put them, without their divisions and loops.
+    touch_row[b0] |= bits;
+    if (!visible) return in_swath;
+    acc[b0] += element_power_w(c, R, incidence_rad, local_incidence_rad, area_m2, category);
+    acc_area[b0] += double(area_m2);
+    return in_swath;
+  }
   for (int b = b0; b <= b1; ++b) touch_row[b] |= bits;
   if (!visible) return in_swath;
   const double power = element_power_w(c, R, incidence_rad, local_incidence_rad, area_m2, category);
