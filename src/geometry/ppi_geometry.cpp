@@ -110,16 +110,7 @@ PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar_in
   g.samples = std::max(1, static_cast<int>(std::ceil(std::min(u_far, u_corner) / g.sample_step_m)));
   g.track.altitude_m = H;
 
-  const std::size_t n = static_cast<std::size_t>(g.lines) * static_cast<std::size_t>(g.samples);
-  g.height_m.resize(n);
-  g.slant_range_m.resize(n);
-  g.incidence_rad.resize(n);
-  g.local_incidence_rad.resize(n);
-  g.area_m2.resize(n);
-  g.range_near_end_m.resize(n);
-  g.range_far_end_m.resize(n);
-  g.category.resize(n);
-  g.flags.resize(n);
+  g.allocate_samples();
 
   const SurfaceGradient grad = surface_gradient(scene);
   // Rays are independent: one per iteration, scratch per thread.
@@ -176,20 +167,7 @@ PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar_in
     }
   }
 
-  std::int64_t nodata = 0, shadow = 0, back = 0, layover = 0;
-#pragma omp parallel for reduction(+ : nodata, shadow, back, layover) schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t f = g.flags[i];
-    nodata += (f & sample_flag::kNoData) ? 1 : 0;
-    shadow += (f & sample_flag::kShadow) ? 1 : 0;
-    back += (f & sample_flag::kBackFacing) ? 1 : 0;
-    layover += (f & sample_flag::kLayover) ? 1 : 0;
-  }
-  g.nodata_samples = nodata;
-  g.shadow_samples = shadow;
-  g.back_facing_samples = back;
-  g.layover_samples = layover;
-  g.nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));
+  g.tally_flags(scene);
   return pg;
 }
 

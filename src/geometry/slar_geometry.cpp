@@ -202,6 +202,37 @@ SlarGeometry slar_geometry_layout(const Scene& scene, const Track& track, double
   return g;
 }
 
+void SlarGeometry::allocate_samples() {
+  const std::size_t n = static_cast<std::size_t>(lines) * static_cast<std::size_t>(samples);
+  height_m.resize(n);
+  slant_range_m.resize(n);
+  incidence_rad.resize(n);
+  local_incidence_rad.resize(n);
+  area_m2.resize(n);
+  range_near_end_m.resize(n);
+  range_far_end_m.resize(n);
+  category.resize(n);
+  flags.resize(n);
+}
+
+void SlarGeometry::tally_flags(const Scene& scene) {
+  const std::size_t n = flags.size();
+  std::int64_t nodata = 0, shadow = 0, back = 0, layover = 0;
+#pragma omp parallel for reduction(+ : nodata, shadow, back, layover) schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t f = flags[i];
+    nodata += (f & sample_flag::kNoData) ? 1 : 0;
+    shadow += (f & sample_flag::kShadow) ? 1 : 0;
+    back += (f & sample_flag::kBackFacing) ? 1 : 0;
+    layover += (f & sample_flag::kLayover) ? 1 : 0;
+  }
+  nodata_samples = nodata;
+  shadow_samples = shadow;
+  back_facing_samples = back;
+  layover_samples = layover;
+  nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));
+}
+
 SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, double line_spacing_m,
                                    const std::string& radar_file) {
   scene.validate("scene");
@@ -225,16 +256,7 @@ SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, doubl
     bilinear.step_m = g.sample_step_m;
   }
 
-  const std::size_t n = static_cast<std::size_t>(g.lines) * static_cast<std::size_t>(g.samples);
-  g.height_m.resize(n);
-  g.slant_range_m.resize(n);
-  g.incidence_rad.resize(n);
-  g.local_incidence_rad.resize(n);
-  g.area_m2.resize(n);
-  g.range_near_end_m.resize(n);
-  g.range_far_end_m.resize(n);
-  g.category.resize(n);
-  g.flags.resize(n);
+  g.allocate_samples();
 
   // Lines are independent: one line per iteration, samplers copied per
   // thread (they hold only the current line's position), scratch per thread.
@@ -250,20 +272,7 @@ SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, doubl
     }
   }
 
-  std::int64_t nodata = 0, shadow = 0, back = 0, layover = 0;
-#pragma omp parallel for reduction(+ : nodata, shadow, back, layover) schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t f = g.flags[i];
-    nodata += (f & sample_flag::kNoData) ? 1 : 0;
-    shadow += (f & sample_flag::kShadow) ? 1 : 0;
-    back += (f & sample_flag::kBackFacing) ? 1 : 0;
-    layover += (f & sample_flag::kLayover) ? 1 : 0;
-  }
-  g.nodata_samples = nodata;
-  g.shadow_samples = shadow;
-  g.back_facing_samples = back;
-  g.layover_samples = layover;
-  g.nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));
+  g.tally_flags(scene);
   return g;
 }
 

@@ -78,6 +78,11 @@ struct SlarGeometry {
   }
   double line_s_m(int line) const { return (line + 0.5) * line_spacing_m; }
   double sample_u_m(int sample) const { return first_sample_u_m + sample * sample_step_m; }
+
+  // Sizes the per-sample arrays for lines x samples (SLAR lines and PPI rays).
+  void allocate_samples();
+  // Sets the *_samples counts from the flags and nodata_cells from the scene.
+  void tally_flags(const Scene& scene);
 };
 
 // Throws InputError naming radar_file and key "altitude" when valid terrain
