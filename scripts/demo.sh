@@ -4,6 +4,7 @@ set -euo pipefail
 build_dir=${1:-build}
 ris="$build_dir/ris"
 out=out
+data="$(cd "$(dirname "$0")/../data" && pwd)"
 mkdir -p "$out"
 "$ris" --version
 
@@ -17,5 +18,13 @@ mkdir -p "$out"
 # seed's shadow map and metadata.json, all in $out.
 "$ris" simulate --out "$out"
 
+# The other modes on the same scene (docs/modes.md): a coherent SAR with
+# three corner reflectors (their measured impulse responses are printed and
+# in $out/sar/metadata.json) and a ground PPI radar on a 30 m mast.
+"$ris" simulate --quiet --radar "$data/radars/sar-x-band-stripmap.toml" \
+  --targets "$data/targets/corner-reflectors.toml" --out "$out/sar"
+"$ris" simulate --quiet --radar "$data/radars/ppi-ground-mast-30m.toml" --out "$out/ppi"
+
 echo "ris: demo outputs are in $(cd "$out" && pwd)"
 echo "ris:   SLAR images: $out/slant_range.png, $out/ground_range.png; shadow map: $out/shadowmap.txt"
+echo "ris:   SAR: $out/sar/slant_range.png; PPI scope: $out/ppi/ppi_scope.png"
