@@ -15,6 +15,16 @@
 
 namespace ris::detail {
 
+// max(0, floor(lo)) and min(bins - 1, floor(hi)) for lo < bins and hi >= 0
+// (the callers return before otherwise), by truncation: the same integers
+// without std::floor, which is a ~20-instruction sequence without SSE4.1.
+inline int first_bin(double lo) {
+  return lo > 0.0 ? static_cast<int>(lo) : 0;
+}
+inline int last_bin(double hi, int bins) {
+  return hi < bins ? static_cast<int>(hi) : bins - 1;
+}
+
 // Adds `power` spread uniformly over the bin-coordinate interval between x0
 // and x1 (either order) to acc; the part outside [0, bins) is lost. A
 // zero-length interval puts everything into its bin.
@@ -22,8 +32,7 @@ inline void spread(double* acc, double* acc_area, double x0, double x1, double p
                    int bins) {
   const double lo = std::min(x0, x1), hi = std::max(x0, x1);
   if (hi < 0.0 || lo >= bins) return;
-  const int b0 = std::max(0, static_cast<int>(std::floor(lo)));
-  const int b1 = std::min(bins - 1, static_cast<int>(std::floor(hi)));
+  const int b0 = first_bin(lo), b1 = last_bin(hi, bins);
   const double width = hi - lo;
   if (b0 == b1 && width <= 0.0) {
     acc[b0] += power;
@@ -87,8 +96,7 @@ inline bool accumulate_element(const SlarElementContext& c, std::uint8_t f, floa
   const double lo = (std::min({r_a, r_b, R}) - c.near_m) * c.inv_dr;
   const double hi = (std::max({r_a, r_b, R}) - c.near_m) * c.inv_dr;
   if (hi < 0.0 || lo >= bins) return in_swath;
-  const int b0 = std::max(0, static_cast<int>(std::floor(lo)));
-  const int b1 = std::min(bins - 1, static_cast<int>(std::floor(hi)));
+  const int b0 = first_bin(lo), b1 = last_bin(hi, bins);
   std::uint8_t bits = slar_touch::kData;
   if (visible) bits |= slar_touch::kVisible;
   if (visible && (f & sample_flag::kLayover)) bits |= slar_touch::kLayover;

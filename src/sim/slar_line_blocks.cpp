@@ -378,7 +378,32 @@ void scatter_line_cells(const Scene& scene, const SlarGeometry& g, int line, con
   const int outer_n = by_rows ? scene.rows : scene.cols;
   const int inner_n = by_rows ? scene.cols : scene.rows;
   const double step = by_rows ? ds_dc : ds_dr;
-  for (int o = 0; o < outer_n; ++o) {
+  // The outer range where the band meets the grid: the band's inner
+  // coordinate moves linearly with o (rate per outer step); a margin of two
+  // covers rounding, and each candidate cell is checked exactly below.
+  const auto band_at = [&](int o, double& ia, double& ib) {
+    const int r0 = by_rows ? o : 0, c0 = by_rows ? 0 : o;
+    const auto [x0, y0] = scene.cell_centre(r0, c0);
+    const double s0 = t.along_cross(x0, y0).first;
+    ia = (s_lo - s0) / step;
+    ib = (s_hi - s0) / step;
+  };
+  double a0 = 0.0, b0 = 0.0, a1 = 0.0, b1 = 0.0;
+  band_at(0, a0, b0);
+  band_at(1, a1, b1);
+  const double rate = a1 - a0;  // inner cells per outer step
+  const double lo0 = std::min(a0, b0) - 2.0, hi0 = std::max(a0, b0) + 2.0;
+  double first = 0.0, last = outer_n;
+  if (rate > 0.0) {
+    first = std::floor(-hi0 / rate) - 2.0;
+    last = std::ceil((inner_n - lo0) / rate) + 2.0;
+  } else if (rate < 0.0) {
+    first = std::floor((inner_n - lo0) / rate) - 2.0;
+    last = std::ceil(-hi0 / rate) + 2.0;
+  }
+  const int o_begin = static_cast<int>(std::clamp(first, 0.0, double(outer_n)));
+  const int o_end = static_cast<int>(std::clamp(last, 0.0, double(outer_n)));
+  for (int o = o_begin; o < o_end; ++o) {
     const int r0 = by_rows ? o : 0, c0 = by_rows ? 0 : o;
     const auto [x0, y0] = scene.cell_centre(r0, c0);
     const double s0 = t.along_cross(x0, y0).first;
