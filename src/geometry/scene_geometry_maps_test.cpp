@@ -42,3 +42,20 @@ TEST(SceneGeometryMaps, FlagsAndLocalIncidenceLandOnTheirCells) {
 
 }  // namespace
 }  // namespace ris
+
+namespace ris {
+namespace {
+
+TEST(SceneGeometryMaps, RoundHalfAwayIsStdRound) {
+  for (double x : {0.0, 0.3, -0.3, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 0.49999999999999994,
+                   -0.49999999999999994, 1e12 + 0.5, -1e12 - 0.5, 4503599627370495.5}) {
+    EXPECT_EQ(round_half_away(x), std::round(x)) << x;
+  }
+  for (int i = -100000; i <= 100000; ++i) {
+    const double x = i * 0.0137 + 1e-3 * std::sin(i);
+    ASSERT_EQ(round_half_away(x), std::round(x)) << x;
+  }
+}
+
+}  // namespace
+}  // namespace ris

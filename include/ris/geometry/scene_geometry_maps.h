@@ -68,14 +68,26 @@ inline void scene_map_cell(bool cell_valid, std::uint8_t sample_flags, float sla
   mask = f;
 }
 
+// std::round (half away from zero) for |x| < 2^62, inline: without SSE4.1
+// std::round is a library call, and the fused oblique path rounds twice per
+// cell. Exact: the truncation and x - trunc(x) are exact in double.
+inline double round_half_away(double x) {
+  const auto t = static_cast<double>(static_cast<std::int64_t>(x));
+  const double d = x - t;
+  return t + (d >= 0.5 ? 1.0 : 0.0) - (d <= -0.5 ? 1.0 : 0.0);
+}
+
 // The (line, sample) a cell takes: the nearest line and sample to its centre
 // (false: none, the cell is outside the swath).
 inline bool scene_cell_sample(const Scene& scene, const SlarGeometry& g, int r, int c, int& line,
                               int& sample) {
   const auto [x, y] = scene.cell_centre(r, c);
   const auto [s, u] = g.track.along_cross(x, y);
-  const double l = std::round(s / g.line_spacing_m - 0.5);
-  const double j = std::round((u - g.first_sample_u_m) / g.sample_step_m);
+  const double lf = s / g.line_spacing_m - 0.5, jf = (u - g.first_sample_u_m) / g.sample_step_m;
+  // Far outside the grid (or NaN): no line or sample, before any conversion.
+  if (!(std::abs(lf) < 1e15 && std::abs(jf) < 1e15)) return false;
+  const double l = round_half_away(lf);
+  const double j = round_half_away(jf);
   if (!(l >= 0 && l < g.lines && j >= 0 && j < g.samples)) return false;
   line = static_cast<int>(l);
   sample = static_cast<int>(j);
