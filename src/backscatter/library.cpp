@@ -79,6 +79,14 @@ class LibrarySource final : public Sigma0Source {
     return m.sigma0(incidence_rad, band);
   }
 
+  // The model resolved (and its band checked, under the mutex) once per
+  // curve, not per angle.
+  void sigma0_curve(std::uint16_t category, const double* incidence_rad, std::size_t n,
+                    const RadarBand& band, double* out) const override {
+    const BackscatterModel& m = resolve(category, band);
+    for (std::size_t i = 0; i < n; ++i) out[i] = m.sigma0(incidence_rad[i], band);
+  }
+
   std::string category_name(std::uint16_t category) const override {
     auto it = index_.find(category);
     return it == index_.end() ? std::to_string(category) : categories_[it->second].name;

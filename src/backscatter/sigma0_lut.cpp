@@ -35,17 +35,24 @@ Sigma0Lut Sigma0Lut::build(const Sigma0Source& source, const RadarBand& band,
     // the band (an InputError is thrown from this thread, as before).
     (void)source.sigma0(c, 0.0, band);
   }
-  // The samples in parallel (the models are const and thread-safe; a large
-  // scene's categories cost ~1 ms each on one thread), then checked in order.
-  const std::int64_t n = static_cast<std::int64_t>(order.size()) * (kSteps + 1);
-  std::vector<double> s0(static_cast<std::size_t>(n));
+  // The samples in parallel, in blocks of angles of one category (the models
+  // are const and thread-safe; a large scene's categories cost ~1 ms each on
+  // one thread), then checked in order.
+  constexpr int kBlock = 512;
+  const int blocks_per_category = (kSteps + 1 + kBlock - 1) / kBlock;
+  const int n_blocks = static_cast<int>(order.size()) * blocks_per_category;
+  std::vector<double> s0(order.size() * (kSteps + 1));
   std::exception_ptr error;
-#pragma omp parallel for schedule(static)
-  for (std::int64_t k = 0; k < n; ++k) {
-    const std::uint16_t c = order[static_cast<std::size_t>(k / (kSteps + 1))];
-    const double theta = std::min(static_cast<int>(k % (kSteps + 1)) * kStepRad, kPi / 2.0);
+#pragma omp parallel for schedule(dynamic)
+  for (int b = 0; b < n_blocks; ++b) {
+    const std::size_t ci = static_cast<std::size_t>(b / blocks_per_category);
+    const int i0 = (b % blocks_per_category) * kBlock;
+    const int i1 = std::min(kSteps + 1, i0 + kBlock);
+    double theta[kBlock];
+    for (int i = i0; i < i1; ++i) theta[i - i0] = std::min(i * kStepRad, kPi / 2.0);
     try {
-      s0[static_cast<std::size_t>(k)] = source.sigma0(c, theta, band);
+      source.sigma0_curve(order[ci], theta, static_cast<std::size_t>(i1 - i0), band,
+                          s0.data() + ci * (kSteps + 1) + static_cast<std::size_t>(i0));
     } catch (...) {
 #pragma omp critical(ris_sigma0_lut_error)
       if (!error) error = std::current_exception();

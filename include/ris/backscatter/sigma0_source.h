@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -50,6 +51,15 @@ class Sigma0Source {
   // A = ... over oh1992 ..."), for metadata. Default: description().
   virtual std::string category_model(std::uint16_t, const RadarBand&) const {
     return description();
+  }
+
+  // Added for the LUT build (backward compatible: the default calls sigma0()
+  // per angle). sigma0 of one category at many angles, out[i] at
+  // incidence_rad[i]; a source may look the category's model up once for the
+  // whole curve instead of once per angle. Same values as sigma0().
+  virtual void sigma0_curve(std::uint16_t category, const double* incidence_rad, std::size_t n,
+                            const RadarBand& band, double* out) const {
+    for (std::size_t i = 0; i < n; ++i) out[i] = sigma0(category, incidence_rad[i], band);
   }
 };
 
