@@ -52,6 +52,14 @@ GreytoneMap::GreytoneMap(const RadarParams& radar, double p_ref_w, double g_ref)
     }
     threshold_[k] = as_float(hi);
   }
+  // Each bucket's first float by the thresholds (a binary search of 8 steps).
+  bucket_.assign((kInfBits >> 16) + 1, 0);
+  for (std::uint32_t b = 0; b < bucket_.size(); ++b) {
+    const float p = as_float(b << 16);
+    unsigned k = 0;
+    for (unsigned step = 128; step > 0; step >>= 1) k = p >= threshold_[k + step] ? k + step : k;
+    bucket_[b] = static_cast<std::uint8_t>(k);
+  }
 }
 
 namespace {

@@ -107,6 +107,26 @@ TEST(Speckle, SameBytesForAnyThreadCount) {
   omp_set_num_threads(saved);
 }
 
+// apply_fading sets its per-bin constants up once; each pixel is still
+// exactly fading_factor of its (seed, line, bin), N < 1 included.
+TEST(Speckle, RasterIsThePixelFadingFactor) {
+  const int lines = 7, bins = 5;
+  const std::vector<double> looks = {0.6, 1.0, 1.05, 3.0, 17.5};
+  for (FadingLaw law : {FadingLaw::exact_gamma, FadingLaw::seed_eq21}) {
+    std::vector<float> p(static_cast<std::size_t>(lines * bins), 2.0f);
+    apply_fading(p, lines, bins, looks, law, 42);
+    for (int l = 0; l < lines; ++l) {
+      for (int b = 0; b < bins; ++b) {
+        const double y =
+            fading_factor(law, looks[static_cast<std::size_t>(b)], 42,
+                          static_cast<std::uint32_t>(l), static_cast<std::uint32_t>(b));
+        EXPECT_EQ(p[static_cast<std::size_t>(l * bins + b)], static_cast<float>(2.0 * y))
+            << l << " " << b;
+      }
+    }
+  }
+}
+
 TEST(Speckle, NoDataAndShadowAreLeftAlone) {
   std::vector<float> img = {NAN, 0.0f, 1.0f, -1.0f};
   const std::vector<double> n(4, 1.0);

@@ -49,29 +49,39 @@ inline constexpr double kSeedFadingFloor = 0.01;
 
 // Gamma(shape, 1) by Marsaglia and Tsang (2000); shape > 0. The normals come
 // from the ziggurat (ris/util/ziggurat_normal.h) and the acceptance test's
-// uniform from one 32-bit word: usually one Philox block per variate.
-inline double gamma_variate(CounterRng& rng, double shape) {
-  const ZigguratTables& zig = ziggurat_tables();
-  double boost = 1.0;
-  if (shape < 1.0) {
+// uniform from one 32-bit word: usually one Philox block per variate. The
+// shape's constants are set up once (apply_fading: once per range bin).
+class GammaSampler {
+ public:
+  explicit GammaSampler(double shape) : shape_(shape) {
+    if (shape < 1.0) shape += 1.0;  // boosted below: Gamma(a) = Gamma(a + 1) U^(1/a)
+    d_ = shape - 1.0 / 3.0;
+    c_ = 1.0 / std::sqrt(9.0 * d_);
+  }
+  double operator()(CounterRng& rng, const ZigguratTables& zig) const {
+    double boost = 1.0;
     // Gamma(a) = Gamma(a + 1) U^(1/a) (Marsaglia and Tsang, section 6).
-    boost = std::pow(rng.uniform(), 1.0 / shape);
-    shape += 1.0;
+    if (shape_ < 1.0) boost = std::pow(rng.uniform(), 1.0 / shape_);
+    for (;;) {
+      double x = 0.0, v = 0.0;
+      do {
+        x = ziggurat_normal(rng, zig);
+        v = 1.0 + c_ * x;
+      } while (v <= 0.0);
+      v = v * v * v;
+      const double u = rng.uniform32();
+      const double x2 = x * x;
+      if (u < 1.0 - 0.0331 * x2 * x2) return boost * d_ * v;
+      if (std::log(u) < 0.5 * x2 + d_ * (1.0 - v + std::log(v))) return boost * d_ * v;
+    }
   }
-  const double d = shape - 1.0 / 3.0;
-  const double c = 1.0 / std::sqrt(9.0 * d);
-  for (;;) {
-    double x = 0.0, v = 0.0;
-    do {
-      x = ziggurat_normal(rng, zig);
-      v = 1.0 + c * x;
-    } while (v <= 0.0);
-    v = v * v * v;
-    const double u = rng.uniform32();
-    const double x2 = x * x;
-    if (u < 1.0 - 0.0331 * x2 * x2) return boost * d * v;
-    if (std::log(u) < 0.5 * x2 + d * (1.0 - v + std::log(v))) return boost * d * v;
-  }
+
+ private:
+  double shape_, d_ = 0.0, c_ = 0.0;
+};
+
+inline double gamma_variate(CounterRng& rng, double shape) {
+  return GammaSampler(shape)(rng, ziggurat_tables());
 }
 
 // The fading factor Y of one pixel (see above); looks = N > 0.
