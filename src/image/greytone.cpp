@@ -72,12 +72,10 @@ double median_valid_power_w(std::span<const float> power_w, std::span<const std:
   RIS_CHECK(no_data.empty() || no_data.size() == power_w.size());
   // A parallel radix select (ris/util/float_select.h), not a sorted copy.
   const auto keep = [&](std::size_t i) { return valid_pixel(power_w[i], no_data, i); };
-  const std::size_t n = count_kept(power_w.size(), keep);
-  if (n == 0) return std::numeric_limits<double>::quiet_NaN();
-  const std::size_t mid = n / 2;
-  const double upper = *kth_smallest_float(power_w, mid, keep);
-  if (n % 2 == 1) return upper;
-  const double lower = *kth_smallest_float(power_w, mid - 1, keep);
+  const auto m = median_pair_float(power_w, keep);
+  if (!m) return std::numeric_limits<double>::quiet_NaN();
+  const double lower = m->first, upper = m->second;  // equal for an odd count
+  if (lower == upper) return upper;
   return 0.5 * (lower + upper);
 }
 

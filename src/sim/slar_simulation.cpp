@@ -32,8 +32,8 @@ double median_valid_elevation(const Scene& scene) {
   const auto keep = [&](std::size_t i) {
     return scene.valid[i] && std::isfinite(scene.elevation_m[i]);
   };
-  const std::size_t n = count_kept(scene.size(), keep);
-  return n ? *kth_smallest_float(scene.elevation_m, n / 2, keep) : 0.0;
+  const auto m = median_pair_float(scene.elevation_m, keep);
+  return m ? m->second : 0.0;
 }
 
 // A SAR resolution finer than the scene's sampling cannot show more detail

@@ -55,6 +55,33 @@ TEST(FloatSelect, MatchesNthElement) {
   omp_set_num_threads(saved);
 }
 
+// The two medians in two passes: the same as nth_element at (n - 1) / 2 and
+// n / 2, for odd and even counts, ties across and within buckets.
+TEST(FloatSelect, MedianPairMatchesNthElement) {
+  std::mt19937 gen(9);
+  std::normal_distribution<float> normal(100.0f, 50.0f);
+  for (int n : {1, 2, 3, 4, 10, 1001, 200000, 200001}) {
+    std::vector<float> v(static_cast<std::size_t>(n));
+    for (std::size_t i = 0; i < v.size(); ++i)
+      v[i] = (i % 3 == 0) ? std::round(normal(gen)) : normal(gen);
+    if (n == 4) v = {1.0f, 1.0f + 1e-6f, 1.0f, 7e3f};
+    const auto keep = [&](std::size_t i) { return i % 7 != 5; };
+    std::vector<float> ref;
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (keep(i)) ref.push_back(v[i]);
+    const std::size_t lo = (ref.size() - 1) / 2, hi = ref.size() / 2;
+    std::vector<float> a = ref, b = ref;
+    std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(lo), a.end());
+    std::nth_element(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(hi), b.end());
+    const auto m = median_pair_float(v, keep);
+    ASSERT_TRUE(m.has_value());
+    EXPECT_EQ(m->first, a[lo]) << n;
+    EXPECT_EQ(m->second, b[hi]) << n;
+  }
+  const std::vector<float> none = {1.0f};
+  EXPECT_FALSE(median_pair_float(none, [](std::size_t) { return false; }).has_value());
+}
+
 TEST(FloatSelect, OrderKeysSortAsTheFloats) {
   const std::vector<float> sorted = {-std::numeric_limits<float>::infinity(),
                                      -1e30f,
