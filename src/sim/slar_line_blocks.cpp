@@ -89,7 +89,8 @@ void gather_row(const SceneWindow& in, int scene_rows, int r, double dx_m, doubl
     h[c] = ok ? zc : kNaN;
     gx[c] = ok ? sx : kNaN;
     gy[c] = ok ? sy : kNaN;
-    cg[c] = ok ? cat[c] : std::uint16_t{0};
+    const std::uint16_t k = cat[c];  // loaded unconditionally: no control flow
+    cg[c] = ok ? k : std::uint16_t{0};
     fl[c] = ok ? std::uint8_t{0} : sample_flag::kNoData;
   };
   if (cols == 1) {

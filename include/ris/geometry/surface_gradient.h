@@ -33,11 +33,11 @@ SurfaceGradient surface_gradient(const Scene& scene);
 // so both paths get the same floats.
 inline float slope_difference(bool lo_ok, float z_lo, bool hi_ok, float z_hi, float z_c,
                               double step_m) {
-  const double num = (lo_ok && hi_ok) ? double(z_hi) - double(z_lo)
-                     : hi_ok          ? double(z_hi) - double(z_c)
-                     : lo_ok          ? double(z_c) - double(z_lo)
-                                      : 0.0;
-  const double den = (lo_ok && hi_ok) ? 2.0 * step_m : step_m;
+  // Bitwise, not short-circuit, logic: no control flow.
+  const double a = hi_ok ? double(z_hi) : double(z_c);
+  const double b = lo_ok ? double(z_lo) : double(z_c);
+  const double num = (lo_ok | hi_ok) ? a - b : 0.0;
+  const double den = (lo_ok & hi_ok) ? 2.0 * step_m : step_m;
   return static_cast<float>(num / den);
 }
 
