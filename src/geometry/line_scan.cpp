@@ -15,12 +15,23 @@ constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
 
 namespace {
 
+// An AVX2 clone beside the SSE2 default, chosen at load time (GCC function
+// multiversioning; the build stays portable, no -march). Without FMA the
+// vector operations round as the scalar ones do, so both clones give the same
+// bytes on any CPU.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define RIS_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define RIS_VECTOR_CLONES
+#endif
+
 // look_line's loops, with restrict-qualified parameters: the arrays never
 // alias, which lets them vectorise without run-time overlap checks.
-void look_kernel(int n, float H, float lx, float ly, float element, const float* __restrict u_m,
-                 const float* __restrict height, const float* __restrict gx,
-                 const float* __restrict gy, float* __restrict range, float* __restrict local,
-                 float* __restrict area, float* __restrict dh_du) {
+RIS_VECTOR_CLONES void look_kernel(int n, float H, float lx, float ly, float element,
+                                   const float* __restrict u_m, const float* __restrict height,
+                                   const float* __restrict gx, const float* __restrict gy,
+                                   float* __restrict range, float* __restrict local,
+                                   float* __restrict area, float* __restrict dh_du) {
   for (int j = 0; j < n; ++j) {
     const float u = u_m[j];
     const float D = H - height[j];
@@ -57,8 +68,8 @@ void back_facing_kernel(int n, float H, const float* __restrict u_m, const float
 
 // The look angle from nadir atan2(u, D) = atan(u / D): D > 0 (terrain below
 // the sensor is checked before).
-void incidence_kernel(int n, float H, const float* __restrict u_m, const float* __restrict height,
-                      float* __restrict inc) {
+RIS_VECTOR_CLONES void incidence_kernel(int n, float H, const float* __restrict u_m,
+                                        const float* __restrict height, float* __restrict inc) {
   for (int j = 0; j < n; ++j) inc[j] = fast_atan(u_m[j] / (H - height[j]));
 }
 
@@ -92,10 +103,12 @@ inline void element_ends_at(int j, bool has, bool has_lo, bool has_hi, float u, 
 
 // Samples [1, n - 1), whose two neighbours exist: no branches, so that it
 // vectorises.
-void element_ends_interior(int n, double first_u, double step, float H, float half_step,
-                           const float* __restrict h, const float* __restrict dh_du,
-                           const std::uint8_t* __restrict flags, float* __restrict near_end,
-                           float* __restrict far_end) {
+RIS_VECTOR_CLONES void element_ends_interior(int n, double first_u, double step, float H,
+                                             float half_step, const float* __restrict h,
+                                             const float* __restrict dh_du,
+                                             const std::uint8_t* __restrict flags,
+                                             float* __restrict near_end,
+                                             float* __restrict far_end) {
   for (int j = 1; j < n - 1; ++j) {
     element_ends_at(j, !(flags[j] & kSkip), !(flags[j - 1] & kSkip), !(flags[j + 1] & kSkip),
                     static_cast<float>(first_u + j * step), h[j - 1], h[j], h[j + 1], dh_du[j], H,
