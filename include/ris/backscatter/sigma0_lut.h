@@ -2,8 +2,11 @@
 //
 // Built once from a Sigma0Source for one band; lookups are branch-light,
 // allocation-free and inline, for the per-sample hot loop. Samples are spaced
-// kStepRad (0.01 deg) apart from 0 to 90 deg and interpolated linearly, which
-// keeps the relative error far below 0.1% for smooth models.
+// kStepRad (0.05 deg) apart from 0 to 90 deg and interpolated linearly: the
+// error is h^2 f'' / 8, at most 1.3e-4 relative for the shipped libraries'
+// models between 1 and 85 deg (tested below 1e-3), and building the table
+// (one model evaluation per angle and category, a fixed cost of every run)
+// is 5 times cheaper than at 0.01 deg.
 //
 // Example:
 //   ris::Sigma0Lut lut = ris::Sigma0Lut::build(source, band, scene_categories, "crops.toml");
@@ -23,7 +26,7 @@ namespace ris {
 
 class Sigma0Lut {
  public:
-  static constexpr int kSteps = 9000;  // intervals over [0, pi/2]
+  static constexpr int kSteps = 1800;  // intervals over [0, pi/2]: 0.05 deg
   static constexpr double kStepRad = (kPi / 2.0) / kSteps;
 
   Sigma0Lut() = default;
