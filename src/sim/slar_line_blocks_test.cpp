@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "ris/perf/bench_setup.h"
@@ -23,16 +24,8 @@ bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
-// A fractal scene with a no-data hole, a no-data edge strip and a tower.
 Scene test_scene() {
-  Scene s = make_bench_scene(60, 90, 10.0, 11);
-  for (int r = 20; r < 26; ++r)
-    for (int c = 40; c < 47; ++c) s.valid[s.index(r, c)] = 0;
-  for (int r = 0; r < s.rows; ++r) s.valid[s.index(r, 0)] = 0;
-  // A tower, so every look direction sees shadow and layover.
-  for (int r = 28; r < 33; ++r)
-    for (int c = 60; c < 65; ++c) s.elevation_m[s.index(r, c)] = 150.0f;
-  return s;
+  return test::rugged_test_scene();
 }
 
 void expect_same(const SlarSimulation& ref, const SlarSimulation& fused, const std::string& what) {
@@ -55,15 +48,16 @@ void expect_same(const SlarSimulation& ref, const SlarSimulation& fused, const s
   EXPECT_GT(fused.geometry.shadow_samples, 0) << what << ": the test scene casts shadow";
 }
 
-// The fused per-line path gives the same bytes as geometry + image formation
-// + scene maps run one after another, for every axis-aligned heading and both
-// look sides, with no-data cells, an elevation pattern and 1 or 2 threads.
-TEST(SlarLineBlocks, FusedEqualsReferenceStagesByteForByte) {
+// Runs the stage path (keep_geometry) and the fused path for each heading,
+// both look sides and 1 and 2 threads, and expects the same bytes; the
+// heading `pattern_heading_deg` also gets a Gaussian elevation pattern.
+void expect_fused_equals_stages(const std::vector<double>& headings_deg,
+                                double pattern_heading_deg) {
   const Scene s = test_scene();
   const test::CosineSigma0Source src({1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
   const RadarParams base = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
   const int saved = omp_get_max_threads();
-  for (double heading_deg : {0.0, 90.0, 180.0, 270.0}) {
+  for (double heading_deg : headings_deg) {
     for (LookSide side : {LookSide::right, LookSide::left}) {
       for (int threads : {1, 2}) {
         RadarParams r = bench_radar(base, s, deg_to_rad(heading_deg));
@@ -71,43 +65,7 @@ TEST(SlarLineBlocks, FusedEqualsReferenceStagesByteForByte) {
         r.track.altitude_m = 600.0;  // steep enough for shadow over 30 m of relief
         r.track.near_edge_ground_m = 1500.0;
         r = bench_radar(r, s, deg_to_rad(heading_deg));
-        if (heading_deg == 90.0) {
-          r.elevation_pattern.kind = ElevationPattern::Kind::gaussian;
-          r.elevation_pattern.beamwidth_rad = deg_to_rad(30.0);
-          r.elevation_pattern.boresight_rad = deg_to_rad(65.0);
-        }
-        omp_set_num_threads(threads);
-        SlarOptions keep;
-        keep.keep_geometry = true;
-        const SlarSimulation ref = simulate_slar(s, r, src, keep);
-        const SlarSimulation fused = simulate_slar(s, r, src);
-        expect_same(ref, fused,
-                    fmt::format("heading {} side {} threads {}", heading_deg,
-                                side == LookSide::right ? "right" : "left", threads));
-      }
-    }
-  }
-  omp_set_num_threads(saved);
-}
-
-// Oblique tracks (bilinear sampling at half a cell): the fused path, line by
-// line with the scene maps scattered per line, gives the same bytes as the
-// stages, for headings in every quadrant, both look sides, no-data cells, an
-// elevation pattern and 1 or 2 threads.
-TEST(SlarLineBlocks, FusedObliqueEqualsReferenceStagesByteForByte) {
-  const Scene s = test_scene();
-  const test::CosineSigma0Source src({1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
-  const RadarParams base = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
-  const int saved = omp_get_max_threads();
-  for (double heading_deg : {30.0, 100.0, 225.0, 318.0}) {
-    for (LookSide side : {LookSide::right, LookSide::left}) {
-      for (int threads : {1, 2}) {
-        RadarParams r = bench_radar(base, s, deg_to_rad(heading_deg));
-        r.track.look_side = side;
-        r.track.altitude_m = 600.0;
-        r.track.near_edge_ground_m = 1500.0;
-        r = bench_radar(r, s, deg_to_rad(heading_deg));
-        if (heading_deg == 100.0) {
+        if (heading_deg == pattern_heading_deg) {
           r.elevation_pattern.kind = ElevationPattern::Kind::gaussian;
           r.elevation_pattern.beamwidth_rad = deg_to_rad(30.0);
           r.elevation_pattern.boresight_rad = deg_to_rad(65.0);
@@ -126,6 +84,20 @@ TEST(SlarLineBlocks, FusedObliqueEqualsReferenceStagesByteForByte) {
     }
   }
   omp_set_num_threads(saved);
+}
+
+// The fused per-line path gives the same bytes as geometry + image formation
+// + scene maps run one after another, for every axis-aligned heading and both
+// look sides, with no-data cells, an elevation pattern and 1 or 2 threads.
+TEST(SlarLineBlocks, FusedEqualsReferenceStagesByteForByte) {
+  expect_fused_equals_stages({0.0, 90.0, 180.0, 270.0}, 90.0);
+}
+
+// Oblique tracks (bilinear sampling at half a cell): the fused path, line by
+// line with the scene maps scattered per line, gives the same bytes as the
+// stages, for headings in every quadrant.
+TEST(SlarLineBlocks, FusedObliqueEqualsReferenceStagesByteForByte) {
+  expect_fused_equals_stages({30.0, 100.0, 225.0, 318.0}, 100.0);
 }
 
 TEST(SlarLineBlocks, AppliesOnlyToOneLinePerCellAlongAnAxis) {

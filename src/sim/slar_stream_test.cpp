@@ -25,12 +25,7 @@ namespace fs = std::filesystem;
 // A fractal scene with a no-data hole, a no-data edge strip, a tower (shadow
 // and layover) and two categories.
 Scene test_scene() {
-  Scene s = make_bench_scene(60, 90, 10.0, 11);
-  for (int r = 20; r < 26; ++r)
-    for (int c = 40; c < 47; ++c) s.valid[s.index(r, c)] = 0;
-  for (int r = 0; r < s.rows; ++r) s.valid[s.index(r, 0)] = 0;
-  for (int r = 28; r < 33; ++r)
-    for (int c = 60; c < 65; ++c) s.elevation_m[s.index(r, c)] = 150.0f;
+  Scene s = test::rugged_test_scene();
   for (int r = 40; r < 60; ++r)
     for (int c = 10; c < 50; ++c) s.category[s.index(r, c)] = 3;
   for (std::size_t i = 0; i < s.size(); ++i)
