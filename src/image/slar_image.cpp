@@ -29,6 +29,27 @@ TwoWayGainTable::TwoWayGainTable(const std::function<double(double)>& relative_g
   }
 }
 
+void SlarLineAccumulator::apply_range_window(double window_bins) {
+  const int bins = static_cast<int>(acc.size());
+  cum[0] = cum_area[0] = 0.0;
+  for (std::size_t b = 0; b < acc.size(); ++b) {
+    cum[b + 1] = cum[b] + acc[b];
+    cum_area[b + 1] = cum_area[b] + acc_area[b];
+  }
+  const auto integral = [bins](const std::vector<double>& c, double x) {
+    const double y = std::clamp(x, 0.0, double(bins));
+    const int i = std::min(static_cast<int>(y), bins - 1);
+    const std::size_t ii = static_cast<std::size_t>(i);
+    return c[ii] + (y - i) * (c[ii + 1] - c[ii]);
+  };
+  const double half_w = 0.5 * window_bins;
+  for (int b = 0; b < bins; ++b) {
+    const double lo = b + 0.5 - half_w, hi = b + 0.5 + half_w;
+    acc[static_cast<std::size_t>(b)] = integral(cum, hi) - integral(cum, lo);
+    acc_area[static_cast<std::size_t>(b)] = integral(cum_area, hi) - integral(cum_area, lo);
+  }
+}
+
 void SlarLineProfiles::allocate(int lines_, int bins_, int first_line) {
   line0 = first_line;
   lines = lines_;
@@ -104,8 +125,6 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
   {
     // Per-thread scratch, allocated once.
     SlarLineAccumulator scratch(bins);
-    std::vector<double> cum_range(range_window ? static_cast<std::size_t>(bins) + 1 : 0);
-    std::vector<double> cum_range_area(cum_range.size());
 #pragma omp for schedule(dynamic, 8)
     for (int line = 0; line < g.lines; ++line) {
       std::fill(scratch.acc.begin(), scratch.acc.end(), 0.0);
@@ -140,29 +159,7 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
         if (!(pos >= 0.0 && pos < bins)) continue;
         scratch.acc[static_cast<std::size_t>(pos)] += power;
       }
-      // SAR: a range resolution cell other than the bin integrates the
-      // bin-wise profile over [centre - W/2, centre + W/2] (bin units).
-      if (range_window) {
-        cum_range[0] = cum_range_area[0] = 0.0;
-        for (std::size_t b = 0; b < static_cast<std::size_t>(bins); ++b) {
-          cum_range[b + 1] = cum_range[b] + scratch.acc[b];
-          cum_range_area[b + 1] = cum_range_area[b] + scratch.acc_area[b];
-        }
-        const auto integral = [bins](const std::vector<double>& c, double x) {
-          const double y = std::clamp(x, 0.0, double(bins));
-          const int i = std::min(static_cast<int>(y), bins - 1);
-          const std::size_t ii = static_cast<std::size_t>(i);
-          return c[ii] + (y - i) * (c[ii + 1] - c[ii]);
-        };
-        const double half_w = 0.5 * p.range_window_bins;
-        for (int b = 0; b < bins; ++b) {
-          const double a = b + 0.5 - half_w, e = b + 0.5 + half_w;
-          scratch.acc[static_cast<std::size_t>(b)] =
-              integral(cum_range, e) - integral(cum_range, a);
-          scratch.acc_area[static_cast<std::size_t>(b)] =
-              integral(cum_range_area, e) - integral(cum_range_area, a);
-        }
-      }
+      if (range_window) scratch.apply_range_window(p.range_window_bins);
       for (int b = 0; b < bins; ++b) {
         const std::size_t bb = static_cast<std::size_t>(b);
         prof.power_w[row + bb] = static_cast<float>(scratch.acc[bb]);

@@ -183,7 +183,8 @@ void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_
 // into its range profile row; counts into `counts`. Returns the number of
 // elements whose centre falls in a bin.
 std::int64_t accumulate_line(const detail::SlarElementContext& ctx, int samples, LineScratch& s,
-                             SlarLineProfiles& prof, int line, SlarLineCounts& counts) {
+                             SlarLineProfiles& prof, int line, SlarLineCounts& counts,
+                             double range_window_bins) {
   constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
   std::int64_t in_swath = 0;
   std::fill(s.acc.acc.begin(), s.acc.acc.end(), 0.0);
@@ -204,6 +205,7 @@ std::int64_t accumulate_line(const detail::SlarElementContext& ctx, int samples,
         s.area[jj], s.category[jj], prof.touch.data() + row, prof.mapped_count.data() + row,
         prof.visible_count.data() + row, s.acc.acc.data(), s.acc.acc_area.data());
   }
+  if (range_window_bins > 0.0) s.acc.apply_range_window(range_window_bins);
   for (int b = 0; b < prof.bins; ++b) {
     const std::size_t bb = static_cast<std::size_t>(b);
     prof.power_w[row + bb] = static_cast<float>(s.acc.acc[bb]);
@@ -334,7 +336,7 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
         }
 
       line_geometry(g, frame, need_incidence, s);
-      in_swath += accumulate_line(ctx, samples, s, prof, line, local);
+      in_swath += accumulate_line(ctx, samples, s, prof, line, local, params_.range_window_bins);
 
       // The scene-grid maps (scene_geometry_maps: each cell is its own
       // sample here).
@@ -471,7 +473,7 @@ void run_oblique(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut
         s.category[jj] = terrain ? ts.category : std::uint16_t{0};
       }
       line_geometry(g, frame, need_incidence, s);
-      in_swath += accumulate_line(ctx, g.samples, s, prof, line, local);
+      in_swath += accumulate_line(ctx, g.samples, s, prof, line, local, p.range_window_bins);
       scatter_line_cells(scene, g, line, s, near_m, far_m, maps);
     }
 #pragma omp critical(ris_slar_line_counts)

@@ -51,8 +51,8 @@ void expect_same(const SlarSimulation& ref, const SlarSimulation& fused, const s
 // Runs the stage path (keep_geometry) and the fused path for each heading,
 // both look sides and 1 and 2 threads, and expects the same bytes; the
 // heading `pattern_heading_deg` also gets a Gaussian elevation pattern.
-void expect_fused_equals_stages(const std::vector<double>& headings_deg,
-                                double pattern_heading_deg) {
+void expect_fused_equals_stages(const std::vector<double>& headings_deg, double pattern_heading_deg,
+                                bool sar = false) {
   const Scene s = test_scene();
   const test::CosineSigma0Source src({1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
   const RadarParams base = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
@@ -69,6 +69,14 @@ void expect_fused_equals_stages(const std::vector<double>& headings_deg,
           r.elevation_pattern.kind = ElevationPattern::Kind::gaussian;
           r.elevation_pattern.beamwidth_rad = deg_to_rad(30.0);
           r.elevation_pattern.boresight_rad = deg_to_rad(65.0);
+        }
+        if (sar) {  // incoherent SAR: range and azimuth windows, noise
+          r.mode = RadarMode::sar;
+          r.sar.range_resolution_m = 2.5 * r.range_bin_m;
+          r.sar.azimuth_resolution_m = 14.0;
+          r.sar.range_looks = 1;
+          r.sar.azimuth_looks = 2;
+          r.sar.nesz = 1e-3;
         }
         omp_set_num_threads(threads);
         SlarOptions keep;
@@ -98,6 +106,12 @@ TEST(SlarLineBlocks, FusedEqualsReferenceStagesByteForByte) {
 // stages, for headings in every quadrant.
 TEST(SlarLineBlocks, FusedObliqueEqualsReferenceStagesByteForByte) {
   expect_fused_equals_stages({30.0, 100.0, 225.0, 318.0}, 100.0);
+}
+
+// The incoherent SAR (constant azimuth window, range window wider than the
+// bins, NESZ noise) takes the fused path too, with the same bytes.
+TEST(SlarLineBlocks, FusedSarEqualsReferenceStagesByteForByte) {
+  expect_fused_equals_stages({0.0, 30.0, 270.0}, -1.0, true);
 }
 
 TEST(SlarLineBlocks, AppliesOnlyToOneLinePerCellAlongAnAxis) {

@@ -94,9 +94,13 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   // the same bytes without whole-scene geometry buffers) unless the caller
   // wants the per-sample geometry.
   const SlarGeometry layout = slar_geometry_layout(scene, sim.track, radar.azimuth_line_spacing_m);
-  // SAR and point targets need the per-sample geometry: stage by stage.
-  const bool fused = !options.keep_geometry && radar.mode == RadarMode::slar &&
-                     options.targets.empty() && fused_slar_image_applies(scene, layout);
+  // The fused path forms SLAR and incoherent SAR images (range and azimuth
+  // windows); the coherent SAR needs every element's power, point targets
+  // the per-sample geometry.
+  const bool fused_mode =
+      radar.mode == RadarMode::slar || (radar.mode == RadarMode::sar && !radar.sar.coherent);
+  const bool fused = !options.keep_geometry && fused_mode && options.targets.empty() &&
+                     fused_slar_image_applies(scene, layout);
   if (fused) {
     scene.validate("scene");
     check_terrain_below_sensor(scene, sim.track.altitude_m, radar.source_file);

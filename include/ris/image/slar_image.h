@@ -184,8 +184,16 @@ class TwoWayGainTable {
 // once per thread).
 struct SlarLineAccumulator {
   std::vector<double> acc, acc_area;
+  std::vector<double> cum, cum_area;  // range-window running sums (bins + 1)
   explicit SlarLineAccumulator(int bins)
-      : acc(static_cast<std::size_t>(bins)), acc_area(static_cast<std::size_t>(bins)) {}
+      : acc(static_cast<std::size_t>(bins)),
+        acc_area(static_cast<std::size_t>(bins)),
+        cum(static_cast<std::size_t>(bins) + 1),
+        cum_area(static_cast<std::size_t>(bins) + 1) {}
+  // SAR (SlarImagingParams::range_window_bins > 0): replaces the line's
+  // bin-wise profile by its integral over [centre - W/2, centre + W/2] (bin
+  // units) around each bin centre, the range resolution cell.
+  void apply_range_window(double window_bins);
 };
 
 // The azimuth step of form_slar_image: integrates the profiles over each
