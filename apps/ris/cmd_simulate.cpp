@@ -109,19 +109,6 @@ void run_slar(const SimulateArgs& a, const Scene& scene, const RadarParams& rada
     irfs = measure_point_targets(sim, pictures, coherent);
     extra["point_targets"] = point_target_irf_json(irfs, sim, a.targets, coherent);
   }
-  if (!sim.warnings.empty()) extra["warnings"] = sim.warnings;
-  if (radar.mode == RadarMode::sar) {
-    extra["sar"] = {
-        {"coherent", coherent},
-        {"impulse_response",
-         coherent ? fmt::format("sinc(0.886 x / rho), truncated at {} null spacings each side",
-                                kSincSupportNulls)
-                  : std::string("box of the multilooked resolution")},
-        {"noise_power_w_first_last_bin",
-         sim.noise_power_w.empty()
-             ? nlohmann::json(nullptr)
-             : nlohmann::json({sim.noise_power_w.front(), sim.noise_power_w.back()})}};
-  }
   stage("writing products", 0.95);
   write_slar_products(a.out, scene, sim, pictures, info, extra);
   stage("done", 1.0);
@@ -189,6 +176,7 @@ void run_streamed(const SimulateArgs& a, std::chrono::steady_clock::time_point t
   o.block_lines = a.block_lines;
   o.quiet = a.quiet;
   const SlarStreamSummary s = simulate_slar_streamed(a.scene, radar, *sigma0, info, a.out, o);
+  for (const std::string& w : s.sim.warnings) spdlog::warn("{}", w);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const SlarGeometry& g = s.sim.geometry;

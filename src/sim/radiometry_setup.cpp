@@ -1,5 +1,6 @@
 #include "ris/sim/radiometry_setup.h"
 
+#include "ris/image/thermal_noise.h"
 #include "ris/sensor/elevation_gain.h"
 
 namespace ris {
@@ -75,6 +76,20 @@ std::pair<bool, bool> apply_switch_corrections(SlarImage& img, const SwitchedRad
     }
   }
   return {range, area};
+}
+
+void set_sar_windows(const RadarParams& radar, double line_spacing_m, SlarImagingParams& imaging) {
+  if (radar.mode != RadarMode::sar) return;
+  imaging.azimuth_window_lines = radar.sar.azimuth_resolution_looks_m() / line_spacing_m;
+  imaging.range_window_bins = radar.sar.range_resolution_looks_m() / imaging.range.bin_m;
+}
+
+std::vector<double> sar_noise_power_w(const RadarParams& radar, const SlarImagingParams& imaging,
+                                      double altitude_m) {
+  if (radar.mode != RadarMode::sar || !radar.sar.nesz) return {};
+  return thermal_noise_power_w(imaging, *radar.sar.nesz, altitude_m,
+                               radar.sar.azimuth_resolution_looks_m(),
+                               radar.sar.range_resolution_looks_m());
 }
 
 }  // namespace ris

@@ -13,6 +13,7 @@
 #include "ris/scene/geo_frame.h"
 #include "ris/sensor/radar_json.h"
 #include "ris/sim/run_metadata.h"
+#include "ris/sim/sar_coherent.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -147,6 +148,19 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
   const GroundRangeGrid& gr = sim.ground_grid;
   const auto [looks_min, looks_max] = std::minmax_element(pic.looks.begin(), pic.looks.end());
   json out = run_header_json(sim.radar.mode == RadarMode::sar ? "sar" : "slar");
+  if (!sim.warnings.empty()) out["warnings"] = sim.warnings;
+  if (sim.radar.mode == RadarMode::sar) {
+    const bool coherent = sim.radar.sar.coherent;
+    out["sar"] = {
+        {"coherent", coherent},
+        {"impulse_response",
+         coherent ? fmt::format("sinc(0.886 x / rho), truncated at {} null spacings each side",
+                                kSincSupportNulls)
+                  : std::string("box of the multilooked resolution")},
+        {"noise_power_w_first_last_bin",
+         sim.noise_power_w.empty() ? json(nullptr)
+                                   : json({sim.noise_power_w.front(), sim.noise_power_w.back()})}};
+  }
   out["inputs"] = run_inputs_json({scene, h_min, h_max, g.nodata_cells}, sim.radar, sim.categories,
                                   sim.category_names, sim.backscatter_description, info);
   out.update(json{

@@ -36,11 +36,14 @@ double median_valid_elevation(const Scene& scene) {
   return m ? m->second : 0.0;
 }
 
+}  // namespace
+
 // A SAR resolution finer than the scene's sampling cannot show more detail
 // than the scene holds; say what the image will look like instead.
 std::vector<std::string> sar_resolution_warnings(const Scene& scene, const SlarGeometry& g,
                                                  const RadarParams& radar) {
   std::vector<std::string> out;
+  if (radar.mode != RadarMode::sar) return out;
   const double az_m = radar.sar.azimuth_resolution_m;
   if (az_m < g.line_spacing_m) {
     out.push_back(fmt::format(
@@ -73,8 +76,6 @@ std::vector<std::string> sar_resolution_warnings(const Scene& scene, const SlarG
   }
   return out;
 }
-
-}  // namespace
 
 SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
                              const Sigma0Source& sigma0, const SlarOptions& options) {
@@ -121,12 +122,8 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   SlarImagingParams& imaging = rs.imaging;
 
   report(options, "image formation", 0.4);
-  if (radar.mode == RadarMode::sar) {
-    imaging.azimuth_window_lines =
-        radar.sar.azimuth_resolution_looks_m() / sim.geometry.line_spacing_m;
-    imaging.range_window_bins = radar.sar.range_resolution_looks_m() / imaging.range.bin_m;
-    sim.warnings = sar_resolution_warnings(scene, sim.geometry, radar);
-  }
+  set_sar_windows(radar, sim.geometry.line_spacing_m, imaging);
+  sim.warnings = sar_resolution_warnings(scene, sim.geometry, radar);
   check_point_targets_on_scene(options.targets, scene);
   if (fused) {
     report(options, "geometry + image formation + scene maps (fused)", 0.4);
@@ -142,12 +139,8 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   std::tie(sim.range_corrected, sim.area_corrected) = apply_switch_corrections(sim.image, rs.terms);
 
   // SAR thermal noise: NESZ over the multilooked resolution cell.
-  if (radar.mode == RadarMode::sar && radar.sar.nesz) {
-    sim.noise_power_w = thermal_noise_power_w(imaging, *radar.sar.nesz, sim.geometry.altitude_m,
-                                              radar.sar.azimuth_resolution_looks_m(),
-                                              radar.sar.range_resolution_looks_m());
-    add_noise_power(sim.image, sim.noise_power_w);
-  }
+  sim.noise_power_w = sar_noise_power_w(radar, imaging, sim.geometry.altitude_m);
+  if (!sim.noise_power_w.empty()) add_noise_power(sim.image, sim.noise_power_w);
 
   // Products on the scene grid and the ground-range grid.
   if (!fused) {

@@ -20,6 +20,7 @@
 #include "ris/image/shadow_map.h"
 #include "ris/image/slar_azimuth_integrator.h"
 #include "ris/image/speckle.h"
+#include "ris/image/thermal_noise.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/gdal_util.h"
 #include "ris/io/geotiff_block_writer.h"
@@ -165,10 +166,10 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
       info.backscatter_path.empty() ? sigma0.description() : info.backscatter_path;
 
   // What the stream runs: SLAR along a grid axis (the fused engine).
-  if (radar.mode != RadarMode::slar) {
+  if (!(radar.mode == RadarMode::slar || (radar.mode == RadarMode::sar && !radar.sar.coherent))) {
     throw InputError(radar.source_file, "mode",
-                     "a streamed run simulates SLAR only; SAR and PPI need the scene in memory "
-                     "(run without --stream on a scene that fits)");
+                     "a streamed run simulates SLAR and the incoherent SAR; the coherent SAR and "
+                     "PPI need the scene in memory (run without --stream on a scene that fits)");
   }
   sim.track = resolve_track(radar.track, grid, radar.source_file);
   const SlarGeometry layout = slar_geometry_layout(grid, sim.track, radar.azimuth_line_spacing_m);
@@ -221,7 +222,11 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
   sim.categories = rs.categories;
   sim.category_names = rs.category_names;
   sim.backscatter_description = rs.backscatter_description;
-  const SlarImagingParams& imaging = rs.imaging;
+  SlarImagingParams& imaging = rs.imaging;
+  // SAR: its windows, warnings and thermal noise, as simulate_slar.
+  set_sar_windows(radar, layout.line_spacing_m, imaging);
+  sim.warnings = sar_resolution_warnings(grid, layout, radar);
+  sim.noise_power_w = sar_noise_power_w(radar, imaging, layout.altitude_m);
   RIS_CHECK(imaging.range.count == bins && bins > 0);
   const std::uint64_t n_elev = ss.elevation.total();
   ss.elevation.select(median_ranks(n_elev, false));
@@ -294,6 +299,7 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
       mask.resize(np);
       az.emit(n, block.mean_power_w.data(), block.area_m2.data(), mask.data());
       std::tie(sim.range_corrected, sim.area_corrected) = apply_switch_corrections(block, rs.terms);
+      if (!sim.noise_power_w.empty()) add_noise_power(block, sim.noise_power_w);
       mean.swap(block.mean_power_w);
       for (std::size_t i = 0; i < np; ++i) {
         if (valid_power(mean[i], mask[i])) power.count(mean[i]);

@@ -48,6 +48,16 @@ RadiometrySetup prepare_radiometry(const std::vector<std::uint16_t>& categories,
                                    const RadarDerived& derived, const Sigma0Source& sigma0,
                                    const std::string& backscatter_file);
 
+// SAR (mode sar): the constant azimuth window (L_a rho_a over the line
+// spacing) and the range window (L_r rho_r over the bin) of the multilooked
+// resolution cell (MODEL.md section 3); nothing for other modes.
+void set_sar_windows(const RadarParams& radar, double line_spacing_m, SlarImagingParams& imaging);
+
+// SAR thermal noise per range bin, NESZ over the multilooked resolution
+// cell (ris/image/thermal_noise.h); empty without NESZ or for other modes.
+std::vector<double> sar_noise_power_w(const RadarParams& radar, const SlarImagingParams& imaging,
+                                      double altitude_m);
+
 // The range and area switches, applied per pixel after image formation;
 // returns whether each was applied.
 std::pair<bool, bool> apply_switch_corrections(SlarImage& image, const SwitchedRadarTerms& terms);

@@ -90,6 +90,12 @@ struct SlarSimulation {
 
 // Throws InputError for bad input (terrain at or above the sensor, a swath
 // that misses the scene, a category without backscatter, ...).
+// SAR: warnings when the resolution is finer than the scene holds (azimuth
+// below the line spacing, ground range below the cells), each saying what the
+// image will look like instead; empty otherwise. `scene`: its grid only.
+std::vector<std::string> sar_resolution_warnings(const Scene& scene, const SlarGeometry& geometry,
+                                                 const RadarParams& radar);
+
 SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar,
                              const Sigma0Source& sigma0, const SlarOptions& options = {});
 
