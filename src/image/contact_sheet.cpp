@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "image/cairo_handles.h"
 #include "ris/io/atomic_file.h"
 #include "ris/util/error.h"
 
@@ -50,18 +51,8 @@ ContactSheetLayout contact_sheet_layout(const std::vector<ContactPanel>& panels,
 
 namespace {
 
-struct Surface {
-  cairo_surface_t* s = nullptr;
-  ~Surface() {
-    if (s != nullptr) cairo_surface_destroy(s);
-  }
-};
-struct Context {
-  cairo_t* c = nullptr;
-  ~Context() {
-    if (c != nullptr) cairo_destroy(c);
-  }
-};
+using Surface = detail::CairoSurface;
+using Context = detail::CairoContext;
 
 void centred_text(cairo_t* cr, double cx, double baseline_y, const std::string& s) {
   cairo_text_extents_t e;

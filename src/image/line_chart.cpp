@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "image/cairo_handles.h"
 #include "ris/io/atomic_file.h"
 #include "ris/util/error.h"
 
@@ -30,18 +31,8 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
 
 namespace {
 
-struct Surface {
-  cairo_surface_t* s = nullptr;
-  ~Surface() {
-    if (s != nullptr) cairo_surface_destroy(s);
-  }
-};
-struct Context {
-  cairo_t* c = nullptr;
-  ~Context() {
-    if (c != nullptr) cairo_destroy(c);
-  }
-};
+using Surface = detail::CairoSurface;
+using Context = detail::CairoContext;
 
 void font(cairo_t* cr, double size, bool bold = false) {
   cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,

@@ -141,16 +141,7 @@ TargetGrid plan_warp(GDALDatasetH src, const std::array<double, 6>& src_gt,
   }
   // Outline of the DEM in its own CRS (all four corners, for rotated grids).
   const int cols = GDALGetRasterXSize(src), rows = GDALGetRasterYSize(src);
-  double sx0 = 1e300, sy0 = 1e300, sx1 = -1e300, sy1 = -1e300;
-  for (const auto& [c, r] :
-       {std::pair{0, 0}, std::pair{cols, 0}, std::pair{0, rows}, std::pair{cols, rows}}) {
-    const double x = src_gt[0] + c * src_gt[1] + r * src_gt[2];
-    const double y = src_gt[3] + c * src_gt[4] + r * src_gt[5];
-    sx0 = std::min(sx0, x);
-    sx1 = std::max(sx1, x);
-    sy0 = std::min(sy0, y);
-    sy1 = std::max(sy1, y);
-  }
+  const auto [sx0, sy0, sx1, sy1] = raster_outline(src_gt, cols, rows);
   std::unique_ptr<OGRCoordinateTransformation> ct(
       OGRCreateCoordinateTransformation(&src_srs, &target_srs));
   std::array<double, 4> e{};

@@ -6,8 +6,10 @@
 #include <ogr_spatialref.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include "ris/util/error.h"
@@ -47,6 +49,20 @@ GdalDataset open_raster(const std::string& path) {
     throw InputError(path, "", "the raster is empty (no bands or no pixels)");
   }
   return GdalDataset(ds);
+}
+
+std::array<double, 4> raster_outline(const std::array<double, 6>& gt, int cols, int rows) {
+  std::array<double, 4> b{1e300, 1e300, -1e300, -1e300};
+  for (const auto& [c, r] :
+       {std::pair{0, 0}, std::pair{cols, 0}, std::pair{0, rows}, std::pair{cols, rows}}) {
+    const double x = gt[0] + c * gt[1] + r * gt[2];
+    const double y = gt[3] + c * gt[4] + r * gt[5];
+    b[0] = std::min(b[0], x);
+    b[1] = std::min(b[1], y);
+    b[2] = std::max(b[2], x);
+    b[3] = std::max(b[3], y);
+  }
+  return b;
 }
 
 std::string wkt_of(const OGRSpatialReference& srs) {

@@ -209,16 +209,7 @@ LandCoverStats apply_landcover(Scene& scene, const fs::path& landcover_path,
 
   // Overlap: the land cover's outline in the scene CRS against the scene.
   const int cols = GDALGetRasterXSize(handle(ds)), rows = GDALGetRasterYSize(handle(ds));
-  double sx0 = 1e300, sy0 = 1e300, sx1 = -1e300, sy1 = -1e300;
-  for (const auto& [c, r] :
-       {std::pair{0, 0}, std::pair{cols, 0}, std::pair{0, rows}, std::pair{cols, rows}}) {
-    const double x = gt[0] + c * gt[1] + r * gt[2];
-    const double y = gt[3] + c * gt[4] + r * gt[5];
-    sx0 = std::min(sx0, x);
-    sx1 = std::max(sx1, x);
-    sy0 = std::min(sy0, y);
-    sy1 = std::max(sy1, y);
-  }
+  const auto [sx0, sy0, sx1, sy1] = raster_outline(gt, cols, rows);
   std::unique_ptr<OGRCoordinateTransformation> ct(
       OGRCreateCoordinateTransformation(&lc_srs, &scene_srs));
   std::array<double, 4> e{};

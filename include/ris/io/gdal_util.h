@@ -4,6 +4,7 @@
 
 #include <gdal.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -32,6 +33,11 @@ GdalDataset open_raster(const std::string& path);
 
 // The last GDAL error message, or "unknown GDAL error".
 std::string last_gdal_error();
+
+// The axis-aligned bounds {x0, y0, x1, y1}, in its own CRS, of a raster of
+// cols x rows under the geotransform gt: all four corners, so rotated grids
+// are covered too.
+std::array<double, 4> raster_outline(const std::array<double, 6>& gt, int cols, int rows);
 
 // WKT2 of a CRS, for GDAL options and scene files.
 std::string wkt_of(const OGRSpatialReference& srs);
