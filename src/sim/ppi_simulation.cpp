@@ -79,28 +79,24 @@ PpiSimulation simulate_ppi(const Scene& scene, const RadarParams& radar_in,
   sim.radar = radar_in;
   RadarParams& radar = sim.radar;
   sim.derived = derive(radar);
-  const std::string backscatter_file =
-      options.backscatter_file.empty() ? sigma0.description() : options.backscatter_file;
+  const std::string backscatter_file = options.backscatter_name(sigma0);
   if (std::count(scene.valid.begin(), scene.valid.end(), 1) == 0) {
     throw InputError("scene", "", "the scene has no cell with data");
   }
-  const auto report = [&](std::string_view stage, double f) {
-    if (options.progress) options.progress(stage, f);
-  };
 
   // Rays (geometry, slope and shadow per ray).
-  report("geometry", 0.0);
+  options.report("geometry", 0.0);
   sim.geometry = compute_ppi_geometry(scene, radar);
   const PpiGeometry& pg = sim.geometry;
 
-  report("backscatter", 0.3);
+  options.report("backscatter", 0.3);
   RadiometrySetup rs = prepare_radiometry(scene, radar, sim.derived, sigma0, backscatter_file);
   sim.categories = rs.categories;
   sim.category_names = rs.category_names;
   sim.backscatter_description = rs.backscatter_description;
 
   // B-scope over the padded rays, smeared over the beamwidth, then cropped.
-  report("image formation", 0.4);
+  options.report("image formation", 0.4);
   check_point_targets_on_scene(options.targets, scene);
   sim.point_returns = point_returns_on_rays(options.targets, scene, pg, sim.hidden_targets);
   SlarImagingParams& imaging = rs.imaging;

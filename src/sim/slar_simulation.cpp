@@ -22,10 +22,6 @@ namespace ris {
 
 namespace {
 
-void report(const SlarOptions& o, std::string_view stage, double fraction) {
-  if (o.progress) o.progress(stage, fraction);
-}
-
 // The median of the cells with data (the upper one of an even count, as
 // nth_element at n / 2), by a parallel radix select (ris/util/float_select.h).
 double median_valid_elevation(const Scene& scene) {
@@ -83,8 +79,7 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   sim.radar = radar_in;
   RadarParams& radar = sim.radar;
   sim.derived = derive(radar);
-  const std::string backscatter_file =
-      options.backscatter_file.empty() ? sigma0.description() : options.backscatter_file;
+  const std::string backscatter_file = options.backscatter_name(sigma0);
   if (std::count(scene.valid.begin(), scene.valid.end(), 1) == 0) {
     throw InputError("scene", "", "the scene has no cell with data");
   }
@@ -107,26 +102,26 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
     check_terrain_below_sensor(scene, sim.track.altitude_m, radar.source_file);
     sim.geometry = layout;
   } else {
-    report(options, "geometry", 0.0);
+    options.report("geometry", 0.0);
     sim.geometry =
         compute_slar_geometry(scene, sim.track, radar.azimuth_line_spacing_m, radar.source_file);
   }
 
   // sigma0 for every category the scene uses (and the reference's), the
   // switched-off factors at their reference values.
-  report(options, "backscatter", 0.3);
+  options.report("backscatter", 0.3);
   RadiometrySetup rs = prepare_radiometry(scene, radar, sim.derived, sigma0, backscatter_file);
   sim.categories = rs.categories;
   sim.category_names = rs.category_names;
   sim.backscatter_description = rs.backscatter_description;
   SlarImagingParams& imaging = rs.imaging;
 
-  report(options, "image formation", 0.4);
+  options.report("image formation", 0.4);
   set_sar_windows(radar, sim.geometry.line_spacing_m, imaging);
   sim.warnings = sar_resolution_warnings(scene, sim.geometry, radar);
   check_point_targets_on_scene(options.targets, scene);
   if (fused) {
-    report(options, "geometry + image formation + scene maps (fused)", 0.4);
+    options.report("geometry + image formation + scene maps (fused)", 0.4);
     sim.image = form_slar_image_fused(scene, sim.geometry, sim.scene_maps, rs.lut, imaging,
                                       radar.source_file);
   } else {
@@ -144,10 +139,10 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
 
   // Products on the scene grid and the ground-range grid.
   if (!fused) {
-    report(options, "scene maps", 0.8);
+    options.report("scene maps", 0.8);
     sim.scene_maps = scene_geometry_maps(scene, sim.geometry, sim.image.range);
   }
-  report(options, "ground-range grid", 0.9);
+  options.report("ground-range grid", 0.9);
   const double h_ref =
       options.reference_height_m ? *options.reference_height_m : median_valid_elevation(scene);
   sim.ground_grid =

@@ -62,6 +62,16 @@ struct SlarOptions {
   // Point scatterers added to the scene (ris/sim/point_target.h); checked to
   // lie on the scene.
   std::vector<PointTarget> targets;
+
+  // The backscatter source's name for messages: backscatter_file, or the
+  // source's own description.
+  std::string backscatter_name(const Sigma0Source& sigma0) const {
+    return backscatter_file.empty() ? sigma0.description() : backscatter_file;
+  }
+  // Reports a stage to `progress`, when set.
+  void report(std::string_view stage, double fraction) const {
+    if (progress) progress(stage, fraction);
+  }
 };
 
 struct SlarSimulation {
