@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "radar_test_util.h"
 #include "ris/sensor/elevation_gain.h"
 #include "ris/sensor/radar_derived.h"
 #include "ris/sensor/radar_json.h"
@@ -16,14 +17,14 @@
 namespace ris {
 namespace {
 
+using test::replace;
+const auto parse = test::parse_radar;
+const auto expect_input_error = test::expect_radar_error;
+
 constexpr double kFt = kFeetToMetres;
 
 std::string radar_file(const std::string& name) {
   return std::string(RIS_DATA_DIR) + "/radars/" + name;
-}
-
-RadarParams parse(const std::string& text) {
-  return radar_from_toml(toml::parse(text), "r.toml");
 }
 
 // A minimal valid radar; tests append or replace lines.
@@ -39,25 +40,6 @@ azimuth_beamwidth = "1 mrad"
 altitude = "5000 m"
 near_edge_distance = "10 km"
 )";
-
-// Expects an InputError naming r.toml and a key containing `key`.
-void expect_input_error(const std::string& text, const std::string& key) {
-  try {
-    parse(text);
-    ADD_FAILURE() << "no InputError for key " << key << " in:\n" << text;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), "r.toml");
-    const std::string where = e.key() + " " + e.what();
-    EXPECT_NE(where.find(key), std::string::npos) << "error was: " << where;
-  }
-}
-
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto pos = text.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  if (pos != std::string::npos) text.replace(pos, from.size(), to);
-  return text;
-}
 
 // The seed's figure-4-5 radar gives MODEL.md section 2's numbers: R_near ~
 // 117,000 ft, 20 deg near-range depression, ~109,900 ft of ground to near

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "radar_test_util.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_derived.h"
 #include "ris/sensor/radar_json.h"
@@ -14,20 +15,9 @@
 namespace ris {
 namespace {
 
-RadarParams parse(const std::string& text) {
-  return radar_from_toml(toml::parse(text), "r.toml");
-}
-
-void expect_input_error(const std::string& text, const std::string& key) {
-  try {
-    parse(text);
-    ADD_FAILURE() << "no InputError for key " << key << " in:\n" << text;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), "r.toml");
-    const std::string where = e.key() + " " + e.what();
-    EXPECT_NE(where.find(key), std::string::npos) << "error was: " << where;
-  }
-}
+using test::replace;
+const auto parse = test::parse_radar;
+const auto expect_input_error = test::expect_radar_error;
 
 const std::string kSar = R"(
 mode = "sar"
@@ -85,9 +75,9 @@ TEST(RadarModes, SarResolutionsFromBandwidthAndAntennaLength) {
 
 TEST(RadarModes, SarDefaultRangeBinIsTheResolutionAndResolutionMayBeGiven) {
   std::string t = kSar;
-  t.replace(t.find("range_bin = \"1 m\"\n"), 18, "");
-  t.replace(t.find("bandwidth = \"100 MHz\""), 21, "range_resolution = \"2.5 m\"");
-  t.replace(t.find("antenna_length = \"3 m\""), 22, "azimuth_resolution = \"2 m\"");
+  t = replace(t, "range_bin = \"1 m\"\n", "");
+  t = replace(t, "bandwidth = \"100 MHz\"", "range_resolution = \"2.5 m\"");
+  t = replace(t, "antenna_length = \"3 m\"", "azimuth_resolution = \"2 m\"");
   const RadarParams r = parse(t);
   EXPECT_DOUBLE_EQ(r.range_bin_m, 2.5);
   EXPECT_DOUBLE_EQ(r.sar.azimuth_resolution_m, 2.0);
@@ -95,21 +85,21 @@ TEST(RadarModes, SarDefaultRangeBinIsTheResolutionAndResolutionMayBeGiven) {
 }
 
 TEST(RadarModes, SarBadInput) {
-  expect_input_error(std::string(kSar).replace(kSar.find("[sar]"), 5, "[sarr]"), "sar");
+  expect_input_error(replace(kSar, "[sar]", "[sarr]"), "sar");
   std::string t = kSar;
-  t.replace(t.find("antenna_length = \"3 m\""), 22, "antena_length = \"3 m\"");
+  t = replace(t, "antenna_length = \"3 m\"", "antena_length = \"3 m\"");
   expect_input_error(t, "antenna_length");
   t = kSar;
-  t.replace(t.find("range_looks = 2"), 15, "range_looks = 0");
+  t = replace(t, "range_looks = 2", "range_looks = 0");
   expect_input_error(t, "range_looks");
   t = kSar;
-  t.replace(t.find("nesz_db = -25"), 13, "nesz_db = -25\nnesz = 0.01");
+  t = replace(t, "nesz_db = -25", "nesz_db = -25\nnesz = 0.01");
   expect_input_error(t, "nesz");
   // A [sar] table in another mode.
   t = kSar;
-  t.replace(t.find("mode = \"sar\""), 12,
-            "mode = \"slar\"\npulse_width = \"0.1 us\"\n"
-            "azimuth_beamwidth = \"1 deg\"");
+  t = replace(t, "mode = \"sar\"",
+              "mode = \"slar\"\npulse_width = \"0.1 us\"\n"
+              "azimuth_beamwidth = \"1 deg\"");
   expect_input_error(t, "sar");
 }
 
@@ -137,19 +127,19 @@ TEST(RadarModes, PpiSiteScanAndDefaults) {
 
 TEST(RadarModes, PpiBadInput) {
   std::string t = kPpi;
-  t.replace(t.find("width = \"90 deg\""), 16, "width = 0");
+  t = replace(t, "width = \"90 deg\"", "width = 0");
   expect_input_error(t, "scan.width");
   t = kPpi;
-  t.replace(t.find("width = \"90 deg\""), 16, "width = \"90 deg\"\nray_spacing = \"1 deg\"");
+  t = replace(t, "width = \"90 deg\"", "width = \"90 deg\"\nray_spacing = \"1 deg\"");
   expect_input_error(t, "scan.ray_spacing");  // more than half the 1.2 deg beam
   t = kPpi;
-  t.replace(t.find("height = \"30 m\""), 15, "height = \"30 m\"\naltitude = \"100 m\"");
+  t = replace(t, "height = \"30 m\"", "height = \"30 m\"\naltitude = \"100 m\"");
   expect_input_error(t, "site");
   t = kPpi;
-  t.replace(t.find("position = [500.0, 600.0]"), 25, "position = [500.0]");
+  t = replace(t, "position = [500.0, 600.0]", "position = [500.0]");
   expect_input_error(t, "site.position");
   t = kPpi;
-  t.replace(t.find("range_rings"), 11, "range_ring");
+  t = replace(t, "range_rings", "range_ring");
   expect_input_error(t, "range_ring");
   // A PPI has no track; a SLAR no site.
   expect_input_error(kPpi + "[track]\naltitude = 100\n", "track");
