@@ -7,11 +7,11 @@
 
 #include <fmt/format.h>
 
-#include "image/slar_element.h"
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_sample.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
+#include "sim/slar_line_kernels.h"
 
 namespace ris {
 
@@ -23,48 +23,13 @@ bool nearly(double a, double b) {
   return std::abs(a - b) < 1e-9;
 }
 
-// One thread's line scratch, allocated once per run() call and thread.
-struct LineScratch {
-  std::vector<float> u, height, dz_dx, dz_dy, range, incidence, local_incidence, area, near_end,
-      far_end, dh_du;
-  std::vector<std::uint16_t> category;
-  std::vector<std::uint8_t> flags;
-  std::vector<std::uint8_t> unseen;      // kUnseen where u <= 0 (the same for every line)
-  std::vector<std::uint8_t> none_valid;  // a row of no-data cells, beyond the scene's edge
-  std::vector<float> none_z;
-  SlarLineAccumulator acc;
-  LineScratch(const SlarGeometry& g, int bins)
-      : u(static_cast<std::size_t>(g.samples)),
-        height(u.size()),
-        dz_dx(u.size()),
-        dz_dy(u.size()),
-        range(u.size()),
-        incidence(u.size()),
-        local_incidence(u.size()),
-        area(u.size()),
-        near_end(u.size()),
-        far_end(u.size()),
-        dh_du(u.size()),
-        category(u.size()),
-        flags(u.size()),
-        unseen(u.size()),
-        none_valid(u.size(), 0),
-        none_z(u.size(), 0.0f),
-        acc(bins) {
-    for (int j = 0; j < g.samples; ++j) {
-      u[static_cast<std::size_t>(j)] = float(g.sample_u_m(j));
-      unseen[static_cast<std::size_t>(j)] = g.sample_u_m(j) > 0.0 ? 0 : sample_flag::kUnseen;
-    }
-  }
-};
-
 // The cells of row r of the window (all columns) into the scratch in column
 // order: height, slope (slope_difference, as surface_gradient), category and
 // the no-data flag; NaN height and slope where a cell has no data. Rows
 // outside the scene read `none` (no data). The interior columns take no
 // branches, so the loop vectorises.
 void gather_row(const SceneWindow& in, int scene_rows, int r, double dx_m, double dy_m,
-                const std::uint8_t* none_valid, const float* none_z, LineScratch& s) {
+                const std::uint8_t* none_valid, const float* none_z, detail::LineScratch& s) {
   const int cols = in.cols;
   const std::size_t base = in.index(r, in.col0);
   const float* __restrict z = in.elevation_m + base;
@@ -150,70 +115,6 @@ int line_cell(const Scene& scene, const SlarGeometry& g, bool cross_is_x, int li
   return (f >= 0.0 && f < n) ? static_cast<int>(std::floor(f)) : -1;
 }
 
-// The constant part of a run's image formation (as form_slar_image).
-detail::SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainTable& gain2,
-                                           const Sigma0Lut& lut, int bins) {
-  detail::SlarElementContext ctx;
-  ctx.k_radar = p.transmit_power_w * p.wavelength_m * p.wavelength_m / std::pow(4.0 * kPi, 3.0);
-  ctx.near_m = p.range.near_m;
-  ctx.inv_dr = 1.0 / p.range.bin_m;
-  ctx.bins = bins;
-  ctx.gain2 = &gain2;
-  ctx.lut = &lut;
-  return ctx;
-}
-
-// The look geometry, element ends, cast shadow and layover of a line whose
-// terrain is in the scratch (MODEL.md section 2; the code the stage path
-// runs: ris/geometry/line_scan.h).
-void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_incidence,
-                   LineScratch& s) {
-  const int samples = g.samples;
-  look_line({samples, s.u.data(), s.height.data(), s.dz_dx.data(), s.dz_dy.data()}, frame,
-            {s.range.data(), need_incidence ? s.incidence.data() : nullptr,
-             s.local_incidence.data(), s.area.data(), s.dh_du.data(), s.flags.data()});
-  const LineSamples ls{samples,         g.first_sample_u_m, g.sample_step_m,   g.altitude_m,
-                       s.height.data(), s.range.data(),     s.near_end.data(), s.far_end.data(),
-                       s.dh_du.data(),  s.flags.data()};
-  line_element_ends(ls);
-  mark_shadow_and_layover(ls);
-}
-
-// Image formation's per-line step (as form_slar_image): the line's elements
-// into its range profile row; counts into `counts`. Returns the number of
-// elements whose centre falls in a bin.
-std::int64_t accumulate_line(const detail::SlarElementContext& ctx, int samples, LineScratch& s,
-                             SlarLineProfiles& prof, int line, SlarLineCounts& counts,
-                             double range_window_bins) {
-  constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
-  std::int64_t in_swath = 0;
-  std::fill(s.acc.acc.begin(), s.acc.acc.end(), 0.0);
-  std::fill(s.acc.acc_area.begin(), s.acc.acc_area.end(), 0.0);
-  const std::size_t row = prof.index(line, 0);
-  for (int j = 0; j < samples; ++j) {
-    const std::size_t jj = static_cast<std::size_t>(j);
-    const std::uint8_t sf = s.flags[jj];
-    counts.nodata += (sf & sample_flag::kNoData) ? 1 : 0;
-    counts.shadow += (sf & sample_flag::kShadow) ? 1 : 0;
-    counts.back_facing += (sf & sample_flag::kBackFacing) ? 1 : 0;
-    counts.layover += (sf & sample_flag::kLayover) ? 1 : 0;
-    if (sf & kSkip) continue;
-    counts.r_min_m = std::min(counts.r_min_m, s.range[jj]);
-    counts.r_max_m = std::max(counts.r_max_m, s.range[jj]);
-    in_swath += detail::accumulate_element(
-        ctx, sf, s.range[jj], s.near_end[jj], s.far_end[jj], s.incidence[jj], s.local_incidence[jj],
-        s.area[jj], s.category[jj], prof.touch.data() + row, prof.mapped_count.data() + row,
-        prof.visible_count.data() + row, s.acc.acc.data(), s.acc.acc_area.data());
-  }
-  if (range_window_bins > 0.0) s.acc.apply_range_window(range_window_bins);
-  for (int b = 0; b < prof.bins; ++b) {
-    const std::size_t bb = static_cast<std::size_t>(b);
-    prof.power_w[row + bb] = static_cast<float>(s.acc.acc[bb]);
-    prof.area_m2[row + bb] = static_cast<float>(s.acc.acc_area[bb]);
-  }
-  return in_swath;
-}
-
 }  // namespace
 
 int SlarLineEngine::cell_of_line(int line) const {
@@ -262,7 +163,7 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
   const bool need_incidence = !gain2_.uniform();
   const double near_m = params_.range.near_m, far_m = params_.range.far_m();
 
-  const detail::SlarElementContext ctx = element_context(params_, gain2_, lut_, bins);
+  const detail::SlarElementContext ctx = detail::element_context(params_, gain2_, lut_, bins);
 
   const auto ok = [&](int r, int c) {
     return scene.contains(r, c) && in.valid[in.index(r, c)] != 0;
@@ -274,7 +175,7 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
   std::int64_t in_swath = 0;
 #pragma omp parallel reduction(+ : in_swath)
   {
-    LineScratch s(g, bins);
+    detail::LineScratch s(g, bins);
     SlarLineCounts local;
 #pragma omp for schedule(dynamic, 16)
     for (int line = line0; line < line1; ++line) {
@@ -335,8 +236,9 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
           s.category[jj] = in.category[i];
         }
 
-      line_geometry(g, frame, need_incidence, s);
-      in_swath += accumulate_line(ctx, samples, s, prof, line, local, params_.range_window_bins);
+      detail::line_geometry(g, frame, need_incidence, s);
+      in_swath +=
+          detail::accumulate_line(ctx, samples, s, prof, line, local, params_.range_window_bins);
 
       // The scene-grid maps (scene_geometry_maps: each cell is its own
       // sample here).
@@ -362,128 +264,6 @@ bool fused_slar_image_applies(const Scene& scene, const SlarGeometry& layout) {
   return fused_slar_applies(scene, layout) || !layout.direct_sampling;
 }
 
-namespace {
-
-// Writes the scene-map cells whose nearest line is `line` (scene_geometry_maps'
-// rule, scene_cell_sample) from the line's samples. The cells of one line
-// form a strip across the grid: scanned row by row (or column by column,
-// whichever axis the strip crosses more steeply) over the few cells where the
-// along-track distance is within a line of it, each checked exactly. Every
-// cell belongs to one line, so lines in parallel never write the same cell.
-void scatter_line_cells(const Scene& scene, const SlarGeometry& g, int line, const LineScratch& s,
-                        double near_m, double far_m, SceneGeometryMaps& maps) {
-  const Track& t = g.track;
-  const double ds = g.line_spacing_m;
-  const double s_lo = line * ds, s_hi = (line + 1) * ds;
-  // Along-track distance per column (x east) and per row (y north = row - 1).
-  const double ds_dc = t.along_x * scene.dx_m, ds_dr = -t.along_y * scene.dy_m;
-  const bool by_rows = std::abs(ds_dc) >= std::abs(ds_dr);
-  const int outer_n = by_rows ? scene.rows : scene.cols;
-  const int inner_n = by_rows ? scene.cols : scene.rows;
-  const double step = by_rows ? ds_dc : ds_dr;
-  // The outer range where the band meets the grid: the band's inner
-  // coordinate moves linearly with o (rate per outer step); a margin of two
-  // covers rounding, and each candidate cell is checked exactly below.
-  const auto band_at = [&](int o, double& ia, double& ib) {
-    const int r0 = by_rows ? o : 0, c0 = by_rows ? 0 : o;
-    const auto [x0, y0] = scene.cell_centre(r0, c0);
-    const double s0 = t.along_cross(x0, y0).first;
-    ia = (s_lo - s0) / step;
-    ib = (s_hi - s0) / step;
-  };
-  double a0 = 0.0, b0 = 0.0, a1 = 0.0, b1 = 0.0;
-  band_at(0, a0, b0);
-  band_at(1, a1, b1);
-  const double rate = a1 - a0;  // inner cells per outer step
-  const double lo0 = std::min(a0, b0) - 2.0, hi0 = std::max(a0, b0) + 2.0;
-  double first = 0.0, last = outer_n;
-  if (rate > 0.0) {
-    first = std::floor(-hi0 / rate) - 2.0;
-    last = std::ceil((inner_n - lo0) / rate) + 2.0;
-  } else if (rate < 0.0) {
-    first = std::floor((inner_n - lo0) / rate) - 2.0;
-    last = std::ceil(-hi0 / rate) + 2.0;
-  }
-  const int o_begin = static_cast<int>(std::clamp(first, 0.0, double(outer_n)));
-  const int o_end = static_cast<int>(std::clamp(last, 0.0, double(outer_n)));
-  for (int o = o_begin; o < o_end; ++o) {
-    const int r0 = by_rows ? o : 0, c0 = by_rows ? 0 : o;
-    const auto [x0, y0] = scene.cell_centre(r0, c0);
-    const double s0 = t.along_cross(x0, y0).first;
-    const double ia = (s_lo - s0) / step, ib = (s_hi - s0) / step;
-    const int lo = std::max(0, static_cast<int>(std::floor(std::min(ia, ib))) - 1);
-    const int hi = std::min(inner_n - 1, static_cast<int>(std::ceil(std::max(ia, ib))) + 1);
-    for (int k = lo; k <= hi; ++k) {
-      const int r = by_rows ? o : k, c = by_rows ? k : o;
-      int cell_line = 0, j = 0;
-      // Cells outside the swath keep their initial mask.
-      if (!scene_cell_sample(scene, g, r, c, cell_line, j) || cell_line != line) continue;
-      const std::size_t cell = scene.index(r, c);
-      const std::size_t jj = static_cast<std::size_t>(j);
-      scene_map_cell(scene.valid[cell] != 0, s.flags[jj], s.range[jj], s.local_incidence[jj],
-                     near_m, far_m, maps.mask[cell], maps.local_incidence_deg[cell]);
-    }
-  }
-}
-
-// The fused run for any other heading: the stage path's bilinear sampler
-// (slar_geometry.cpp fill_line with BilinearSampler: bilinear height and
-// slope at half a cell, the nearest cell's category) line by line, then the
-// shared line geometry and image formation, and the scene maps scattered
-// per line. Only the slope rasters (8 bytes per cell) are whole-scene.
-void run_oblique(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
-                 const SlarImagingParams& p, const std::string& radar_file, SlarLineProfiles& prof,
-                 SceneGeometryMaps& maps, SlarLineCounts& counts) {
-  const SurfaceGradient grad = surface_gradient(scene);
-  const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, radar_file);
-  const detail::SlarElementContext ctx = element_context(p, gain2, lut, prof.bins);
-  const Track& t = g.track;
-  const LineLookFrame frame{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
-  const bool need_incidence = !gain2.uniform();
-  const double near_m = p.range.near_m, far_m = p.range.far_m();
-  const auto n_cells = static_cast<std::int64_t>(scene.size());
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < n_cells; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    maps.mask[k] = (scene.valid[k] ? 0 : scene_flag::kNoData) | scene_flag::kOutsideSwath;
-    maps.local_incidence_deg[k] = kNaN;
-  }
-  std::int64_t in_swath = 0;
-#pragma omp parallel reduction(+ : in_swath)
-  {
-    LineScratch s(g, prof.bins);
-    SlarLineCounts local;
-#pragma omp for schedule(dynamic, 16)
-    for (int line = 0; line < g.lines; ++line) {
-      const auto [line_x, line_y] = t.world_from_along_cross(g.line_s_m(line), 0.0);
-      for (int j = 0; j < g.samples; ++j) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        const double u = g.sample_u_m(j);
-        const TerrainSample ts =
-            bilinear_terrain_sample(scene, &grad, line_x + u * t.cross_x, line_y + u * t.cross_y);
-        std::uint8_t f = 0;
-        if (!ts.inside) f |= sample_flag::kUnseen;
-        if (ts.inside && !ts.valid) f |= sample_flag::kNoData;
-        f |= s.unseen[jj];
-        s.flags[jj] = f;
-        const bool terrain = ts.inside && ts.valid;
-        s.height[jj] = terrain ? ts.height_m : kNaN;
-        s.dz_dx[jj] = terrain ? ts.dz_dx : kNaN;
-        s.dz_dy[jj] = terrain ? ts.dz_dy : kNaN;
-        s.category[jj] = terrain ? ts.category : std::uint16_t{0};
-      }
-      line_geometry(g, frame, need_incidence, s);
-      in_swath += accumulate_line(ctx, g.samples, s, prof, line, local, p.range_window_bins);
-      scatter_line_cells(scene, g, line, s, near_m, far_m, maps);
-    }
-#pragma omp critical(ris_slar_line_counts)
-    counts.add(local);
-  }
-  prof.samples_in_swath += in_swath;
-}
-
-}  // namespace
-
 SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeometryMaps& maps,
                                 const Sigma0Lut& lut, const SlarImagingParams& p,
                                 const std::string& radar_file) {
@@ -501,7 +281,7 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
         0, 0, scene.rows, scene.cols, maps.mask.data(), maps.local_incidence_deg.data()};
     engine.run(0, g.lines, SceneWindow::whole(scene), prof, out, counts);
   } else {
-    run_oblique(scene, g, lut, p, radar_file, prof, maps, counts);
+    detail::run_oblique_lines(scene, g, lut, p, radar_file, prof, maps, counts);
   }
   g.nodata_samples = counts.nodata;
   g.shadow_samples = counts.shadow;
