@@ -79,7 +79,8 @@ double process_cpu_s() {
 struct RunTiming {
   double total_s = 0.0;
   double cpu_s = 0.0;  // process CPU time (all threads): robust to a loaded machine
-  std::map<std::string, double> stage_s;  // simulate_slar stages + render
+  std::map<std::string, double> stage_s;      // simulate_slar stages + render
+  std::map<std::string, double> stage_cpu_s;  // the same, process CPU time
 };
 
 // One end-to-end run, with the per-stage split from simulate_slar's progress
@@ -89,19 +90,28 @@ RunTiming run_once(const Scene& scene, const RadarParams& radar, const Sigma0Sou
   RunTiming t;
   std::string stage;
   auto stage_t0 = Clock::now();
+  double stage_cpu0 = 0.0;
   SlarOptions options;
   options.progress = [&](std::string_view name, double) {
-    if (!stage.empty()) t.stage_s[stage] += seconds_since(stage_t0);
+    if (!stage.empty()) {
+      t.stage_s[stage] += seconds_since(stage_t0);
+      t.stage_cpu_s[stage] += process_cpu_s() - stage_cpu0;
+    }
     stage = std::string(name);
     stage_t0 = Clock::now();
+    stage_cpu0 = process_cpu_s();
   };
   const auto t0 = Clock::now();
   const double cpu0 = process_cpu_s();
   SlarSimulation sim = simulate_slar(scene, radar, sigma0, options);
   t.stage_s[stage] += seconds_since(stage_t0);
+  t.stage_cpu_s[stage] += process_cpu_s() - stage_cpu0;
   const auto r0 = Clock::now();
+  const double r_cpu0 = process_cpu_s();
   SlarPictures pic = render_slar(sim, 1);
-  t.stage_s["render (speckle, greytone, ground range)"] += seconds_since(r0);
+  const std::string render_stage = "render (speckle, greytone, ground range)";
+  t.stage_s[render_stage] += seconds_since(r0);
+  t.stage_cpu_s[render_stage] += process_cpu_s() - r_cpu0;
   t.total_s = seconds_since(t0);
   t.cpu_s = process_cpu_s() - cpu0;
   if (keep) *keep = std::move(sim);
@@ -162,7 +172,9 @@ void print_run(const std::string& label, const RunTiming& t, double cells) {
 
 void print_stages(const RunTiming& t) {
   for (const auto& [name, s] : t.stage_s) {
-    fmt::print("      {:<40} {:8.1f} ms ({:4.1f}%)\n", name, 1e3 * s, 100.0 * s / t.total_s);
+    const auto cpu = t.stage_cpu_s.find(name);
+    fmt::print("      {:<40} {:8.1f} ms ({:4.1f}%)  CPU {:8.1f} ms\n", name, 1e3 * s,
+               100.0 * s / t.total_s, cpu == t.stage_cpu_s.end() ? 0.0 : 1e3 * cpu->second);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "ris/image/greytone_image.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 
@@ -8,6 +9,16 @@
 #include "ris/util/error.h"
 
 namespace ris {
+
+std::vector<double> looks_per_bin(const RadarParams& radar, int bins, double near_range_m,
+                                  double bin_m) {
+  std::vector<double> looks(static_cast<std::size_t>(std::max(bins, 0)));
+  for (int k = 0; k < bins; ++k) {
+    looks[static_cast<std::size_t>(k)] =
+        independent_samples(radar, near_range_m + (k + 0.5) * bin_m);
+  }
+  return looks;
+}
 
 GreytoneImage make_greytone_image(const RadarParams& radar, std::span<const float> mean_power_w,
                                   int lines, int bins, double near_range_m, double bin_m,
@@ -19,11 +30,7 @@ GreytoneImage make_greytone_image(const RadarParams& radar, std::span<const floa
   // The reference comes from the mean power, so the grey scale does not
   // depend on the fading seed.
   GreytoneImage out{{}, {}, {}, make_greytone_map(radar, mean_power_w, no_data)};
-  out.looks_per_bin.resize(static_cast<std::size_t>(bins));
-  for (int k = 0; k < bins; ++k) {
-    out.looks_per_bin[static_cast<std::size_t>(k)] =
-        independent_samples(radar, near_range_m + (k + 0.5) * bin_m);
-  }
+  out.looks_per_bin = looks_per_bin(radar, bins, near_range_m, bin_m);
   out.speckled_power_w.assign(mean_power_w.begin(), mean_power_w.end());
   if (!no_data.empty()) {
     for (std::size_t i = 0; i < no_data.size(); ++i) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -206,6 +207,44 @@ TEST(Greytone, FastQuantisedEqualsQuantisedOnEveryFloatTried) {
                     std::numeric_limits<float>::infinity()}) {
       check(p);
     }
+  }
+}
+
+// greytone_line (the render's row kernel, with its fixed number of threshold
+// steps and no branch on the power) gives quantised() on every float of the
+// sweep above, special values included, and the no-data greytone where the
+// power is NaN or the mask has one of the bits; also for a steep film whose
+// 0.5% buckets hold several greytones each (more than one step).
+TEST(Greytone, LineKernelEqualsQuantisedWithMask) {
+  const std::string steep =
+      kRadar.substr(0, kRadar.find("[film]")) + "[film]\ndensity_range = 0.3\ngamma = 3.0\n";
+  for (const RadarParams& radar : {radar_with(), radar_from_toml(toml::parse(steep), "r.toml")}) {
+    const GreytoneMap map = make_greytone_map(radar, {});
+    std::vector<float> p;
+    for (int k = 0; k <= 200000; ++k) {
+      const double g = -200.0 + 600.0 * k / 200000.0;
+      const auto v = static_cast<float>(map.reference_power_w() *
+                                        std::pow(10.0, (g - 128.0) / map.greytones_per_decade()));
+      p.insert(p.end(), {v, std::nextafter(v, 0.0f), std::nextafter(v, 1.0f)});
+    }
+    p.insert(p.end(),
+             {0.0f, -0.0f, -1.0f, std::numeric_limits<float>::denorm_min(),
+              std::numeric_limits<float>::min(), std::numeric_limits<float>::max(),
+              std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+              std::numeric_limits<float>::quiet_NaN()});
+    std::vector<std::uint8_t> mask(p.size());
+    for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = static_cast<std::uint8_t>(i % 7);
+    std::vector<std::uint8_t> out(p.size()), out_unmasked(p.size());
+    greytone_line(map, p.data(), mask.data(), 4, p.size(), out.data(), 7);
+    greytone_line(map, p.data(), nullptr, 4, p.size(), out_unmasked.data(), 7);
+    std::vector<int> seen(256, 0);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const std::uint8_t q = std::isnan(p[i]) ? 7 : map.quantised(double(p[i]));
+      ASSERT_EQ(out_unmasked[i], q) << p[i];
+      ASSERT_EQ(out[i], (mask[i] & 4) ? 7 : q) << p[i];
+      seen[q] = 1;
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), 256);
   }
 }
 

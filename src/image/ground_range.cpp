@@ -43,31 +43,66 @@ std::vector<double> bin_positions(const SlantRangeBins& bins, const GroundRangeG
 }
 }  // namespace
 
+GroundRangeResampler::GroundRangeResampler(const SlantRangeBins& bins,
+                                           const GroundRangeGrid& grid) {
+  const std::vector<double> pos = bin_positions(bins, grid);
+  const std::size_t cols = pos.size();
+  k0_.assign(cols, 0);
+  k1_.assign(cols, 0);
+  nearest_.assign(cols, -1);
+  weight_.assign(cols, 0.0);
+  inside_.assign(cols, 0);
+  const int last = bins.count - 1;
+  for (std::size_t j = 0; j < cols; ++j) {
+    const double x = pos[j];
+    // The nearest bin (masks).
+    const double r = std::round(x);
+    if (r >= 0.0 && r < bins.count) nearest_[j] = static_cast<int>(r);
+    if (x < -0.5 || x > last + 0.5) continue;  // beyond the swath: NaN
+    // Half a bin at each end holds the end value.
+    const double xc = std::clamp(x, 0.0, double(last));
+    const int k = std::min(static_cast<int>(xc), std::max(last - 1, 0));
+    k0_[j] = k;
+    k1_[j] = std::min(k + 1, last);
+    weight_[j] = xc - k;
+    inside_[j] = 1;
+  }
+}
+
+void GroundRangeResampler::resample_line(const float* slant, float* out) const {
+  const std::size_t cols = weight_.size();
+  const std::int32_t* k0 = k0_.data();
+  const std::int32_t* k1 = k1_.data();
+  const double* w = weight_.data();
+  const std::uint8_t* inside = inside_.data();
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  for (std::size_t j = 0; j < cols; ++j) {
+    const float a = slant[k0[j]], b = slant[k1[j]];
+    const auto v = static_cast<float>(a + w[j] * (double(b) - double(a)));
+    out[j] = inside[j] ? v : kNaN;
+  }
+}
+
+void GroundRangeResampler::nearest_line(const std::uint8_t* slant, std::uint8_t* out,
+                                        std::uint8_t fill) const {
+  const std::size_t cols = nearest_.size();
+  for (std::size_t j = 0; j < cols; ++j) {
+    const std::int32_t k = nearest_[j];
+    out[j] = k >= 0 ? slant[k] : fill;
+  }
+}
+
 std::vector<float> to_ground_range(std::span<const float> slant, int lines,
                                    const SlantRangeBins& bins, const GroundRangeGrid& grid) {
   RIS_CHECK(slant.size() == static_cast<std::size_t>(lines) * static_cast<std::size_t>(bins.count));
-  const std::vector<double> pos = bin_positions(bins, grid);
+  const GroundRangeResampler resampler(bins, grid);
   const std::size_t cols = static_cast<std::size_t>(grid.count);
   std::vector<float> out(static_cast<std::size_t>(lines) * cols);
-  const int last = bins.count - 1;
 #pragma omp parallel for schedule(static)
   for (int line = 0; line < lines; ++line) {
-    const float* row =
-        slant.data() + static_cast<std::size_t>(line) * static_cast<std::size_t>(bins.count);
-    float* dst = out.data() + static_cast<std::size_t>(line) * cols;
-    for (std::size_t j = 0; j < cols; ++j) {
-      const double x = pos[j];
-      if (x < -0.5 || x > last + 0.5) {
-        dst[j] = std::numeric_limits<float>::quiet_NaN();
-        continue;
-      }
-      // Half a bin at each end holds the end value.
-      const double xc = std::clamp(x, 0.0, double(last));
-      const int k = std::min(static_cast<int>(xc), std::max(last - 1, 0));
-      const double f = xc - k;
-      const float a = row[k], b = row[std::min(k + 1, last)];
-      dst[j] = static_cast<float>(a + f * (double(b) - double(a)));
-    }
+    resampler.resample_line(
+        slant.data() + static_cast<std::size_t>(line) * static_cast<std::size_t>(bins.count),
+        out.data() + static_cast<std::size_t>(line) * cols);
   }
   return out;
 }
@@ -76,23 +111,14 @@ std::vector<std::uint8_t> to_ground_range_nearest(std::span<const std::uint8_t> 
                                                   const SlantRangeBins& bins,
                                                   const GroundRangeGrid& grid, std::uint8_t fill) {
   RIS_CHECK(slant.size() == static_cast<std::size_t>(lines) * static_cast<std::size_t>(bins.count));
-  const std::vector<double> pos = bin_positions(bins, grid);
+  const GroundRangeResampler resampler(bins, grid);
   const std::size_t cols = static_cast<std::size_t>(grid.count);
-  // The nearest bin of each column, once (-1: none), not per pixel.
-  std::vector<int> nearest(cols, -1);
-  for (std::size_t j = 0; j < cols; ++j) {
-    const double k = std::round(pos[j]);
-    if (k >= 0.0 && k < bins.count) nearest[j] = static_cast<int>(k);
-  }
-  std::vector<std::uint8_t> out(static_cast<std::size_t>(lines) * cols, fill);
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(lines) * cols);
 #pragma omp parallel for schedule(static)
   for (int line = 0; line < lines; ++line) {
-    const std::uint8_t* row =
-        slant.data() + static_cast<std::size_t>(line) * static_cast<std::size_t>(bins.count);
-    std::uint8_t* dst = out.data() + static_cast<std::size_t>(line) * cols;
-    for (std::size_t j = 0; j < cols; ++j) {
-      if (nearest[j] >= 0) dst[j] = row[nearest[j]];
-    }
+    resampler.nearest_line(
+        slant.data() + static_cast<std::size_t>(line) * static_cast<std::size_t>(bins.count),
+        out.data() + static_cast<std::size_t>(line) * cols, fill);
   }
   return out;
 }

@@ -1,5 +1,6 @@
 #include "ris/image/speckle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -8,43 +9,67 @@
 
 namespace ris {
 
+FadingField::FadingField(std::span<const double> looks_per_bin, FadingLaw law, std::uint64_t seed)
+    : looks_(looks_per_bin.begin(), looks_per_bin.end()),
+      sqrt_looks_(looks_per_bin.size()),
+      law_(law),
+      seed_(seed),
+      zig_(&ziggurat_tables()) {
+  // Per range bin, once: the Gamma sampler's constants and sqrt(N) (the same
+  // arithmetic as fading_factor, so the same bytes).
+  gamma_.reserve(looks_.size());
+  for (std::size_t b = 0; b < looks_.size(); ++b) {
+    RIS_CHECK(looks_[b] > 0.0 && std::isfinite(looks_[b]));
+    gamma_.emplace_back(looks_[b]);
+    sqrt_looks_[b] = std::sqrt(looks_[b]);
+  }
+}
+
+void FadingField::apply_line(float* row, int line) const {
+  const int bins = this->bins();
+  const auto line_key = static_cast<std::uint32_t>(line);
+  const bool exact = law_ == FadingLaw::exact_gamma;
+  // Each pixel draws from its own counter stream (seed, bin, line): its first
+  // block comes from the vectorised batch, the rest (rarely needed) from the
+  // stream itself.
+  constexpr int kChunk = 64;
+  alignas(32) std::uint32_t w[4][kChunk];
+  for (int b0 = 0; b0 < bins; b0 += kChunk) {
+    const int n = std::min(kChunk, bins - b0);
+    philox_first_blocks(seed_, static_cast<std::uint32_t>(b0), line_key, CounterRng::kFadingStream,
+                        static_cast<std::size_t>(n), {w[0], w[1], w[2], w[3]});
+    for (int i = 0; i < n; ++i) {
+      const int bin = b0 + i;
+      const float p = row[bin];
+      if (!(p > 0.0f) || !std::isfinite(p)) continue;
+      const std::size_t b = static_cast<std::size_t>(bin);
+      CounterRng rng(seed_, static_cast<std::uint32_t>(bin), line_key, CounterRng::kFadingStream,
+                     {w[0][i], w[1][i], w[2][i], w[3][i]});
+      double y = 0.0;
+      if (exact) {
+        y = gamma_[b](rng, *zig_) / looks_[b];
+      } else {
+        y = 1.0 + ziggurat_normal(rng, *zig_) / sqrt_looks_[b];
+        y = y > kSeedFadingFloor ? y : kSeedFadingFloor;
+      }
+      row[bin] = static_cast<float>(static_cast<double>(p) * y);
+    }
+  }
+}
+
 void apply_fading(std::span<float> power_w, int lines, int bins,
                   std::span<const double> looks_per_bin, FadingLaw law, std::uint64_t seed,
                   int first_line) {
   RIS_CHECK(lines >= 0 && bins >= 0);
   RIS_CHECK(power_w.size() == static_cast<std::size_t>(lines) * static_cast<std::size_t>(bins));
   RIS_CHECK(looks_per_bin.size() == static_cast<std::size_t>(bins));
-  for (double n : looks_per_bin) RIS_CHECK(n > 0.0 && std::isfinite(n));
-  // Per range bin, once: the Gamma sampler's constants and sqrt(N) (the same
-  // arithmetic as fading_factor, so the same bytes).
-  std::vector<GammaSampler> gamma;
-  std::vector<double> sqrt_looks(looks_per_bin.size());
-  gamma.reserve(looks_per_bin.size());
-  for (std::size_t b = 0; b < looks_per_bin.size(); ++b) {
-    gamma.emplace_back(looks_per_bin[b]);
-    sqrt_looks[b] = std::sqrt(looks_per_bin[b]);
-  }
-  const ZigguratTables& zig = ziggurat_tables();
-  const bool exact = law == FadingLaw::exact_gamma;
-  // Each pixel draws from its own counter stream: any schedule gives the same bytes.
+  const FadingField fading(looks_per_bin, law, seed);
+  // Lines are independent: any schedule gives the same bytes.
 #pragma omp parallel for schedule(static)
   for (int line = 0; line < lines; ++line) {
-    float* row = power_w.data() + static_cast<std::size_t>(line) * static_cast<std::size_t>(bins);
-    const auto line_key = static_cast<std::uint32_t>(first_line + line);
-    for (int bin = 0; bin < bins; ++bin) {
-      const float p = row[bin];
-      if (!(p > 0.0f) || !std::isfinite(p)) continue;
-      const std::size_t b = static_cast<std::size_t>(bin);
-      CounterRng rng(seed, static_cast<std::uint32_t>(bin), line_key, CounterRng::kFadingStream);
-      double y = 0.0;
-      if (exact) {
-        y = gamma[b](rng, zig) / looks_per_bin[b];
-      } else {
-        y = 1.0 + ziggurat_normal(rng, zig) / sqrt_looks[b];
-        y = y > kSeedFadingFloor ? y : kSeedFadingFloor;
-      }
-      row[bin] = static_cast<float>(static_cast<double>(p) * y);
-    }
+    fading.apply_line(
+        power_w.data() + static_cast<std::size_t>(line) * static_cast<std::size_t>(bins),
+        first_line + line);
   }
 }
 

@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <tuple>
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/image/greytone.h"
 #include "ris/image/greytone_image.h"
 #include "ris/image/greytone_terms.h"
+#include "ris/image/speckle.h"
 #include "ris/image/thermal_noise.h"
 #include "ris/sensor/elevation_gain.h"
 #include "ris/sim/radiometry_setup.h"
@@ -153,42 +155,70 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
 SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed,
                          std::span<const float> coherent_intensity) {
   const SlarImage& img = sim.image;
+  const int lines = img.lines, bins = img.bins;
+  const std::size_t n_pix = static_cast<std::size_t>(lines) * static_cast<std::size_t>(bins);
+  RIS_CHECK(img.mean_power_w.size() == n_pix && img.mask.size() == n_pix);
   SlarPictures pic;
   pic.seed = seed;
-  std::vector<std::uint8_t> no_data(img.mask.size());
-  for (std::size_t i = 0; i < no_data.size(); ++i)
-    no_data[i] = (img.mask[i] & pixel_flag::kNoData) ? 1 : 0;
 
-  // Fading keyed by (seed, pixel) and greytones (equation 15), the reference
-  // from the mean power so the grey scale does not depend on the seed.
+  // Greytones (equation 15) with the reference from the mean power, so the
+  // grey scale does not depend on the seed (make_greytone_image's map).
   const bool coherent = !coherent_intensity.empty();
+  if (coherent) RIS_CHECK(coherent_intensity.size() == n_pix);
   RadarParams radar = sim.radar;
   if (coherent) radar.switches.fading = false;  // the speckle is in the intensity
-  GreytoneImage g = make_greytone_image(radar, img.mean_power_w, img.lines, img.bins,
-                                        img.range.near_m, img.range.bin_m, seed, no_data);
-  if (coherent) {
-    RIS_CHECK(coherent_intensity.size() == img.mean_power_w.size());
-    g.speckled_power_w.assign(coherent_intensity.begin(), coherent_intensity.end());
-    greytones(g.speckled_power_w, g.greytone, g.map, no_data);
-  }
-  pic.looks = std::move(g.looks_per_bin);
-  pic.speckled_power_w = std::move(g.speckled_power_w);
-  pic.slant_grey = std::move(g.greytone);
-  pic.reference_power_w = g.map.reference_power_w();
-  pic.reference_greytone = g.map.reference_greytone();
-  pic.greytones_per_decade = g.map.greytones_per_decade();
-  pic.film_offset = g.map.film_offset();
+  const GreytoneMap map = make_greytone_map_for_median(
+      radar, radar.reference.automatic
+                 ? median_valid_power_w(img.mean_power_w, img.mask, pixel_flag::kNoData)
+                 : std::numeric_limits<double>::quiet_NaN());
+  pic.looks = looks_per_bin(radar, bins, img.range.near_m, img.range.bin_m);
+  pic.reference_power_w = map.reference_power_w();
+  pic.reference_greytone = map.reference_greytone();
+  pic.greytones_per_decade = map.greytones_per_decade();
+  pic.film_offset = map.film_offset();
+  std::optional<FadingField> fading;
+  if (radar.switches.fading) fading.emplace(pic.looks, radar.fading, seed);
 
-  // Ground range: the speckled power resampled, then the same greytone map.
-  const GroundRangeGrid& grid = sim.ground_grid;
-  pic.ground_power_w = to_ground_range(pic.speckled_power_w, img.lines, img.range, grid);
-  pic.ground_mask =
-      to_ground_range_nearest(img.mask, img.lines, img.range, grid, pixel_flag::kNoData);
-  std::vector<std::uint8_t> ground_no_data(pic.ground_mask.size());
-  for (std::size_t i = 0; i < ground_no_data.size(); ++i)
-    ground_no_data[i] = (pic.ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
-  pic.ground_grey.resize(pic.ground_power_w.size());
-  greytones(pic.ground_power_w, pic.ground_grey, g.map, ground_no_data);
+  // Per line, in one pass (every step is per pixel, keyed by (seed, bin,
+  // line) for the fading, so the bytes are those of the whole-image steps:
+  // make_greytone_image, to_ground_range, to_ground_range_nearest,
+  // greytones): the speckled power (NaN for no data), its greytones, the
+  // ground-range power, mask and greytones. One parallel region instead of
+  // seven, and each line stays in cache between the steps.
+  const GroundRangeResampler ground(img.range, sim.ground_grid);
+  const std::size_t cols = static_cast<std::size_t>(ground.columns());
+  const std::size_t n_ground = static_cast<std::size_t>(lines) * cols;
+  pic.speckled_power_w.resize(n_pix);
+  pic.slant_grey.resize(n_pix);
+  pic.ground_power_w.resize(n_ground);
+  pic.ground_mask.resize(n_ground);
+  pic.ground_grey.resize(n_ground);
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  const auto b_count = static_cast<std::size_t>(bins);
+#pragma omp parallel for schedule(static)
+  for (int line = 0; line < lines; ++line) {
+    const std::size_t at = static_cast<std::size_t>(line) * b_count;
+    const std::uint8_t* mask = img.mask.data() + at;
+    float* speckled = pic.speckled_power_w.data() + at;
+    if (coherent) {
+      std::copy_n(coherent_intensity.data() + at, b_count, speckled);
+    } else {
+      const float* mean = img.mean_power_w.data() + at;
+      for (std::size_t b = 0; b < b_count; ++b)
+        speckled[b] = (mask[b] & pixel_flag::kNoData) ? kNaN : mean[b];
+      if (fading) fading->apply_line(speckled, line);
+    }
+    greytone_line(map, speckled, mask, pixel_flag::kNoData, b_count, pic.slant_grey.data() + at);
+    // Ground range: the speckled power resampled, the mask's nearest bin,
+    // then the same greytone map.
+    const std::size_t g_at = static_cast<std::size_t>(line) * cols;
+    float* ground_power = pic.ground_power_w.data() + g_at;
+    std::uint8_t* ground_mask = pic.ground_mask.data() + g_at;
+    ground.resample_line(speckled, ground_power);
+    ground.nearest_line(mask, ground_mask, pixel_flag::kNoData);
+    greytone_line(map, ground_power, ground_mask, pixel_flag::kNoData, cols,
+                  pic.ground_grey.data() + g_at);
+  }
   return pic;
 }
 

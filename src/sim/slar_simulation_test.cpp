@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 
+#include "ris/image/greytone.h"
+#include "ris/image/greytone_image.h"
+#include "ris/image/ground_range.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/slar_products.h"
 #include "slar_fixtures.h"
@@ -50,6 +54,75 @@ TEST(SlarSimulation, SameSeedSameBytesForOneAndTwoThreads) {
   EXPECT_NE(pb.slant_grey, pc.slant_grey);  // the seed matters
   // Re-rendering does not touch the geometry or the mean power.
   EXPECT_EQ(a.image.mean_power_w, b.image.mean_power_w);
+}
+
+// render_slar runs per line in one pass; its bytes are those of the
+// whole-image steps it stands for (make_greytone_image: NaN for no data,
+// fading, greytones; to_ground_range, to_ground_range_nearest and greytones
+// of the ground-range power), for both fading laws, fading off, a coherent
+// intensity, 1 and 2 threads, with no-data pixels.
+TEST(SlarSimulation, RenderEqualsTheWholeImageSteps) {
+  Scene s = small_scene();
+  for (int r = 0; r < 40; ++r) {
+    for (int c = 150; c < 165; ++c) {
+      s.valid[s.index(r, c)] = 0;
+      s.category[s.index(r, c)] = kNoDataCategory;
+    }
+  }
+  const test::CosineSigma0Source src;
+  const int saved = omp_get_max_threads();
+  for (const char* extra : {"", "[film]\nfading = \"seed\"\n", "[film.terms]\nfading = false\n"}) {
+    const RadarParams radar = radar_from_toml(toml::parse(test::kSmallSlarRadar + extra), "r.toml");
+    const SlarSimulation sim = simulate_slar(s, radar, src);
+    const SlarImage& img = sim.image;
+    std::vector<float> intensity(img.mean_power_w.size());
+    for (std::size_t i = 0; i < intensity.size(); ++i)
+      intensity[i] = 0.5f * img.mean_power_w[i] * float(1 + i % 3);
+    for (const bool coherent : {false, true}) {
+      // The whole-image steps.
+      std::vector<std::uint8_t> no_data(img.mask.size());
+      for (std::size_t i = 0; i < no_data.size(); ++i)
+        no_data[i] = (img.mask[i] & pixel_flag::kNoData) ? 1 : 0;
+      RadarParams r = sim.radar;
+      if (coherent) r.switches.fading = false;
+      GreytoneImage g = make_greytone_image(r, img.mean_power_w, img.lines, img.bins,
+                                            img.range.near_m, img.range.bin_m, 9, no_data);
+      if (coherent) {
+        g.speckled_power_w = intensity;
+        greytones(g.speckled_power_w, g.greytone, g.map, no_data);
+      }
+      const std::vector<float> ground =
+          to_ground_range(g.speckled_power_w, img.lines, img.range, sim.ground_grid);
+      const std::vector<std::uint8_t> ground_mask = to_ground_range_nearest(
+          img.mask, img.lines, img.range, sim.ground_grid, pixel_flag::kNoData);
+      std::vector<std::uint8_t> ground_no_data(ground_mask.size()), ground_grey(ground.size());
+      for (std::size_t i = 0; i < ground_mask.size(); ++i)
+        ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
+      greytones(ground, ground_grey, g.map, ground_no_data);
+      ASSERT_GT(std::count(no_data.begin(), no_data.end(), 1), 0);
+      ASSERT_GT(std::count_if(ground.begin(), ground.end(), [](float v) { return std::isnan(v); }),
+                0);
+      for (const int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        const SlarPictures pic = coherent ? render_slar(sim, 9, intensity) : render_slar(sim, 9);
+        ASSERT_EQ(pic.speckled_power_w.size(), g.speckled_power_w.size());
+        EXPECT_EQ(std::memcmp(pic.speckled_power_w.data(), g.speckled_power_w.data(),
+                              g.speckled_power_w.size() * sizeof(float)),
+                  0)
+            << extra << coherent << threads;
+        EXPECT_EQ(pic.slant_grey, g.greytone);
+        ASSERT_EQ(pic.ground_power_w.size(), ground.size());
+        EXPECT_EQ(
+            std::memcmp(pic.ground_power_w.data(), ground.data(), ground.size() * sizeof(float)),
+            0);
+        EXPECT_EQ(pic.ground_mask, ground_mask);
+        EXPECT_EQ(pic.ground_grey, ground_grey);
+        EXPECT_EQ(pic.looks, g.looks_per_bin);
+        EXPECT_EQ(pic.reference_power_w, g.map.reference_power_w());
+      }
+    }
+  }
+  omp_set_num_threads(saved);
 }
 
 TEST(SlarSimulation, RangeSwitchOffGivesEveryPixelTheReferenceRange) {

@@ -29,6 +29,30 @@ TEST(CounterRng, StreamIsKeyedBySeedAndPixel) {
   EXPECT_NE(first, e.next_u32());
 }
 
+// The batched first blocks are philox4x32_10's bits for every counter (the
+// vectorised loop's tail included: n not a multiple of the vector width; a
+// key and counters with every bit pattern class), and a CounterRng started
+// from one continues as the plain stream does.
+TEST(CounterRng, FirstBlocksAreThePhiloxBlocks) {
+  for (const std::uint64_t seed : {std::uint64_t{0}, std::uint64_t{42}, ~std::uint64_t{0}}) {
+    for (const std::uint32_t a0 : {0u, 1000u, 0xfffffff0u}) {
+      constexpr std::size_t kN = 37;
+      std::uint32_t w[4][kN];
+      philox_first_blocks(seed, a0, 77u, 0x46414400u, kN, {w[0], w[1], w[2], w[3]});
+      for (std::size_t i = 0; i < kN; ++i) {
+        const auto a = a0 + static_cast<std::uint32_t>(i);  // wraps, as the counter does
+        const Philox4x32Block want = philox4x32_10(
+            {a, 77u, 0u, 0x46414400u},
+            {static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)});
+        ASSERT_EQ((Philox4x32Block{w[0][i], w[1][i], w[2][i], w[3][i]}), want) << i;
+        CounterRng plain(seed, a, 77u, 0x46414400u);
+        CounterRng started(seed, a, 77u, 0x46414400u, want);
+        for (int k = 0; k < 11; ++k) ASSERT_EQ(started.next_u32(), plain.next_u32()) << k;
+      }
+    }
+  }
+}
+
 // Moments of 10^6 draws; tolerances are > 5 standard errors.
 TEST(CounterRng, UniformAndNormalMoments) {
   CounterRng rng(7, 0, 0, 0);

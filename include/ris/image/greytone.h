@@ -30,6 +30,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <span>
@@ -59,17 +60,25 @@ class GreytoneMap {
   // bisection over the floats with quantised() itself, so the two agree on
   // every float; tested). A table indexed by the float's top 16 bits (its
   // exponent and 7 mantissa bits: buckets 0.5% wide in power) gives the
-  // greytone at the bucket's start; one threshold compare, rarely two,
-  // finishes it.
+  // greytone at the bucket's start; a fixed number of threshold compares
+  // (max_steps_: the most thresholds any bucket holds, 1 for any ordinary
+  // film) finishes it. No data-dependent branch: speckled power is random,
+  // and a mispredicted "one more threshold?" cost more than the table.
   std::uint8_t quantised_fast(float power_w) const {
     if (!table_) return quantised(power_w);
-    if (!(power_w > 0.0f)) return 0;  // zero, negative, NaN
     std::uint32_t bits = 0;
     std::memcpy(&bits, &power_w, sizeof bits);
-    unsigned g = bucket_[bits >> 16];  // +inf: its own bucket
-    while (g < 255 && power_w >= threshold_[g + 1]) ++g;
+    // Zero, negative and NaN powers read bucket 0, whose greytone is 0 and
+    // whose thresholds they are all below (NaN compares false): greytone 0.
+    const std::uint32_t b = power_w > 0.0f ? bits >> 16 : 0u;  // +inf: its own bucket
+    unsigned g = bucket_[b];
+    for (unsigned s = 0; s < max_steps_; ++s) g += power_w >= threshold_[g + 1] ? 1u : 0u;
     return static_cast<std::uint8_t>(g);
   }
+
+  // greytone_line (below): quantised_fast over a row, with the mask.
+  void quantise_line(const float* power_w, const std::uint8_t* mask, std::uint8_t mask_bits,
+                     std::size_t n, std::uint8_t* out, std::uint8_t no_data_greytone) const;
 
   double reference_power_w() const { return p_ref_w_; }
   double reference_greytone() const { return g_ref_; }
@@ -84,9 +93,11 @@ class GreytoneMap {
   double film_offset_;
   double offset_;  // G_ref + film_offset - per_decade log10(P_ref)
   // threshold_[k]: the smallest float power with quantised() >= k (k >= 1;
-  // +inf when none); threshold_[0] unused.
-  std::array<float, 256> threshold_{};
-  bool table_ = false;  // false: greytones do not grow with power (never in practice)
+  // +inf when none); threshold_[0] unused; threshold_[256] NaN, which no
+  // power reaches (the compares past greytone 255 stay false).
+  std::array<float, 257> threshold_{};
+  unsigned max_steps_ = 0;  // the most thresholds inside one bucket
+  bool table_ = false;      // false: greytones do not grow with power (never in practice)
   // bucket_[b]: the greytone of the smallest positive float whose top 16 bits
   // are b (b up to +inf's 0x7f80).
   std::vector<std::uint8_t> bucket_;
@@ -96,6 +107,11 @@ class GreytoneMap {
 // no_data: empty, or one byte per pixel, non-zero = no data.
 double median_valid_power_w(std::span<const float> power_w,
                             std::span<const std::uint8_t> no_data = {});
+
+// The same over the pixels whose mask has none of mask_bits set (an image's
+// pixel_flag mask, read directly: no separate no-data array).
+double median_valid_power_w(std::span<const float> power_w, std::span<const std::uint8_t> mask,
+                            std::uint8_t mask_bits);
 
 // The radar's greytone map for an image: explicit reference, or auto from the
 // median of `mean_power_w`. Throws InputError (radar file, key "reference")
@@ -108,6 +124,16 @@ GreytoneMap make_greytone_map(const RadarParams& radar, std::span<const float> m
 // image, ris/sim/slar_stream.h): median_power_w is used only by the auto
 // reference (NaN: no valid pixel).
 GreytoneMap make_greytone_map_for_median(const RadarParams& radar, double median_power_w);
+
+// One row of greytones, the kernel of greytones() and of the fused render
+// (ris/sim/slar_simulation.h): out[i] = no_data_greytone where power_w[i] is
+// NaN or mask[i] & mask_bits is non-zero (mask may be null), else
+// map.quantised_fast(power_w[i]) (the same bytes).
+inline void greytone_line(const GreytoneMap& map, const float* power_w, const std::uint8_t* mask,
+                          std::uint8_t mask_bits, std::size_t n, std::uint8_t* out,
+                          std::uint8_t no_data_greytone = 0) {
+  map.quantise_line(power_w, mask, mask_bits, n, out, no_data_greytone);
+}
 
 // Maps a power raster to greytones, in parallel (OpenMP over blocks of pixels;
 // the result does not depend on the thread count). NaN pixels and masked

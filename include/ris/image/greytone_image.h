@@ -29,6 +29,11 @@ struct GreytoneImage {
   GreytoneMap map;                      // P_ref, G_ref and the film terms used
 };
 
+// N at each range bin's centre, near_range_m + (k + 0.5) bin_m
+// (independent_samples, ris/sensor/radar_derived.h).
+std::vector<double> looks_per_bin(const RadarParams& radar, int bins, double near_range_m,
+                                  double bin_m);
+
 // mean_power_w: lines x bins (row = azimuth line, column = range bin, near
 // first), NaN or no_data non-zero for no data; bin k is centred at slant range
 // near_range_m + (k + 0.5) bin_m. No-data pixels get greytone 0.

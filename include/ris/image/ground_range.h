@@ -34,6 +34,29 @@ struct GroundRangeGrid {
 GroundRangeGrid ground_range_grid(const SlantRangeBins& bins, double altitude_m,
                                   double reference_height_m, double spacing_m);
 
+// The resampling of one azimuth line, set up once per grid: each ground
+// pixel's two bins and weight (linear) and its nearest bin. The kernel of
+// to_ground_range, to_ground_range_nearest and the fused render
+// (ris/sim/slar_simulation.h).
+class GroundRangeResampler {
+ public:
+  GroundRangeResampler(const SlantRangeBins& bins, const GroundRangeGrid& grid);
+  int columns() const { return static_cast<int>(weight_.size()); }
+  // slant: one line of bins.count floats; out: columns() floats (NaN beyond
+  // the swath; NaN bins stay NaN).
+  void resample_line(const float* slant, float* out) const;
+  // The same for bytes, nearest bin; `fill` beyond the swath.
+  void nearest_line(const std::uint8_t* slant, std::uint8_t* out, std::uint8_t fill) const;
+
+ private:
+  // Per ground pixel: the bins k0 and k1 (0 beyond the swath) and weight f,
+  // out = a + f (b - a) in double; inside_ 0 beyond the swath. nearest_: the
+  // nearest bin, -1 beyond the swath.
+  std::vector<std::int32_t> k0_, k1_, nearest_;
+  std::vector<double> weight_;
+  std::vector<std::uint8_t> inside_;
+};
+
 // Resamples a lines x bins float raster (power) to lines x grid.count; NaN
 // bins stay NaN, pixels beyond the swath are NaN.
 std::vector<float> to_ground_range(std::span<const float> slant, int lines,

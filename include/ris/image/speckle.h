@@ -38,6 +38,7 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "ris/sensor/radar_params.h"
 #include "ris/util/counter_rng.h"
@@ -92,6 +93,29 @@ inline double fading_factor(FadingLaw law, double looks, std::uint64_t seed, std
   const double y = 1.0 + ziggurat_normal(rng, ziggurat_tables()) / std::sqrt(looks);
   return y > kSeedFadingFloor ? y : kSeedFadingFloor;
 }
+
+// Fading prepared for one image, applied a line at a time: the kernel of
+// apply_fading and of the fused render (ris/sim/slar_simulation.h). The
+// per-bin constants (the Gamma sampler's, sqrt(N)) are set up once; each
+// line's first Philox blocks are computed for 64 bins at once
+// (philox_first_blocks, vectorised), and a pixel whose draw needs more
+// words continues its own stream. The same bytes as fading_factor per pixel.
+class FadingField {
+ public:
+  // looks_per_bin: N per range bin, each finite and > 0.
+  FadingField(std::span<const double> looks_per_bin, FadingLaw law, std::uint64_t seed);
+  int bins() const { return static_cast<int>(looks_.size()); }
+  // Multiplies row[0, bins()) of image line `line` by its fading factors;
+  // NaN and non-positive pixels are left as they are.
+  void apply_line(float* row, int line) const;
+
+ private:
+  std::vector<double> looks_, sqrt_looks_;
+  std::vector<GammaSampler> gamma_;
+  FadingLaw law_;
+  std::uint64_t seed_;
+  const ZigguratTables* zig_;
+};
 
 // Multiplies each pixel of a lines x bins power raster (row = azimuth line,
 // column = range bin) by its fading factor, N = looks_per_bin[bin]. NaN and

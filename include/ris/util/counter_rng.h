@@ -23,6 +23,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace ris {
@@ -49,6 +50,14 @@ inline Philox4x32Block philox4x32_10(Philox4x32Block ctr, Philox4x32Key key) {
   return ctr;
 }
 
+// The first block of the streams (a0 + i, b, stream) of CounterRng, i in
+// [0, n): word k of stream i in words[k][i]. The same bits as philox4x32_10,
+// computed for many counters at once so that the rounds vectorise (the
+// speckle draws one stream per pixel of a line: a0 = the first bin, b = the
+// line). Integer arithmetic only, so an AVX2 clone gives the same bits.
+void philox_first_blocks(std::uint64_t seed, std::uint32_t a0, std::uint32_t b,
+                         std::uint32_t stream, std::size_t n, std::array<std::uint32_t*, 4> words);
+
 class CounterRng {
  public:
   static constexpr std::uint32_t kFadingStream = 0x46414400u;  // "FAD\0"
@@ -56,6 +65,17 @@ class CounterRng {
   CounterRng(std::uint64_t seed, std::uint32_t a, std::uint32_t b, std::uint32_t stream)
       : key_{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)},
         ctr_{a, b, 0u, stream} {}
+
+  // The same stream with its first block already computed (philox4x32_10 of
+  // the counter (a, b, 0, stream) under the seed, e.g. by
+  // philox_first_blocks for many pixels at once): the same numbers as the
+  // constructor above gives.
+  CounterRng(std::uint64_t seed, std::uint32_t a, std::uint32_t b, std::uint32_t stream,
+             const Philox4x32Block& first_block)
+      : key_{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)},
+        ctr_{a, b, 1u, stream},
+        block_(first_block),
+        used_(0) {}
 
   std::uint32_t next_u32() {
     if (used_ == 4) {
