@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "ris/geometry/line_scan.h"
-#include "ris/geometry/surface_gradient.h"
+#include "ris/geometry/terrain_line.h"
 #include "ris/geometry/terrain_sample.h"
 #include "ris/scene/geo_frame.h"
 #include "ris/util/error.h"
@@ -112,25 +112,34 @@ PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar_in
 
   g.allocate_samples();
 
-  const SurfaceGradient grad = surface_gradient(scene);
-  // Rays are independent: one per iteration, scratch per thread.
+  const TerrainTexels tex = terrain_texels(scene);
+  // Rays are independent: one per iteration, scratch per thread. Along a ray
+  // the line sampler (ris/geometry/terrain_line.h) gives the terrain of the
+  // samples within the scene; the rest are unseen.
 #pragma omp parallel
   {
-    std::vector<float> dh_du(static_cast<std::size_t>(g.samples));
+    const auto n = static_cast<std::size_t>(g.samples);
+    std::vector<float> dh_du(n), height(n), dz_dx(n), dz_dy(n);
+    std::vector<std::uint16_t> category(n);
+    std::vector<std::uint8_t> terrain_flags(n);
 #pragma omp for schedule(dynamic, 16)
     for (int ray = 0; ray < g.lines; ++ray) {
       const double alpha = pg.azimuth_rad(ray);
       const double look_x = std::sin(alpha), look_y = std::cos(alpha);
       const std::size_t base = g.index(ray, 0);
+      const GridLine line = grid_line(scene, p.site_x_m, p.site_y_m, look_x, look_y,
+                                      g.first_sample_u_m, g.sample_step_m);
+      const auto [begin, end] = inside_samples(line, scene.rows, scene.cols, g.samples);
+      sample_terrain_line(
+          tex, line, begin, end,
+          {height.data(), dz_dx.data(), dz_dy.data(), category.data(), terrain_flags.data()});
       for (int j = 0; j < g.samples; ++j) {
         const std::size_t i = base + static_cast<std::size_t>(j);
         const double u = g.sample_u_m(j);
-        const TerrainSample ts =
-            bilinear_terrain_sample(scene, &grad, p.site_x_m + u * look_x, p.site_y_m + u * look_y);
-        std::uint8_t f = 0;
-        if (!ts.inside) f |= sample_flag::kUnseen;
-        if (ts.inside && !ts.valid) f |= sample_flag::kNoData;
-        if (!ts.inside || !ts.valid) {
+        const bool inside = j >= begin && j < end;
+        const auto o = static_cast<std::size_t>(inside ? j - begin : 0);
+        std::uint8_t f = inside ? terrain_flags[o] : sample_flag::kUnseen;
+        if (f != 0) {
           g.height_m[i] = g.slant_range_m[i] = g.incidence_rad[i] = kNaN;
           g.local_incidence_rad[i] = g.area_m2[i] = kNaN;
           g.range_near_end_m[i] = g.range_far_end_m[i] = kNaN;
@@ -139,6 +148,12 @@ PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar_in
           dh_du[static_cast<std::size_t>(j)] = 0.0f;
           continue;
         }
+        TerrainSample ts;
+        ts.inside = ts.valid = true;
+        ts.height_m = height[o];
+        ts.dz_dx = dz_dx[o];
+        ts.dz_dy = dz_dy[o];
+        ts.category = category[o];
         const SampleLook look = look_at(ts, u, H, look_x, look_y);
         if (look.cos_local <= 0.0) f |= sample_flag::kBackFacing;
         g.height_m[i] = ts.height_m;

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "ris/geometry/line_scan.h"
 #include "ris/geometry/surface_gradient.h"
+#include "ris/geometry/terrain_line.h"
 #include "ris/geometry/terrain_sample.h"
 #include "ris/util/error.h"
 
@@ -57,29 +59,6 @@ struct DirectSampler {
   }
 };
 
-// Any heading: bilinear elevation and slope, nearest category.
-struct BilinearSampler {
-  const Scene* scene = nullptr;
-  const SurfaceGradient* grad = nullptr;
-  const Track* track = nullptr;
-  double first_u_m = 0.0;
-  double step_m = 0.0;
-  double line_x = 0.0, line_y = 0.0;  // world point of (s, u = 0)
-
-  void start_line(const Track& t, double s_m) {
-    const auto [x, y] = t.world_from_along_cross(s_m, 0.0);
-    line_x = x;
-    line_y = y;
-  }
-
-  TerrainSample at(int j) const {
-    const double u = first_u_m + j * step_m;
-    const double x = line_x + u * track->cross_x;
-    const double y = line_y + u * track->cross_y;
-    return bilinear_terrain_sample(*scene, grad, x, y);
-  }
-};
-
 bool nearly(double a, double b) {
   return std::abs(a - b) < 1e-9;
 }
@@ -93,16 +72,41 @@ struct LineScratch {
   }
 };
 
-// Fills one line: the terrain under each sample, the look geometry over the
-// line (look_line), then the element ends and the shadow and layover scans
-// (shared with PPI rays and the fused path: ris/geometry/line_scan.h).
-template <typename Sampler>
-void fill_line(SlarGeometry& g, Sampler& sampler, int line, LineScratch& s) {
+// The look geometry over samples [j0, j0 + n) of a line whose terrain is in
+// place (look_line), then the element ends and the shadow and layover scans
+// (shared with PPI rays and the fused path: ris/geometry/line_scan.h). The
+// scans skip unseen samples, so running them on the seen span alone gives
+// the same flags.
+void scan_line(SlarGeometry& g, int line, int j0, int n, LineScratch& s) {
   const Track& t = g.track;
   const double H = g.altitude_m;
-  sampler.start_line(t, g.line_s_m(line));
-  const std::size_t base = g.index(line, 0);
+  const std::size_t base = g.index(line, 0) + static_cast<std::size_t>(j0);
+  const std::size_t o = static_cast<std::size_t>(j0);
+  const LineTerrain terrain{n, s.u.data() + o, &g.height_m[base], s.dz_dx.data() + o,
+                            s.dz_dy.data() + o};
+  const LineLookFrame frame{H, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
+  look_line(terrain, frame,
+            {&g.slant_range_m[base], &g.incidence_rad[base], &g.local_incidence_rad[base],
+             &g.area_m2[base], s.dh_du.data() + o, &g.flags[base]});
+  const LineSamples ls{n,
+                       g.sample_u_m(j0),
+                       g.sample_step_m,
+                       H,
+                       &g.height_m[base],
+                       &g.slant_range_m[base],
+                       &g.range_near_end_m[base],
+                       &g.range_far_end_m[base],
+                       s.dh_du.data() + o,
+                       &g.flags[base]};
+  line_element_ends(ls);
+  mark_shadow_and_layover(ls);
+}
 
+// Fills one line along a grid axis: the terrain under each sample, then the
+// line's scans.
+void fill_direct_line(SlarGeometry& g, DirectSampler& sampler, int line, LineScratch& s) {
+  sampler.start_line(g.track, g.line_s_m(line));
+  const std::size_t base = g.index(line, 0);
   for (int j = 0; j < g.samples; ++j) {
     const std::size_t i = base + static_cast<std::size_t>(j);
     const std::size_t jj = static_cast<std::size_t>(j);
@@ -118,25 +122,33 @@ void fill_line(SlarGeometry& g, Sampler& sampler, int line, LineScratch& s) {
     s.dz_dy[jj] = terrain ? ts.dz_dy : kNaN;
     g.category[i] = terrain ? ts.category : 0;
   }
-  const LineTerrain terrain{g.samples, s.u.data(), &g.height_m[base], s.dz_dx.data(),
-                            s.dz_dy.data()};
-  const LineLookFrame frame{H, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
-  look_line(terrain, frame,
-            {&g.slant_range_m[base], &g.incidence_rad[base], &g.local_incidence_rad[base],
-             &g.area_m2[base], s.dh_du.data(), &g.flags[base]});
+  scan_line(g, line, 0, g.samples, s);
+}
 
-  const LineSamples ls{g.samples,
-                       g.first_sample_u_m,
-                       g.sample_step_m,
-                       H,
-                       &g.height_m[base],
-                       &g.slant_range_m[base],
-                       &g.range_near_end_m[base],
-                       &g.range_far_end_m[base],
-                       s.dh_du.data(),
-                       &g.flags[base]};
-  line_element_ends(ls);
-  mark_shadow_and_layover(ls);
+// Fills one line off the grid axes: the samples within the scene from the
+// line sampler, then the scans over them; the others unseen (NaN, as the
+// scans would leave a sample without terrain).
+void fill_oblique_line(const Scene& scene, const TerrainTexels& tex, SlarGeometry& g, int line,
+                       LineScratch& s) {
+  const SlarLineSpan span = slar_line_span(scene, g, line);
+  const std::size_t base = g.index(line, 0);
+  const auto unseen = [&](int j0, int j1) {
+    for (int j = j0; j < j1; ++j) {
+      const std::size_t i = base + static_cast<std::size_t>(j);
+      g.height_m[i] = g.slant_range_m[i] = g.incidence_rad[i] = g.local_incidence_rad[i] = kNaN;
+      g.area_m2[i] = g.range_near_end_m[i] = g.range_far_end_m[i] = kNaN;
+      g.category[i] = 0;
+      g.flags[i] = sample_flag::kUnseen;
+    }
+  };
+  unseen(0, span.begin);
+  unseen(span.end, g.samples);
+  const std::size_t b = base + static_cast<std::size_t>(span.begin);
+  const std::size_t o = static_cast<std::size_t>(span.begin);
+  sample_terrain_line(
+      tex, span.grid, span.begin, span.end,
+      {&g.height_m[b], s.dz_dx.data() + o, s.dz_dy.data() + o, &g.category[b], &g.flags[b]});
+  scan_line(g, line, span.begin, span.end - span.begin, s);
 }
 
 }  // namespace
@@ -233,6 +245,18 @@ void SlarGeometry::tally_flags(const Scene& scene) {
   nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));
 }
 
+SlarLineSpan slar_line_span(const Scene& scene, const SlarGeometry& g, int line) {
+  const Track& t = g.track;
+  const auto [x0, y0] = t.world_from_along_cross(g.line_s_m(line), 0.0);
+  SlarLineSpan span;
+  span.grid = grid_line(scene, x0, y0, t.cross_x, t.cross_y, g.first_sample_u_m, g.sample_step_m);
+  std::tie(span.begin, span.end) = inside_samples(span.grid, scene.rows, scene.cols, g.samples);
+  // In front of the track only (slar_geometry_layout starts at u > 0 off
+  // the axes; kept for any layout).
+  while (span.begin < span.end && !(g.sample_u_m(span.begin) > 0.0)) ++span.begin;
+  return span;
+}
+
 SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, double line_spacing_m,
                                    const std::string& radar_file) {
   scene.validate("scene");
@@ -240,35 +264,34 @@ SlarGeometry compute_slar_geometry(const Scene& scene, const Track& track, doubl
   SlarGeometry g = slar_geometry_layout(scene, track, line_spacing_m);
   const bool along_y = nearly(std::abs(track.along_y), 1.0);
 
-  const SurfaceGradient grad = surface_gradient(scene);
+  // Along an axis the direct sampler reads the slope rasters; off the axes
+  // the line sampler reads texels.
+  SurfaceGradient grad;
+  TerrainTexels tex;
   DirectSampler direct;
-  BilinearSampler bilinear;
   if (g.direct_sampling) {
+    grad = surface_gradient(scene);
     direct.scene = &scene;
     direct.grad = &grad;
     direct.cross_is_x = along_y;
     direct.u_grows_with_index = along_y ? track.cross_x > 0.0 : track.cross_y < 0.0;
   } else {
-    bilinear.scene = &scene;
-    bilinear.grad = &grad;
-    bilinear.track = &g.track;
-    bilinear.first_u_m = g.first_sample_u_m;
-    bilinear.step_m = g.sample_step_m;
+    tex = terrain_texels(scene);
   }
 
   g.allocate_samples();
 
-  // Lines are independent: one line per iteration, samplers copied per
-  // thread (they hold only the current line's position), scratch per thread.
-#pragma omp parallel firstprivate(direct, bilinear)
+  // Lines are independent: one line per iteration, the sampler copied per
+  // thread (it holds only the current line's position), scratch per thread.
+#pragma omp parallel firstprivate(direct)
   {
     LineScratch scratch(g);
 #pragma omp for schedule(dynamic, 16)
     for (int line = 0; line < g.lines; ++line) {
       if (g.direct_sampling)
-        fill_line(g, direct, line, scratch);
+        fill_direct_line(g, direct, line, scratch);
       else
-        fill_line(g, bilinear, line, scratch);
+        fill_oblique_line(scene, tex, g, line, scratch);
     }
   }
 

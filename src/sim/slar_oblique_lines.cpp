@@ -1,12 +1,13 @@
 // The fused SLAR / incoherent SAR run for a track off the grid axes (declared
-// in sim/slar_line_kernels.h): terrain sampled bilinearly along each line,
-// the shared line geometry and image formation, scene maps scattered per line.
+// in sim/slar_line_kernels.h): terrain sampled bilinearly along each line
+// within the scene, the shared line geometry and image formation, scene maps
+// scattered per line.
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
-#include "ris/geometry/surface_gradient.h"
-#include "ris/geometry/terrain_sample.h"
+#include "ris/geometry/terrain_line.h"
 #include "sim/slar_line_kernels.h"
 
 namespace ris::detail {
@@ -21,8 +22,10 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 // whichever axis the strip crosses more steeply) over the few cells where the
 // along-track distance is within a line of it, each checked exactly. Every
 // cell belongs to one line, so lines in parallel never write the same cell.
-void scatter_line_cells(const Scene& scene, const SlarGeometry& g, int line, const LineScratch& s,
-                        double near_m, double far_m, SceneGeometryMaps& maps) {
+// The scratch holds samples [begin, end) of the line, from index 0.
+void scatter_line_cells(const Scene& scene, const SlarGeometry& g, int line, int begin, int end,
+                        const LineScratch& s, double near_m, double far_m,
+                        SceneGeometryMaps& maps) {
   const Track& t = g.track;
   const double ds = g.line_spacing_m;
   const double s_lo = line * ds, s_hi = (line + 1) * ds;
@@ -70,7 +73,12 @@ void scatter_line_cells(const Scene& scene, const SlarGeometry& g, int line, con
       // Cells outside the swath keep their initial mask.
       if (!scene_cell_sample(scene, g, r, c, cell_line, j) || cell_line != line) continue;
       const std::size_t cell = scene.index(r, c);
-      const std::size_t jj = static_cast<std::size_t>(j);
+      if (j < begin || j >= end) {  // an unseen sample (beyond the scene's edge)
+        scene_map_cell(scene.valid[cell] != 0, sample_flag::kUnseen, kNaN, kNaN, near_m, far_m,
+                       maps.mask[cell], maps.local_incidence_deg[cell]);
+        continue;
+      }
+      const auto jj = static_cast<std::size_t>(j - begin);
       scene_map_cell(scene.valid[cell] != 0, s.flags[jj], s.range[jj], s.local_incidence[jj],
                      near_m, far_m, maps.mask[cell], maps.local_incidence_deg[cell]);
     }
@@ -79,15 +87,16 @@ void scatter_line_cells(const Scene& scene, const SlarGeometry& g, int line, con
 
 }  // namespace
 
-// The fused run for any other heading: the stage path's bilinear sampler
-// (slar_geometry.cpp fill_line with BilinearSampler: bilinear height and
-// slope at half a cell, the nearest cell's category) line by line, then the
-// shared line geometry and image formation, and the scene maps scattered
-// per line. Only the slope rasters (8 bytes per cell) are whole-scene.
+// The fused run for any other heading: per line, the samples within the
+// scene (slar_line_span) from the line sampler (ris/geometry/terrain_line.h),
+// the shared line geometry and image formation over those samples only,
+// and the scene maps scattered per line. The stage path samples and scans
+// the same span (slar_geometry.cpp fill_oblique_line), so the bytes agree.
+// Only the texels (16 bytes per cell) are whole-scene.
 void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
                        const SlarImagingParams& p, const std::string& radar_file,
                        SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts) {
-  const SurfaceGradient grad = surface_gradient(scene);
+  const TerrainTexels tex = terrain_texels(scene);
   const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, radar_file);
   const detail::SlarElementContext ctx = element_context(p, gain2, lut, prof.bins);
   const Track& t = g.track;
@@ -106,28 +115,25 @@ void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lu
   {
     LineScratch s(g, prof.bins);
     SlarLineCounts local;
+    // The line's span as a line of its own (line_geometry and accumulate_line
+    // run over samples 0..n of the scratch): its first sample's u and count.
+    SlarGeometry span_layout = g;
+    const std::vector<float> u_all = s.u;
 #pragma omp for schedule(dynamic, 16)
     for (int line = 0; line < g.lines; ++line) {
-      const auto [line_x, line_y] = t.world_from_along_cross(g.line_s_m(line), 0.0);
-      for (int j = 0; j < g.samples; ++j) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        const double u = g.sample_u_m(j);
-        const TerrainSample ts =
-            bilinear_terrain_sample(scene, &grad, line_x + u * t.cross_x, line_y + u * t.cross_y);
-        std::uint8_t f = 0;
-        if (!ts.inside) f |= sample_flag::kUnseen;
-        if (ts.inside && !ts.valid) f |= sample_flag::kNoData;
-        f |= s.unseen[jj];
-        s.flags[jj] = f;
-        const bool terrain = ts.inside && ts.valid;
-        s.height[jj] = terrain ? ts.height_m : kNaN;
-        s.dz_dx[jj] = terrain ? ts.dz_dx : kNaN;
-        s.dz_dy[jj] = terrain ? ts.dz_dy : kNaN;
-        s.category[jj] = terrain ? ts.category : std::uint16_t{0};
-      }
-      line_geometry(g, frame, need_incidence, s);
-      in_swath += accumulate_line(ctx, g.samples, s, prof, line, local, p.range_window_bins);
-      scatter_line_cells(scene, g, line, s, near_m, far_m, maps);
+      const SlarLineSpan span = slar_line_span(scene, g, line);
+      const int n = span.end - span.begin;
+      const auto b = static_cast<std::size_t>(span.begin);
+      sample_terrain_line(
+          tex, span.grid, span.begin, span.end,
+          {s.height.data(), s.dz_dx.data(), s.dz_dy.data(), s.category.data(), s.flags.data()});
+      std::copy(u_all.begin() + static_cast<std::ptrdiff_t>(b),
+                u_all.begin() + static_cast<std::ptrdiff_t>(b) + n, s.u.begin());
+      span_layout.samples = n;
+      span_layout.first_sample_u_m = g.sample_u_m(span.begin);
+      line_geometry(span_layout, frame, need_incidence, s);
+      in_swath += accumulate_line(ctx, n, s, prof, line, local, p.range_window_bins);
+      scatter_line_cells(scene, g, line, span.begin, span.end, s, near_m, far_m, maps);
     }
 #pragma omp critical(ris_slar_line_counts)
     counts.add(local);

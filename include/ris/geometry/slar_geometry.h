@@ -12,7 +12,9 @@
 //     track.
 //   - bilinear: any other heading; elevation and slope are interpolated
 //     bilinearly, the category is the nearest cell's, at a step of half the
-//     smaller cell size. A sample touching a no-data cell is no data.
+//     smaller cell size (ris/geometry/terrain_line.h). A sample touching a
+//     no-data cell is no data. Only the samples within the scene
+//     (slar_line_span) are sampled and scanned; the rest are unseen.
 // The slope comes from ris/geometry/surface_gradient.h (central differences).
 //
 // The result is plain data (line-major arrays of lines x samples), so image
@@ -30,6 +32,7 @@
 #include <vector>
 
 #include "ris/geometry/line_scan.h"  // sample_flag, sample_visible
+#include "ris/geometry/terrain_line.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/track.h"
 
@@ -99,6 +102,17 @@ void check_terrain_below_sensor(float max_elevation_m, int row, int col, double 
 // only the scene's grid, not its data (used by the fused and streamed
 // pipelines, ris/sim/slar_line_blocks.h).
 SlarGeometry slar_geometry_layout(const Scene& scene, const Track& track, double line_spacing_m);
+
+// A line of a heading off the grid axes (!direct_sampling) in grid
+// coordinates, and its samples [begin, end) that are within the scene and in
+// front of the track (u > 0); the others are unseen. Shared by the stage path
+// (compute_slar_geometry) and the fused one (ris/sim/slar_line_blocks.h), so
+// that both sample and scan the same samples.
+struct SlarLineSpan {
+  GridLine grid;
+  int begin = 0, end = 0;
+};
+SlarLineSpan slar_line_span(const Scene& scene, const SlarGeometry& g, int line);
 
 // Computes the geometry. line_spacing_m <= 0 means one scene cell (the cell
 // size along the track's nearer grid axis). Throws InputError naming

@@ -13,6 +13,7 @@
 //   float dzdx = g.dz_dx[scene.index(r, c)];
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "ris/scene/scene.h"
@@ -39,6 +40,21 @@ inline float slope_difference(bool lo_ok, float z_lo, bool hi_ok, float z_hi, fl
   const double num = (lo_ok | hi_ok) ? a - b : 0.0;
   const double den = (lo_ok & hi_ok) ? 2.0 * step_m : step_m;
   return static_cast<float>(num / den);
+}
+
+// (dz/dx, dz/dy) at cell (r, c), which has data: the rule above, shared by
+// surface_gradient and the line sampler's texels (ris/geometry/terrain_line.h).
+inline std::pair<float, float> cell_slope(const Scene& scene, int r, int c) {
+  const auto ok = [&](int rr, int cc) {
+    return scene.contains(rr, cc) && scene.valid[scene.index(rr, cc)];
+  };
+  const auto z = [&](int rr, int cc) {
+    return scene.contains(rr, cc) ? scene.elevation_m[scene.index(rr, cc)] : 0.0f;
+  };
+  const float zc = scene.elevation_m[scene.index(r, c)];
+  // North (+y) is towards row r - 1.
+  return {slope_difference(ok(r, c - 1), z(r, c - 1), ok(r, c + 1), z(r, c + 1), zc, scene.dx_m),
+          slope_difference(ok(r + 1, c), z(r + 1, c), ok(r - 1, c), z(r - 1, c), zc, scene.dy_m)};
 }
 
 }  // namespace ris

@@ -1,0 +1,91 @@
+// The terrain along a straight ground line sampled at equal steps: SLAR/SAR
+// zero-Doppler lines off the grid axes (stage path and fused path alike) and
+// PPI rays (MODEL.md section 2, "Tracks that are not along a grid axis":
+// bilinear elevation and slope, the nearest cell's category, at a step no
+// larger than half a cell).
+//
+// Along a line the grid position advances by a constant step, so sample j
+// sits at (col0 + j dcol, row0 + j drow); the samples within the scene are
+// one interval [begin, end), found once per line (inside_samples), and only
+// those are sampled. The sampler reads one 16-byte texel per corner cell
+// (height, dz/dx, dz/dy, category; TerrainTexels) instead of four rasters,
+// and weights it as one 4-float vector: the bilinear rule and its weights
+// are ris/geometry/terrain_sample.h's bilinear_footprint.
+//
+// Example (one SLAR line of g.samples samples at along-track position s_m):
+//   const ris::TerrainTexels tex = ris::terrain_texels(scene);
+//   const auto [x0, y0] = track.world_from_along_cross(s_m, 0.0);
+//   const ris::GridLine line = ris::grid_line(scene, x0, y0, track.cross_x, track.cross_y,
+//                                             g.first_sample_u_m, g.sample_step_m);
+//   const auto [begin, end] = ris::inside_samples(line, scene.rows, scene.cols, g.samples);
+//   ris::sample_terrain_line(tex, line, begin, end, {height, dz_dx, dz_dy, category, flags});
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "ris/geometry/line_scan.h"  // sample_flag
+#include "ris/scene/scene.h"
+
+namespace ris {
+
+// One cell's terrain as the line sampler reads it: height (NaN where the cell
+// has no data), the slope of ris/geometry/surface_gradient.h (NaN where no
+// data) and the category (exact as a float up to 2^24).
+struct alignas(16) TerrainTexel {
+  float height_m = 0.0f;
+  float dz_dx = 0.0f;
+  float dz_dy = 0.0f;
+  float category = 0.0f;
+};
+
+struct TerrainTexels {
+  int rows = 0, cols = 0;
+  std::vector<TerrainTexel> texel;  // rows * cols, Scene::index order
+};
+
+// The texels of a whole scene (16 bytes a cell), in parallel over rows.
+TerrainTexels terrain_texels(const Scene& scene);
+
+// A straight line of samples in grid coordinates (Scene::grid_from_world:
+// col east, row south, cell centres at integer + 1/2).
+struct GridLine {
+  double col0 = 0.0, row0 = 0.0;  // sample 0
+  double dcol = 0.0, drow = 0.0;  // per sample
+  double col(int j) const { return col0 + j * dcol; }
+  double row(int j) const { return row0 + j * drow; }
+  // Within the scene rectangle (edges included), the rule of
+  // bilinear_terrain_sample.
+  bool inside(int j, int rows, int cols) const {
+    const double c = col(j), r = row(j);
+    return c >= 0.0 && c <= cols && r >= 0.0 && r <= rows;
+  }
+};
+
+// The line from world point (x0_m, y0_m) along the unit ground direction
+// (dir_x, dir_y), sample j at distance first_u_m + j step_m.
+GridLine grid_line(const Scene& scene, double x0_m, double y0_m, double dir_x, double dir_y,
+                   double first_u_m, double step_m);
+
+// The samples of [0, samples) within the scene: one interval (the position
+// is monotone in j), found from the line-rectangle intersection and checked
+// exactly (GridLine::inside) at its ends. begin == end when none.
+std::pair<int, int> inside_samples(const GridLine& line, int rows, int cols, int samples);
+
+// sample_terrain_line's outputs, out[j - begin] for sample j.
+struct SampledTerrain {
+  float* height_m;          // NaN where no data
+  float* dz_dx;             // NaN where no data
+  float* dz_dy;             // NaN where no data
+  std::uint16_t* category;  // 0 where no data
+  std::uint8_t* flags;      // sample_flag::kNoData where the sample touches a no-data cell, else 0
+};
+
+// Bilinear height and slope and the nearest cell's category for samples
+// [begin, end), all inside the scene (inside_samples).
+void sample_terrain_line(const TerrainTexels& tex, const GridLine& line, int begin, int end,
+                         const SampledTerrain& out);
+
+}  // namespace ris
