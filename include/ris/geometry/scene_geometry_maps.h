@@ -44,15 +44,19 @@ struct SceneGeometryMaps {
 SceneGeometryMaps scene_geometry_maps(const Scene& scene, const SlarGeometry& geometry,
                                       const SlantRangeBins& bins);
 
-// One cell's mask bits and local incidence (degrees, NaN when none) from the
-// geometry sample it takes: shared by scene_geometry_maps and the fused paths
-// (ris/sim/slar_line_blocks.h) so that they agree to the bit. far_m:
-// bins.far_m().
-inline void scene_map_cell(bool cell_valid, std::uint8_t sample_flags, float slant_range_m,
-                           float local_incidence_rad, double near_m, double far_m,
-                           std::uint8_t& mask, float& local_incidence_deg) {
-  std::uint8_t f = cell_valid ? 0 : scene_flag::kNoData;
+// A geometry sample's part of the maps of the cells that take it: its mask
+// bits (scene_flag) and local incidence in degrees (NaN when the sample has
+// no data or is unseen). far_m: bins.far_m().
+struct SampleMapValue {
+  std::uint8_t mask = 0;
+  float local_incidence_deg = 0.0f;
+};
+
+inline SampleMapValue scene_map_sample(std::uint8_t sample_flags, float slant_range_m,
+                                       float local_incidence_rad, double near_m, double far_m) {
+  SampleMapValue v;
   const std::uint8_t sf = sample_flags;
+  std::uint8_t f = 0;
   if (sf & sample_flag::kNoData) f |= scene_flag::kNoData;
   if (sf & sample_flag::kShadow) f |= scene_flag::kShadow;
   if (sf & sample_flag::kLayover) f |= scene_flag::kLayover;
@@ -62,10 +66,31 @@ inline void scene_map_cell(bool cell_valid, std::uint8_t sample_flags, float sla
   if ((sf & sample_flag::kUnseen) || (has_data && !(R >= near_m && R < far_m))) {
     f |= scene_flag::kOutsideSwath;
   }
-  local_incidence_deg = (has_data && !(f & scene_flag::kNoData))
-                            ? static_cast<float>(rad_to_deg(local_incidence_rad))
-                            : std::numeric_limits<float>::quiet_NaN();
-  mask = f;
+  v.mask = f;
+  v.local_incidence_deg = has_data ? static_cast<float>(rad_to_deg(local_incidence_rad))
+                                   : std::numeric_limits<float>::quiet_NaN();
+  return v;
+}
+
+// A cell's maps from its sample's part: a cell without data adds kNoData and
+// has no local incidence.
+inline void scene_map_from_sample(bool cell_valid, const SampleMapValue& v, std::uint8_t& mask,
+                                  float& local_incidence_deg) {
+  mask = static_cast<std::uint8_t>(v.mask | (cell_valid ? 0 : scene_flag::kNoData));
+  local_incidence_deg =
+      cell_valid ? v.local_incidence_deg : std::numeric_limits<float>::quiet_NaN();
+}
+
+// One cell's mask bits and local incidence (degrees, NaN when none) from the
+// geometry sample it takes: shared by scene_geometry_maps and the fused paths
+// (ris/sim/slar_line_blocks.h) so that they agree to the bit. far_m:
+// bins.far_m().
+inline void scene_map_cell(bool cell_valid, std::uint8_t sample_flags, float slant_range_m,
+                           float local_incidence_rad, double near_m, double far_m,
+                           std::uint8_t& mask, float& local_incidence_deg) {
+  scene_map_from_sample(
+      cell_valid, scene_map_sample(sample_flags, slant_range_m, local_incidence_rad, near_m, far_m),
+      mask, local_incidence_deg);
 }
 
 // std::round (half away from zero) for |x| < 2^62, inline: without SSE4.1
@@ -77,21 +102,43 @@ inline double round_half_away(double x) {
   return t + (d >= 0.5 ? 1.0 : 0.0) - (d <= -0.5 ? 1.0 : 0.0);
 }
 
-// The (line, sample) a cell takes: the nearest line and sample to its centre
-// (false: none, the cell is outside the swath).
-inline bool scene_cell_sample(const Scene& scene, const SlarGeometry& g, int r, int c, int& line,
-                              int& sample) {
-  const auto [x, y] = scene.cell_centre(r, c);
-  const auto [s, u] = g.track.along_cross(x, y);
-  const double lf = s / g.line_spacing_m - 0.5, jf = (u - g.first_sample_u_m) / g.sample_step_m;
-  // Far outside the grid (or NaN): no line or sample, before any conversion.
-  if (!(std::abs(lf) < 1e15 && std::abs(jf) < 1e15)) return false;
-  const double l = round_half_away(lf);
-  const double j = round_half_away(jf);
-  if (!(l >= 0 && l < g.lines && j >= 0 && j < g.samples)) return false;
-  line = static_cast<int>(l);
-  sample = static_cast<int>(j);
+// Which (line, sample) each cell takes: the nearest line and sample to its
+// centre. The fractional line and sample indices are affine in the cell's
+// row and column,
+//   line_f = (line0 + r line_dr) + c line_dc,  sample_f likewise,
+// evaluated in exactly this order by everyone (scene_geometry_maps, the fused
+// oblique path's per-block scatter), so that a row's base is computed once
+// and every path assigns every cell the same sample.
+struct CellSampleFrame {
+  double line0 = 0.0, line_dr = 0.0, line_dc = 0.0;        // at cell (0, 0); per row; per column
+  double sample0 = 0.0, sample_dr = 0.0, sample_dc = 0.0;  // the same for the sample index
+  int lines = 0, samples = 0;
+
+  double line_f(double row_base, int c) const { return row_base + c * line_dc; }
+  double line_row_base(int r) const { return line0 + r * line_dr; }
+  double sample_f(double row_base, int c) const { return row_base + c * sample_dc; }
+  double sample_row_base(int r) const { return sample0 + r * sample_dr; }
+};
+
+// line_f = s / line_spacing - 1/2 and sample_f = (u - first_sample_u) /
+// sample_step at the cell's centre (s, u: along- and cross-track, track.h).
+CellSampleFrame cell_sample_frame(const Scene& scene, const SlarGeometry& g);
+
+// Rounds (half away from zero) a cell's fractional line or sample index;
+// false when outside [0, n) (or not finite, or far outside).
+inline bool nearest_index(double f, int n, int& index) {
+  if (!(std::abs(f) < 1e15)) return false;
+  const double k = round_half_away(f);
+  if (!(k >= 0 && k < n)) return false;
+  index = static_cast<int>(k);
   return true;
+}
+
+// The (line, sample) cell (r, c) takes (false: none, the cell is outside the
+// swath).
+inline bool cell_sample(const CellSampleFrame& f, int r, int c, int& line, int& sample) {
+  return nearest_index(f.line_f(f.line_row_base(r), c), f.lines, line) &&
+         nearest_index(f.sample_f(f.sample_row_base(r), c), f.samples, sample);
 }
 
 }  // namespace ris

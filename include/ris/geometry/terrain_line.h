@@ -69,9 +69,9 @@ struct GridLine {
 GridLine grid_line(const Scene& scene, double x0_m, double y0_m, double dir_x, double dir_y,
                    double first_u_m, double step_m);
 
-// The samples of [0, samples) within the scene: one interval (the position
-// is monotone in j), found from the line-rectangle intersection and checked
-// exactly (GridLine::inside) at its ends. begin == end when none.
+// The samples of [0, samples) within the scene: exactly those where
+// GridLine::inside holds, one interval (the position is monotone in j),
+// found by bisection. begin == end when none.
 std::pair<int, int> inside_samples(const GridLine& line, int rows, int cols, int samples);
 
 // sample_terrain_line's outputs, out[j - begin] for sample j.
