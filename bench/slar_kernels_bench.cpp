@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <cmath>
 #include <memory>
 
 #include "ris/backscatter/library.h"
@@ -18,6 +19,7 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_derived.h"
 #include "ris/sim/slar_simulation.h"
+#include "ris/util/float_select.h"
 #include "ris/util/memory_reuse.h"
 #include "ris/util/units.h"
 
@@ -80,6 +82,22 @@ void BM_Render(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() *
                           static_cast<std::int64_t>(sim.image.mean_power_w.size()));
 }
+
+// The ground-range reference height's exact median of every cell with data
+// (ris/util/float_select.h, as simulate_slar calls it). Arg: threads.
+void BM_MedianElevation(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const ris::Scene& scene = fixture().scene;
+  const std::uint8_t* valid = scene.valid.data();
+  const float* h = scene.elevation_m.data();
+  for (auto _ : state) {
+    const auto m = ris::median_pair_float(
+        scene.elevation_m, [=](std::size_t i) { return valid[i] && std::isfinite(h[i]); });
+    benchmark::DoNotOptimize(m);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(scene.size()));
+}
+BENCHMARK(BM_MedianElevation)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Args: threads, oblique (0/1).
 BENCHMARK(BM_Geometry)->ArgsProduct({{1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -83,8 +83,7 @@ class LibrarySource final : public Sigma0Source {
   // curve, not per angle.
   void sigma0_curve(std::uint16_t category, const double* incidence_rad, std::size_t n,
                     const RadarBand& band, double* out) const override {
-    const BackscatterModel& m = resolve(category, band);
-    for (std::size_t i = 0; i < n; ++i) out[i] = m.sigma0(incidence_rad[i], band);
+    resolve(category, band).sigma0_curve(incidence_rad, n, band, out);
   }
 
   std::string category_name(std::uint16_t category) const override {

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/util/error.h"
@@ -185,6 +187,31 @@ TEST(Library, ShippedGenericTerrainCoversIds20To27FromLToKuBand) {
   const RadarBand x{9.6e9, Polarisation::VV};
   EXPECT_LT(src->sigma0(23, deg_to_rad(40.0), x), 0.316 * src->sigma0(22, deg_to_rad(40.0), x));
   EXPECT_LT(src->sigma0(25, deg_to_rad(40.0), x), 0.316 * src->sigma0(24, deg_to_rad(40.0), x));
+}
+
+// The LUT build asks for whole curves (sigma0_curve: band terms once, the
+// water cloud's ground as a curve too); every shipped category gives exactly
+// sigma0() at every angle of the table, L to Ku band, each polarisation.
+TEST(Library, CurvesAreThePerAngleValuesExactly) {
+  for (const char* file : {"ku-geometric.toml", "generic-terrain.toml"}) {
+    auto src = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/" + file);
+    std::vector<double> theta;
+    for (int i = 0; i <= Sigma0Lut::kSteps; ++i)
+      theta.push_back(std::min(i * Sigma0Lut::kStepRad, kPi / 2.0));
+    for (double f : {1.25e9, 5.3e9, 9.6e9, 18.0e9}) {
+      for (Polarisation p : {Polarisation::HH, Polarisation::VV, Polarisation::HV}) {
+        const RadarBand band{f, p};
+        for (std::uint16_t c : src->category_ids()) {
+          std::vector<double> curve(theta.size());
+          src->sigma0_curve(c, theta.data(), theta.size(), band, curve.data());
+          for (std::size_t i = 0; i < theta.size(); ++i) {
+            ASSERT_EQ(curve[i], src->sigma0(c, theta[i], band))
+                << file << " category " << c << " " << f << " Hz, " << theta[i] << " rad";
+          }
+        }
+      }
+    }
+  }
 }
 
 TEST(Library, ShippedTableMatchesTheLibraryItWasGeneratedFrom) {

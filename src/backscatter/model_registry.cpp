@@ -49,6 +49,10 @@ class FrequencyLimited final : public BackscatterModel {
   double sigma0(double incidence_rad, const RadarBand& band) const override {
     return inner_->sigma0(incidence_rad, band);
   }
+  void sigma0_curve(const double* incidence_rad, std::size_t n, const RadarBand& band,
+                    double* out) const override {
+    inner_->sigma0_curve(incidence_rad, n, band, out);
+  }
   void check_band(const RadarBand& band) const override {
     if (band.frequency_hz < lo_hz_ || band.frequency_hz > hi_hz_) {
       report_out_of_validity(
@@ -71,6 +75,11 @@ class FrequencyLimited final : public BackscatterModel {
 }  // namespace
 
 void BackscatterModel::check_band(const RadarBand&) const {}
+
+void BackscatterModel::sigma0_curve(const double* incidence_rad, std::size_t n,
+                                    const RadarBand& band, double* out) const {
+  for (std::size_t i = 0; i < n; ++i) out[i] = sigma0(incidence_rad[i], band);
+}
 
 void report_out_of_validity(const ModelContext& ctx, const std::string& key_path,
                             const std::string& what) {

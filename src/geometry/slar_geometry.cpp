@@ -154,6 +154,15 @@ void fill_oblique_line(const Scene& scene, const TerrainTexels& tex, SlarGeometr
 }  // namespace
 
 void check_terrain_below_sensor(const Scene& scene, double altitude_m, const std::string& file) {
+  // Almost always nothing reaches the sensor: first a branch-free scan that
+  // only says whether a cell does (it vectorises), then, only then, the
+  // highest cell for the message.
+  const std::size_t n = scene.size();
+  const std::uint8_t* valid = scene.valid.data();
+  const float* h = scene.elevation_m.data();
+  int reaches = 0;
+  for (std::size_t i = 0; i < n; ++i) reaches |= (valid[i] != 0) & (double(h[i]) >= altitude_m);
+  if (!reaches) return;
   std::size_t worst = scene.size();
   float max_h = -std::numeric_limits<float>::infinity();
   for (std::size_t i = 0; i < scene.size(); ++i) {

@@ -9,11 +9,15 @@ namespace {
 
 // Categories of the cells with data, sorted.
 std::vector<std::uint16_t> used_categories(const Scene& scene) {
-  std::vector<std::uint8_t> seen(65536, 0);
-  for (std::size_t i = 0; i < scene.size(); ++i)
-    if (scene.valid[i]) seen[scene.category[i]] = 1;
+  // Branch-free: a cell without data marks slot 65536, which is not read.
+  std::vector<std::uint8_t> seen(65537, 0);
+  const std::size_t n = scene.size();
+  const std::uint8_t* valid = scene.valid.data();
+  const std::uint16_t* category = scene.category.data();
+  std::uint8_t* mark = seen.data();
+  for (std::size_t i = 0; i < n; ++i) mark[valid[i] ? std::size_t{category[i]} : 65536u] = 1;
   std::vector<std::uint16_t> out;
-  for (std::size_t c = 0; c < seen.size(); ++c)
+  for (std::size_t c = 0; c < 65536; ++c)
     if (seen[c]) out.push_back(static_cast<std::uint16_t>(c));
   return out;
 }

@@ -82,7 +82,7 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   RadarParams& radar = sim.radar;
   sim.derived = derive(radar);
   const std::string backscatter_file = options.backscatter_name(sigma0);
-  if (std::count(scene.valid.begin(), scene.valid.end(), 1) == 0) {
+  if (std::find(scene.valid.begin(), scene.valid.end(), 1) == scene.valid.end()) {
     throw InputError("scene", "", "the scene has no cell with data");
   }
 

@@ -7,12 +7,14 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <string>
 
 #include "ris/image/greytone.h"
 #include "ris/image/greytone_image.h"
 #include "ris/image/ground_range.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/slar_products.h"
+#include "ris/util/error.h"
 #include "slar_fixtures.h"
 #include "test_inputs.h"
 #include "test_util.h"
@@ -123,6 +125,30 @@ TEST(SlarSimulation, RenderEqualsTheWholeImageSteps) {
     }
   }
   omp_set_num_threads(saved);
+}
+
+// Terrain at or above the sensor is an InputError naming the highest cell with
+// data (a higher cell without data does not count), on both paths.
+TEST(SlarSimulation, TerrainAboveTheSensorNamesTheHighestCell) {
+  for (const bool keep_geometry : {false, true}) {
+    Scene s = small_scene();
+    s.elevation_m[s.index(5, 7)] = 3100.0f;  // the radar flies at 3000 m
+    s.elevation_m[s.index(6, 7)] = 3000.0f;
+    s.elevation_m[s.index(20, 30)] = 9000.0f;
+    s.valid[s.index(20, 30)] = 0;
+    SlarOptions o;
+    o.keep_geometry = keep_geometry;
+    try {
+      simulate_slar(s, small_radar(), test::CosineSigma0Source(), o);
+      ADD_FAILURE() << "expected an InputError";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("3100.0 m (scene row 5, column 7)"), std::string::npos)
+          << e.what();
+    }
+    s.elevation_m[s.index(5, 7)] = 2999.0f;
+    s.elevation_m[s.index(6, 7)] = 2999.9f;
+    EXPECT_NO_THROW(simulate_slar(s, small_radar(), test::CosineSigma0Source(), o));
+  }
 }
 
 TEST(SlarSimulation, RangeSwitchOffGivesEveryPixelTheReferenceRange) {

@@ -15,6 +15,7 @@
 //   double s0 = m->sigma0(ris::deg_to_rad(30.0), ris::RadarBand{8.6e9, ris::Polarisation::HH});
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <memory>
 #include <string>
@@ -51,6 +52,13 @@ class BackscatterModel {
   // sigma0 (linear, >= 0) at incidence_rad in [0, pi/2] for this band.
   // check_band(band) has been called first.
   virtual double sigma0(double incidence_rad, const RadarBand& band) const = 0;
+  // sigma0 at many angles, out[i] at incidence_rad[i] (a Sigma0Lut build):
+  // the same values as sigma0(), but a model may compute what depends only
+  // on the band (a soil's permittivity, a power law in frequency) once for
+  // the whole curve. Default: sigma0() per angle. Added for the LUT build;
+  // backward compatible.
+  virtual void sigma0_curve(const double* incidence_rad, std::size_t n, const RadarBand& band,
+                            double* out) const;
 
   // Refuses (or warns about) a band outside the model's validity range, via
   // report_out_of_validity. Band-independent parameters are checked when the

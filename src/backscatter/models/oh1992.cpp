@@ -53,6 +53,15 @@ class Oh1992 final : public BackscatterModel {
     return oh1992_sigma0(eps, ks, incidence_rad, band.polarisation);
   }
 
+  // The permittivity (a dielectric model's many powers and exponentials) and
+  // the other band terms once per curve, not per angle: the same values.
+  void sigma0_curve(const double* incidence_rad, std::size_t n, const RadarBand& band,
+                    double* out) const override {
+    const double ks = wavenumber_per_m(band.frequency_hz) * s_m_;
+    const Oh1992BandTerms t = oh1992_band_terms(eps_.at(band.frequency_hz), ks, band.polarisation);
+    for (std::size_t i = 0; i < n; ++i) out[i] = oh1992_sigma0_at(t, incidence_rad[i]);
+  }
+
   std::string describe() const override {
     return fmt::format("oh1992 rms_height = {:g} cm, permittivity {}", s_m_ * 100.0,
                        eps_.describe());
@@ -67,27 +76,39 @@ class Oh1992 final : public BackscatterModel {
 
 }  // namespace
 
-double oh1992_sigma0(std::complex<double> eps, double ks, double theta, Polarisation pol) {
+Oh1992BandTerms oh1992_band_terms(std::complex<double> eps, double ks, Polarisation pol) {
+  Oh1992BandTerms t;
+  t.eps = eps;
   const std::complex<double> root = std::sqrt(eps);
   const double g0 = std::norm((1.0 - root) / (1.0 + root));
-  const Fresnel f = fresnel_reflectivity(eps, theta);
-  const double e = std::exp(-ks);
-  const double t = 1.0 - std::pow(2.0 * theta / kPi, 1.0 / (3.0 * g0)) * e;
+  t.g0_exponent = 1.0 / (3.0 * g0);
+  t.e = std::exp(-ks);
+  t.q = 0.23 * std::sqrt(g0) * (1.0 - t.e);
+  t.g = 0.7 * (1.0 - std::exp(-0.65 * std::pow(ks, 1.8)));
+  t.pol = pol;
+  return t;
+}
+
+double oh1992_sigma0_at(const Oh1992BandTerms& b, double theta) {
+  const Fresnel f = fresnel_reflectivity(b.eps, theta);
+  const double t = 1.0 - std::pow(2.0 * theta / kPi, b.g0_exponent) * b.e;
   const double p = t * t;
-  const double q = 0.23 * std::sqrt(g0) * (1.0 - e);
-  const double g = 0.7 * (1.0 - std::exp(-0.65 * std::pow(ks, 1.8)));
   const double c = std::cos(theta);
-  const double vv = g * c * c * c * (f.gv + f.gh) / std::sqrt(p);
-  switch (pol) {
+  const double vv = b.g * c * c * c * (f.gv + f.gh) / std::sqrt(p);
+  switch (b.pol) {
     case Polarisation::VV:
       return vv;
     case Polarisation::HH:
       return p * vv;
     case Polarisation::HV:
     case Polarisation::VH:
-      return q * vv;
+      return b.q * vv;
   }
   return vv;
+}
+
+double oh1992_sigma0(std::complex<double> eps, double ks, double theta, Polarisation pol) {
+  return oh1992_sigma0_at(oh1992_band_terms(eps, ks, pol), theta);
 }
 
 std::unique_ptr<BackscatterModel> make_oh1992(ConfigTable& params, const ModelContext& ctx) {

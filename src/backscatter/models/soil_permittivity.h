@@ -49,4 +49,17 @@ SoilPermittivity read_soil_permittivity(ConfigTable& params, const std::string& 
 // The model formulas themselves, shared with the tests.
 double oh1992_sigma0(std::complex<double> eps, double ks, double incidence_rad, Polarisation pol);
 
+// Oh 1992's terms that depend only on the band (eps, ks, polarisation), for a
+// curve over many angles; oh1992_sigma0 above is oh1992_sigma0_at of these.
+struct Oh1992BandTerms {
+  std::complex<double> eps;
+  double g0_exponent = 0.0;  // 1 / (3 G0)
+  double e = 0.0;            // exp(-ks)
+  double q = 0.0;
+  double g = 0.0;
+  Polarisation pol = Polarisation::HH;
+};
+Oh1992BandTerms oh1992_band_terms(std::complex<double> eps, double ks, Polarisation pol);
+double oh1992_sigma0_at(const Oh1992BandTerms& t, double incidence_rad);
+
 }  // namespace ris::detail

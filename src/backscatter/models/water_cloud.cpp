@@ -81,6 +81,25 @@ class WaterCloud final : public BackscatterModel {
     return a_.at(f) * v1_ * c * (1.0 - tau2) + tau2 * ground_->sigma0(incidence_rad, band);
   }
 
+  // A(f) and B(f) once per curve and the ground's own curve: the same values
+  // as sigma0() at each angle (the ground is also evaluated at grazing
+  // incidence, where its value is not used).
+  void sigma0_curve(const double* incidence_rad, std::size_t n, const RadarBand& band,
+                    double* out) const override {
+    ground_->sigma0_curve(incidence_rad, n, band, out);
+    const double f = band.frequency_hz;
+    const double a = a_.at(f), b = b_.at(f);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double c = std::cos(incidence_rad[i]);
+      if (c <= 1e-12) {
+        out[i] = 0.0;
+        continue;
+      }
+      const double tau2 = std::exp(-2.0 * b * v2_ / c);
+      out[i] = a * v1_ * c * (1.0 - tau2) + tau2 * out[i];
+    }
+  }
+
   std::string describe() const override {
     return fmt::format("water_cloud A = {}, B = {}, V1 = {:g}, V2 = {:g} over {}", a_.describe(),
                        b_.describe(), v1_, v2_, ground_->describe());
