@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -37,11 +41,31 @@ GreytoneMap::GreytoneMap(const RadarParams& radar, double p_ref_w, double g_ref)
   table_ = per_decade_ > 0.0;
   if (!table_) return;
   threshold_[0] = 0.0f;
+  const auto bits_of = [](float v) {
+    std::uint32_t out = 0;
+    std::memcpy(&out, &v, sizeof out);
+    return out;
+  };
   for (unsigned k = 1; k < 256; ++k) {
     std::uint32_t lo = 0, hi = kInfBits;  // quantised(lo) < k; hi: answer candidate
     if (quantised(double(as_float(hi))) < k) {
       threshold_[k] = std::numeric_limits<float>::infinity();
       continue;
+    }
+    // Start from equation 15 solved for G = k - 1/2 and widen a bracket
+    // around it until it holds the threshold (a few steps instead of 31; the
+    // bisection below decides exactly either way).
+    const double estimate = std::pow(10.0, (k - 0.5 - offset_) / per_decade_);
+    if (estimate > 0.0 && estimate < double(std::numeric_limits<float>::max())) {
+      const std::uint32_t e = bits_of(static_cast<float>(estimate));
+      for (std::uint32_t d = 16; d < kInfBits; d *= 4) {
+        const std::uint32_t l = e > d ? e - d : 0, h = std::min(e + d, kInfBits);
+        if ((l == 0 || quantised(double(as_float(l))) < k) && quantised(double(as_float(h))) >= k) {
+          lo = l;
+          hi = h;
+          break;
+        }
+      }
     }
     while (hi - lo > 1) {
       const std::uint32_t mid = lo + (hi - lo) / 2;
@@ -53,21 +77,24 @@ GreytoneMap::GreytoneMap(const RadarParams& radar, double p_ref_w, double g_ref)
     threshold_[k] = as_float(hi);
   }
   threshold_[256] = std::numeric_limits<float>::quiet_NaN();
-  // The number of thresholds at or below p (a binary search of 8 steps).
-  const auto count_at_or_below = [&](float p) {
-    unsigned k = 0;
-    for (unsigned step = 128; step > 0; step >>= 1) k = p >= threshold_[k + step] ? k + step : k;
-    return k;
-  };
-  // Each bucket's first float's greytone, and the most thresholds any bucket
-  // holds after its first float (up to its last float, bits b << 16 | 0xffff).
-  bucket_.assign((kInfBits >> 16) + 1, 0);
+  // Each bucket's first float's greytone (the number of thresholds at or
+  // below it), and the most thresholds any bucket holds after its first float
+  // (up to its last float, bits b << 16 | 0xffff). The positive floats grow
+  // with their bits, so both counts only move up: one sweep.
+  // (3 bytes of padding: the AVX2 kernel reads each entry as a 32-bit word.)
+  constexpr std::uint32_t kBuckets = (kInfBits >> 16) + 1;
+  bucket_.assign(kBuckets + 3, 0);
   max_steps_ = 0;
-  for (std::uint32_t b = 0; b < bucket_.size(); ++b) {
-    const unsigned k = count_at_or_below(as_float(b << 16));
-    bucket_[b] = static_cast<std::uint8_t>(k);
-    if (b < (kInfBits >> 16)) {
-      max_steps_ = std::max(max_steps_, count_at_or_below(as_float((b << 16) | 0xffffu)) - k);
+  unsigned first = 0, last = 0;  // thresholds at or below the bucket's first, last float
+  for (std::uint32_t b = 0; b < kBuckets; ++b) {
+    const float lo = as_float(b << 16);
+    while (first < 255 && lo >= threshold_[first + 1]) ++first;
+    bucket_[b] = static_cast<std::uint8_t>(first);
+    if (b + 1 < kBuckets) {
+      const float hi = as_float((b << 16) | 0xffffu);
+      last = std::max(last, first);
+      while (last < 255 && hi >= threshold_[last + 1]) ++last;
+      max_steps_ = std::max(max_steps_, last - first);
     }
   }
 }
@@ -104,6 +131,52 @@ void quantise_kernel(const float* __restrict power_w, const std::uint8_t* __rest
   }
 }
 
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define RIS_GREYTONE_AVX2 1
+// quantise_kernel<1> eight pixels at a time with AVX2 gathers (the bucket
+// table read as 32-bit words at byte offsets, then masked to its byte; the
+// threshold above the bucket's greytone), the tail by the scalar kernel.
+// Integer operations and one ordered compare per pixel: the same bytes.
+// `bucket` must be readable 3 bytes past its last entry.
+__attribute__((target("avx2"))) void quantise_one_step_avx2(
+    const float* __restrict power_w, const std::uint8_t* __restrict mask, std::uint8_t mask_bits,
+    std::size_t n, std::uint8_t* __restrict out, std::uint8_t no_data_greytone,
+    const std::uint8_t* __restrict bucket, const float* __restrict threshold) {
+  const __m256i last_bucket = _mm256_set1_epi32(0x7f80);
+  const __m256i byte = _mm256_set1_epi32(0xff);
+  const __m256i no_data = _mm256_set1_epi32(no_data_greytone);
+  const __m256i bits_wanted = _mm256_set1_epi32(mask_bits);
+  const __m256i zero = _mm256_setzero_si256();
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8) {
+    const __m256 p = _mm256_loadu_ps(power_w + i);
+    const __m256i bits = _mm256_castps_si256(p);
+    // min(bits >> 16, 0x7f80), 0 for a set sign bit (as the scalar kernel).
+    __m256i b = _mm256_min_epu32(_mm256_srli_epi32(bits, 16), last_bucket);
+    b = _mm256_andnot_si256(_mm256_srai_epi32(bits, 31), b);
+    __m256i g =
+        _mm256_and_si256(_mm256_i32gather_epi32(reinterpret_cast<const int*>(bucket), b, 1), byte);
+    const __m256 t = _mm256_i32gather_ps(threshold + 1, g, 4);
+    g = _mm256_sub_epi32(g, _mm256_castps_si256(_mm256_cmp_ps(p, t, _CMP_GE_OQ)));
+    __m256i masked = _mm256_castps_si256(_mm256_cmp_ps(p, p, _CMP_UNORD_Q));
+    if (mask != nullptr) {
+      std::uint64_t m8 = 0;
+      std::memcpy(&m8, mask + i, sizeof m8);
+      const __m256i m = _mm256_and_si256(
+          _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(m8))), bits_wanted);
+      masked = _mm256_or_si256(
+          masked, _mm256_xor_si256(_mm256_cmpeq_epi32(m, zero), _mm256_set1_epi32(-1)));
+    }
+    g = _mm256_blendv_epi8(g, no_data, masked);
+    const __m128i g16 = _mm_packus_epi32(_mm256_castsi256_si128(g), _mm256_extracti128_si256(g, 1));
+    const __m128i g8 = _mm_packus_epi16(g16, g16);
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(out + i), g8);
+  }
+  quantise_kernel<1>(power_w + i, mask ? mask + i : nullptr, mask_bits, n - i, out + i,
+                     no_data_greytone, bucket, threshold, 1);
+}
+#endif
+
 RIS_GREYTONE_CLONES void quantise_one_step(
     const float* __restrict power_w, const std::uint8_t* __restrict mask, std::uint8_t mask_bits,
     std::size_t n, std::uint8_t* __restrict out, std::uint8_t no_data_greytone,
@@ -139,6 +212,14 @@ void GreytoneMap::quantise_line(const float* power_w, const std::uint8_t* mask,
       out[i] = masked ? no_data_greytone : quantised(p);
     }
   } else if (max_steps_ == 1) {
+#ifdef RIS_GREYTONE_AVX2
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    if (avx2) {
+      quantise_one_step_avx2(power_w, mask, mask_bits, n, out, no_data_greytone, bucket_.data(),
+                             threshold_.data());
+      return;
+    }
+#endif
     quantise_one_step(power_w, mask, mask_bits, n, out, no_data_greytone, bucket_.data(),
                       threshold_.data());
   } else {

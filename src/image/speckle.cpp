@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "ris/util/error.h"
@@ -18,10 +19,12 @@ FadingField::FadingField(std::span<const double> looks_per_bin, FadingLaw law, s
   // Per range bin, once: the Gamma sampler's constants and sqrt(N) (the same
   // arithmetic as fading_factor, so the same bytes).
   gamma_.reserve(looks_.size());
+  squeeze_in_registers_.resize(looks_.size());
   for (std::size_t b = 0; b < looks_.size(); ++b) {
     RIS_CHECK(looks_[b] > 0.0 && std::isfinite(looks_[b]));
     gamma_.emplace_back(looks_[b]);
     sqrt_looks_[b] = std::sqrt(looks_[b]);
+    squeeze_in_registers_[b] = looks_[b] >= 1.0 ? 1 : 0;
   }
 }
 
@@ -38,19 +41,51 @@ void FadingField::apply_line(float* row, int line) const {
     const int n = std::min(kChunk, bins - b0);
     philox_first_blocks(seed_, static_cast<std::uint32_t>(b0), line_key, CounterRng::kFadingStream,
                         static_cast<std::size_t>(n), {w[0], w[1], w[2], w[3]});
+    const ZigguratTables& zig = *zig_;
     for (int i = 0; i < n; ++i) {
       const int bin = b0 + i;
       const float p = row[bin];
       if (!(p > 0.0f) || !std::isfinite(p)) continue;
       const std::size_t b = static_cast<std::size_t>(bin);
-      CounterRng rng(seed_, static_cast<std::uint32_t>(bin), line_key, CounterRng::kFadingStream,
-                     {w[0][i], w[1][i], w[2][i], w[3][i]});
       double y = 0.0;
-      if (exact) {
-        y = gamma_[b](rng, *zig_) / looks_[b];
-      } else {
-        y = 1.0 + ziggurat_normal(rng, *zig_) / sqrt_looks_[b];
-        y = y > kSeedFadingFloor ? y : kSeedFadingFloor;
+      bool drawn = false;
+      // ziggurat_normal's common case: the value's word, the layer's word.
+      const auto hz = static_cast<std::int32_t>(w[0][i]);
+      const std::uint32_t layer = w[1][i] & 127u;
+      const std::uint32_t mag =
+          hz < 0 ? 0u - static_cast<std::uint32_t>(hz) : static_cast<std::uint32_t>(hz);
+      if (mag < zig.k[layer]) {
+        const double x = hz * zig.w[layer];
+        if (!exact) {
+          y = 1.0 + x / sqrt_looks_[b];
+          y = y > kSeedFadingFloor ? y : kSeedFadingFloor;
+          drawn = true;
+        } else if (squeeze_in_registers_[b]) {
+          // GammaSampler's first try: v = (1 + c x)^3, accepted by the squeeze
+          // u < 1 - 0.0331 x^4 with u from the third word (boost 1: d v).
+          const GammaSampler& g = gamma_[b];
+          double v = 1.0 + g.c() * x;
+          if (v > 0.0) {
+            v = v * v * v;
+            const double u = (static_cast<double>(w[2][i]) + 0.5) * 0x1.0p-32;
+            const double x2 = x * x;
+            if (u < 1.0 - 0.0331 * x2 * x2) {
+              y = 1.0 * g.d() * v / looks_[b];
+              drawn = true;
+            }
+          }
+        }
+      }
+      if (!drawn) {
+        // Everything else: the pixel's whole draw again, from its stream.
+        CounterRng rng(seed_, static_cast<std::uint32_t>(bin), line_key, CounterRng::kFadingStream,
+                       {w[0][i], w[1][i], w[2][i], w[3][i]});
+        if (exact) {
+          y = gamma_[b](rng, zig) / looks_[b];
+        } else {
+          y = 1.0 + ziggurat_normal(rng, zig) / sqrt_looks_[b];
+          y = y > kSeedFadingFloor ? y : kSeedFadingFloor;
+        }
       }
       row[bin] = static_cast<float>(static_cast<double>(p) * y);
     }

@@ -127,6 +127,28 @@ TEST(Speckle, RasterIsThePixelFadingFactor) {
   }
 }
 
+// The same over 120,000 pixels, enough to reach every way a draw can go (the
+// squeeze in registers, the ziggurat's wedge and tail, v <= 0, the
+// logarithmic test, N < 1's boost): each pixel is its fading_factor exactly.
+TEST(Speckle, EveryPathOfTheDrawIsThePixelFadingFactor) {
+  const int lines = 400, bins = 300;
+  std::vector<double> looks(static_cast<std::size_t>(bins));
+  for (int b = 0; b < bins; ++b) looks[static_cast<std::size_t>(b)] = 0.5 + 0.02 * b;
+  for (FadingLaw law : {FadingLaw::exact_gamma, FadingLaw::seed_eq21}) {
+    std::vector<float> p(static_cast<std::size_t>(lines * bins), 3.0f);
+    apply_fading(p, lines, bins, looks, law, 7, 1000);
+    for (int l = 0; l < lines; ++l) {
+      for (int b = 0; b < bins; ++b) {
+        const double y =
+            fading_factor(law, looks[static_cast<std::size_t>(b)], 7,
+                          static_cast<std::uint32_t>(1000 + l), static_cast<std::uint32_t>(b));
+        ASSERT_EQ(p[static_cast<std::size_t>(l * bins + b)], static_cast<float>(3.0 * y))
+            << l << " " << b;
+      }
+    }
+  }
+}
+
 TEST(Speckle, NoDataAndShadowAreLeftAlone) {
   std::vector<float> img = {NAN, 0.0f, 1.0f, -1.0f};
   const std::vector<double> n(4, 1.0);

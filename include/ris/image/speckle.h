@@ -59,6 +59,10 @@ class GammaSampler {
     d_ = shape - 1.0 / 3.0;
     c_ = 1.0 / std::sqrt(9.0 * d_);
   }
+  double shape() const { return shape_; }
+  double d() const { return d_; }  // shape (+ 1 below 1) - 1/3
+  double c() const { return c_; }  // 1 / sqrt(9 d)
+
   double operator()(CounterRng& rng, const ZigguratTables& zig) const {
     double boost = 1.0;
     // Gamma(a) = Gamma(a + 1) U^(1/a) (Marsaglia and Tsang, section 6).
@@ -98,8 +102,13 @@ inline double fading_factor(FadingLaw law, double looks, std::uint64_t seed, std
 // apply_fading and of the fused render (ris/sim/slar_simulation.h). The
 // per-bin constants (the Gamma sampler's, sqrt(N)) are set up once; each
 // line's first Philox blocks are computed for 64 bins at once
-// (philox_first_blocks, vectorised), and a pixel whose draw needs more
-// words continues its own stream. The same bytes as fading_factor per pixel.
+// (philox_first_blocks, vectorised). Most pixels need no more than that
+// block: the ziggurat's common case (two words) and, for the exact law with
+// N >= 1, Marsaglia and Tsang's squeeze (the third word) decide in
+// registers. Any other pixel (the ziggurat's wedge or tail, v <= 0, the
+// squeeze's logarithmic test, N < 1) is drawn again from its own stream by
+// GammaSampler / ziggurat_normal, which make the same draws. The same bytes
+// as fading_factor per pixel (tested).
 class FadingField {
  public:
   // looks_per_bin: N per range bin, each finite and > 0.
@@ -112,6 +121,7 @@ class FadingField {
  private:
   std::vector<double> looks_, sqrt_looks_;
   std::vector<GammaSampler> gamma_;
+  std::vector<std::uint8_t> squeeze_in_registers_;  // per bin: N >= 1 (no boost draw)
   FadingLaw law_;
   std::uint64_t seed_;
   const ZigguratTables* zig_;
