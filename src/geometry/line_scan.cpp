@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "ris/util/fast_math.h"
+#include "ris/util/vector_clones.h"
 
 namespace ris {
 
@@ -14,16 +15,6 @@ constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
 }
 
 namespace {
-
-// An AVX2 clone beside the SSE2 default, chosen at load time (GCC function
-// multiversioning; the build stays portable, no -march). Without FMA the
-// vector operations round as the scalar ones do, so both clones give the same
-// bytes on any CPU.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RIS_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define RIS_VECTOR_CLONES
-#endif
 
 // look_line's loops, with restrict-qualified parameters: the arrays never
 // alias, which lets them vectorise without run-time overlap checks.

@@ -1,10 +1,30 @@
-// Internal: one geometry element's contribution to its line's range profile,
-// shared by form_slar_image and the fused line-block pipeline
-// (ris/sim/slar_line_blocks.h) so both give the same bytes.
+// Internal: image formation of one line, its elements into its range profile,
+// shared by form_slar_image (the stage path) and the fused line pipelines
+// (ris/sim/slar_line_blocks.h, slar_oblique_lines.cpp) so that all give the
+// same bytes.
+//
+// Each visible element returns P_i (the radar equation, MODEL.md section 3,
+// seed equations 1 and 3-5) spread over its slant-range span, half from its
+// near end to its centre and half from its centre to its far end
+// (ris/image/slar_image.h). form_line_profile does it in passes over the line
+// rather than element by element: branch-free passes (vectorised) compute
+// each element's first bin and the fraction of it in the next bin (almost
+// every element lies within two bins; bin coordinates in single precision)
+// and its power (double), a scatter pass adds them into
+// four interleaved copies of the profile (consecutive elements usually fall
+// in the same bin; one copy would chain every add through memory), the rare
+// element spanning more bins (or the swath's edge) goes through spread(),
+// and a last pass sums the copies into the profile.
+//
+// Example (one line of n elements, a profile of `bins` bins):
+//   const ris::detail::SlarElementContext ctx = ris::detail::element_context(p, gain2, lut, bins);
+//   ris::detail::LineElementScratch scratch(n, bins);  // per thread, once
+//   ris::detail::LineElementTally t = ris::detail::form_line_profile(
+//       ctx, {n, flags, range, near_end, far_end, incidence, local_incidence, area, category},
+//       scratch, {touch, mapped, visible, acc, acc_area}, nullptr);
 #pragma once
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -47,10 +67,6 @@ inline void spread(double* acc, double* acc_area, double x0, double x1, double p
   }
 }
 
-inline std::uint16_t saturating_increment(std::uint16_t v) {
-  return v == std::numeric_limits<std::uint16_t>::max() ? v : static_cast<std::uint16_t>(v + 1);
-}
-
 // The constant part of one run's image formation.
 struct SlarElementContext {
   double near_m = 0.0, inv_dr = 0.0;
@@ -60,64 +76,78 @@ struct SlarElementContext {
   const Sigma0Lut* lut = nullptr;
 };
 
-// A visible element's received power P_i: the radar equation (MODEL.md
-// section 3, seed equations 1 and 3-5).
-inline double element_power_w(const SlarElementContext& c, double slant_range_m,
-                              float incidence_rad, float local_incidence_rad, float area_m2,
-                              std::uint16_t category) {
+SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainTable& gain2,
+                                   const Sigma0Lut& lut, int bins);
+
+// A visible element's received power P_i = k G^2 sigma0 A / R^4 with k = P_t
+// lambda^2 / (4 pi)^3 (MODEL.md section 3, seed equations 1 and 3-5).
+inline double radar_power_w(double k_radar, double gain2, float sigma0, float area_m2,
+                            double slant_range_m) {
   const double r2 = slant_range_m * slant_range_m;
-  const double g2 = c.gain2->uniform() ? c.gain2->at(0.0) : c.gain2->at(incidence_rad);
-  return c.k_radar * g2 * double(c.lut->at(category, local_incidence_rad)) * double(area_m2) /
-         (r2 * r2);
+  return k_radar * gain2 * double(sigma0) * double(area_m2) / (r2 * r2);
 }
 
-// One element with data (flags without kNoData/kUnseen) of the line whose
-// profile row starts at `row` (pointers into SlarLineProfiles at that row).
-// Returns whether its centre falls in a bin (counts towards samples_in_swath).
-inline bool accumulate_element(const SlarElementContext& c, std::uint8_t f, float slant_range_m,
-                               float range_near_end_m, float range_far_end_m, float incidence_rad,
-                               float local_incidence_rad, float area_m2, std::uint16_t category,
-                               std::uint8_t* touch_row, std::uint16_t* mapped_row,
-                               std::uint16_t* visible_row, double* acc, double* acc_area) {
-  const double R = slant_range_m;
-  const bool visible = sample_visible(f);
-  const int bins = c.bins;
-  bool in_swath = false;
-  // Centre counts (the seed's shadow map).
-  const double pos = (R - c.near_m) * c.inv_dr;
-  if (pos >= 0.0 && pos < bins) {
-    const std::size_t k = static_cast<std::size_t>(pos);
-    mapped_row[k] = saturating_increment(mapped_row[k]);
-    if (visible) visible_row[k] = saturating_increment(visible_row[k]);
-    in_swath = true;
-  }
-  // The element's slant-range span and the bins it touches.
-  const double r_a = range_near_end_m, r_b = range_far_end_m;
-  const double lo = (std::min({r_a, r_b, R}) - c.near_m) * c.inv_dr;
-  const double hi = (std::max({r_a, r_b, R}) - c.near_m) * c.inv_dr;
-  if (hi < 0.0 || lo >= bins) return in_swath;
-  const int b0 = first_bin(lo), b1 = last_bin(hi, bins);
-  std::uint8_t bits = slar_touch::kData;
-  if (visible) bits |= slar_touch::kVisible;
-  if (visible && (f & sample_flag::kLayover)) bits |= slar_touch::kLayover;
-  if (b0 == b1 && lo >= 0.0 && hi < bins) {
-    // The whole element in one bin (most elements: a cell's slant span is
-    // well under a bin): all its power and area go there, as the two halves'
-    // spread() below would put them, without their divisions and loops.
-    touch_row[b0] |= bits;
-    if (!visible) return in_swath;
-    acc[b0] += element_power_w(c, R, incidence_rad, local_incidence_rad, area_m2, category);
-    acc_area[b0] += double(area_m2);
-    return in_swath;
-  }
-  for (int b = b0; b <= b1; ++b) touch_row[b] |= bits;
-  if (!visible) return in_swath;
-  const double power = element_power_w(c, R, incidence_rad, local_incidence_rad, area_m2, category);
-  // Half the element (near end to centre, centre to far end) each.
-  const double half_area = 0.5 * double(area_m2);
-  spread(acc, acc_area, (r_a - c.near_m) * c.inv_dr, pos, 0.5 * power, half_area, bins);
-  spread(acc, acc_area, pos, (r_b - c.near_m) * c.inv_dr, 0.5 * power, half_area, bins);
-  return in_swath;
-}
+// One line's elements, `samples` values each (the geometry's per-sample
+// arrays at the line's start, or a fused pipeline's line scratch).
+struct LineElements {
+  int samples = 0;
+  const std::uint8_t* flags = nullptr;  // sample_flag bits
+  const float* slant_range_m = nullptr;
+  const float* near_end_m = nullptr;     // slant range of the element's near end
+  const float* far_end_m = nullptr;      // and far end
+  const float* incidence_rad = nullptr;  // look angle from nadir; unread when the gain is uniform
+  const float* local_incidence_rad = nullptr;
+  const float* area_m2 = nullptr;
+  const std::uint16_t* category = nullptr;
+};
+
+// The line's outputs: its rows of SlarLineProfiles (touch bits and centre
+// counts, added to) and its profile before the range window (`bins` values
+// each, overwritten).
+struct LineProfileRow {
+  std::uint8_t* touch = nullptr;
+  std::uint16_t* mapped_count = nullptr;
+  std::uint16_t* visible_count = nullptr;
+  double* power_w = nullptr;
+  double* area_m2 = nullptr;
+};
+
+// What form_line_profile saw on the line.
+struct LineElementTally {
+  std::int64_t in_swath = 0;  // elements with data whose centre falls in a bin
+  std::int64_t nodata = 0, shadow = 0, back_facing = 0, layover = 0;  // elements with the flag
+  float r_min_m = std::numeric_limits<float>::infinity();  // slant range of the elements with data
+  float r_max_m = -std::numeric_limits<float>::infinity();
+};
+
+// One thread's scratch for form_line_profile, allocated once.
+struct LineElementScratch {
+  static constexpr int kCopies = 4;  // interleaved profile copies (element j adds to j % 4)
+  int bins = 0;
+  // Per element: the first bin touched (`bins`, a spare, for an element the
+  // scatter pass skips), the centre's bin (`bins` when outside), the
+  // fraction of the power in the next bin, the touch bits and counts
+  // (form_line_profile's kCode*), the power pass's inputs (neutral values
+  // where not visible) and outputs; the elements left to spread().
+  std::vector<std::int32_t> first, centre, code, category;
+  std::vector<float> frac_next, range, incidence, local_incidence, area, sigma0;
+  std::vector<double> g2, power, p_lo, p_hi, a_lo, a_hi;
+  std::vector<std::int32_t> general;
+  // Per copy and bin (+ 2 spares).
+  std::vector<double> acc, acc_area;
+  std::vector<std::uint32_t> mapped, seen;
+  std::vector<std::uint8_t> touch;
+  LineElementScratch(int samples, int bins);
+  std::size_t stride() const { return static_cast<std::size_t>(bins) + 2; }
+};
+
+// Image formation's per-line step: the line's elements (those flagged
+// kNoData or kUnseen are skipped) into `out`. element_power_w, when not
+// null, receives P_i of each visible element (0 for the others), `samples`
+// values (the coherent SAR's input). The elevation gain is read at the look
+// angle from nadir unless the table is uniform.
+LineElementTally form_line_profile(const SlarElementContext& c, const LineElements& e,
+                                   LineElementScratch& s, const LineProfileRow& out,
+                                   float* element_power_w);
 
 }  // namespace ris::detail

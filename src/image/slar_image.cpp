@@ -96,14 +96,7 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
   img.line_spacing_m = g.line_spacing_m;
 
   const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, radar_file);
-  detail::SlarElementContext ctx;
-  // P_t lambda^2 / (4 pi)^3: the radar equation's constant part.
-  ctx.k_radar = p.transmit_power_w * p.wavelength_m * p.wavelength_m / std::pow(4.0 * kPi, 3.0);
-  ctx.near_m = p.range.near_m;
-  ctx.inv_dr = 1.0 / p.range.bin_m;
-  ctx.bins = img.bins;
-  ctx.gain2 = &gain2;
-  ctx.lut = &lut;
+  const detail::SlarElementContext ctx = detail::element_context(p, gain2, lut, img.bins);
   const int bins = img.bins;
 
   // Per-line range profiles before azimuth integration and per-line touch bits.
@@ -125,27 +118,28 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
   {
     // Per-thread scratch, allocated once.
     SlarLineAccumulator scratch(bins);
+    detail::LineElementScratch elements(g.samples, bins);
 #pragma omp for schedule(dynamic, 8)
     for (int line = 0; line < g.lines; ++line) {
-      std::fill(scratch.acc.begin(), scratch.acc.end(), 0.0);
-      std::fill(scratch.acc_area.begin(), scratch.acc_area.end(), 0.0);
       const std::size_t row = prof.index(line, 0);
-      for (int j = 0; j < g.samples; ++j) {
-        const std::size_t i = g.index(line, j);
-        const std::uint8_t f = g.flags[i];
-        if (f & (sample_flag::kNoData | sample_flag::kUnseen)) continue;
-        in_swath += detail::accumulate_element(
-            ctx, f, g.slant_range_m[i], g.range_near_end_m[i], g.range_far_end_m[i],
-            g.incidence_rad[i], g.local_incidence_rad[i], g.area_m2[i], g.category[i],
-            prof.touch.data() + row, prof.mapped_count.data() + row,
-            prof.visible_count.data() + row, scratch.acc.data(), scratch.acc_area.data());
-        // The coherent SAR needs each visible element's power (ris/sim/sar_coherent.h).
-        if (p.keep_element_power && sample_visible(f)) {
-          img.element_power_w[i] = static_cast<float>(
-              detail::element_power_w(ctx, g.slant_range_m[i], g.incidence_rad[i],
-                                      g.local_incidence_rad[i], g.area_m2[i], g.category[i]));
-        }
-      }
+      const std::size_t i = g.index(line, 0);
+      const detail::LineElements e{g.samples,
+                                   g.flags.data() + i,
+                                   g.slant_range_m.data() + i,
+                                   g.range_near_end_m.data() + i,
+                                   g.range_far_end_m.data() + i,
+                                   g.incidence_rad.data() + i,
+                                   g.local_incidence_rad.data() + i,
+                                   g.area_m2.data() + i,
+                                   g.category.data() + i};
+      const detail::LineProfileRow out{prof.touch.data() + row, prof.mapped_count.data() + row,
+                                       prof.visible_count.data() + row, scratch.acc.data(),
+                                       scratch.acc_area.data()};
+      // The coherent SAR needs each visible element's power (ris/sim/sar_coherent.h).
+      in_swath +=
+          detail::form_line_profile(ctx, e, elements, out,
+                                    p.keep_element_power ? img.element_power_w.data() + i : nullptr)
+              .in_swath;
       // Point scatterers on this line: their power in the bin of their range.
       const auto first =
           std::lower_bound(target_order.begin(), target_order.end(), line,

@@ -7,19 +7,6 @@
 
 namespace ris::detail {
 
-// The constant part of a run's image formation (as form_slar_image).
-SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainTable& gain2,
-                                   const Sigma0Lut& lut, int bins) {
-  SlarElementContext ctx;
-  ctx.k_radar = p.transmit_power_w * p.wavelength_m * p.wavelength_m / std::pow(4.0 * kPi, 3.0);
-  ctx.near_m = p.range.near_m;
-  ctx.inv_dr = 1.0 / p.range.bin_m;
-  ctx.bins = bins;
-  ctx.gain2 = &gain2;
-  ctx.lut = &lut;
-  return ctx;
-}
-
 // The look geometry, element ends, cast shadow and layover of a line whose
 // terrain is in the scratch (MODEL.md section 2; the code the stage path
 // runs: ris/geometry/line_scan.h).
@@ -42,33 +29,28 @@ void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_
 std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
                              SlarLineProfiles& prof, int line, SlarLineCounts& counts,
                              double range_window_bins) {
-  constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
-  std::int64_t in_swath = 0;
-  std::fill(s.acc.acc.begin(), s.acc.acc.end(), 0.0);
-  std::fill(s.acc.acc_area.begin(), s.acc.acc_area.end(), 0.0);
   const std::size_t row = prof.index(line, 0);
-  for (int j = 0; j < samples; ++j) {
-    const std::size_t jj = static_cast<std::size_t>(j);
-    const std::uint8_t sf = s.flags[jj];
-    counts.nodata += (sf & sample_flag::kNoData) ? 1 : 0;
-    counts.shadow += (sf & sample_flag::kShadow) ? 1 : 0;
-    counts.back_facing += (sf & sample_flag::kBackFacing) ? 1 : 0;
-    counts.layover += (sf & sample_flag::kLayover) ? 1 : 0;
-    if (sf & kSkip) continue;
-    counts.r_min_m = std::min(counts.r_min_m, s.range[jj]);
-    counts.r_max_m = std::max(counts.r_max_m, s.range[jj]);
-    in_swath += detail::accumulate_element(
-        ctx, sf, s.range[jj], s.near_end[jj], s.far_end[jj], s.incidence[jj], s.local_incidence[jj],
-        s.area[jj], s.category[jj], prof.touch.data() + row, prof.mapped_count.data() + row,
-        prof.visible_count.data() + row, s.acc.acc.data(), s.acc.acc_area.data());
-  }
+  const LineElements e{
+      samples,          s.flags.data(),     s.range.data(),           s.near_end.data(),
+      s.far_end.data(), s.incidence.data(), s.local_incidence.data(), s.area.data(),
+      s.category.data()};
+  const LineProfileRow out{prof.touch.data() + row, prof.mapped_count.data() + row,
+                           prof.visible_count.data() + row, s.acc.acc.data(),
+                           s.acc.acc_area.data()};
+  const LineElementTally t = form_line_profile(ctx, e, s.elements, out, nullptr);
+  counts.nodata += t.nodata;
+  counts.shadow += t.shadow;
+  counts.back_facing += t.back_facing;
+  counts.layover += t.layover;
+  counts.r_min_m = std::min(counts.r_min_m, t.r_min_m);
+  counts.r_max_m = std::max(counts.r_max_m, t.r_max_m);
   if (range_window_bins > 0.0) s.acc.apply_range_window(range_window_bins);
   for (int b = 0; b < prof.bins; ++b) {
     const std::size_t bb = static_cast<std::size_t>(b);
     prof.power_w[row + bb] = static_cast<float>(s.acc.acc[bb]);
     prof.area_m2[row + bb] = static_cast<float>(s.acc.acc_area[bb]);
   }
-  return in_swath;
+  return t.in_swath;
 }
 
 }  // namespace ris::detail

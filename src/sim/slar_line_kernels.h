@@ -29,6 +29,7 @@ struct LineScratch {
   std::vector<std::uint8_t> none_valid;  // a row of no-data cells, beyond the scene's edge
   std::vector<float> none_z;
   SlarLineAccumulator acc;
+  LineElementScratch elements;
   LineScratch(const SlarGeometry& g, int bins)
       : u(static_cast<std::size_t>(g.samples)),
         height(u.size()),
@@ -46,17 +47,14 @@ struct LineScratch {
         unseen(u.size()),
         none_valid(u.size(), 0),
         none_z(u.size(), 0.0f),
-        acc(bins) {
+        acc(bins),
+        elements(g.samples, bins) {
     for (int j = 0; j < g.samples; ++j) {
       u[static_cast<std::size_t>(j)] = float(g.sample_u_m(j));
       unseen[static_cast<std::size_t>(j)] = g.sample_u_m(j) > 0.0 ? 0 : sample_flag::kUnseen;
     }
   }
 };
-
-// The constant part of a run's image formation (as form_slar_image).
-SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainTable& gain2,
-                                   const Sigma0Lut& lut, int bins);
 
 // The look geometry, element ends, cast shadow and layover of a line whose
 // terrain is in the scratch (MODEL.md section 2; the code the stage path

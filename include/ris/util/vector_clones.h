@@ -1,0 +1,20 @@
+// RIS_VECTOR_CLONES: compile a hot loop's function twice, for AVX2 and for
+// the baseline x86-64 (SSE2), and pick the clone at load time (GCC function
+// multiversioning, target_clones). The build stays portable (no -march).
+// The AVX2 target does not include FMA, so no multiply-add is contracted and
+// the vector operations round exactly as the scalar ones: both clones give
+// the same bytes on any CPU. Elsewhere (other compilers, other
+// architectures) it expands to nothing.
+//
+// Example:
+//   RIS_VECTOR_CLONES void scale(int n, float k, const float* __restrict in,
+//                                float* __restrict out) {
+//     for (int i = 0; i < n; ++i) out[i] = k * in[i];
+//   }
+#pragma once
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define RIS_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define RIS_VECTOR_CLONES
+#endif

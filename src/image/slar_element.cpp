@@ -1,0 +1,424 @@
+#include "image/slar_element.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <limits>
+
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+#include "ris/util/vector_clones.h"
+
+namespace ris::detail {
+
+SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainTable& gain2,
+                                   const Sigma0Lut& lut, int bins) {
+  SlarElementContext ctx;
+  // P_t lambda^2 / (4 pi)^3: the radar equation's constant part.
+  ctx.k_radar = p.transmit_power_w * p.wavelength_m * p.wavelength_m / std::pow(4.0 * kPi, 3.0);
+  ctx.near_m = p.range.near_m;
+  ctx.inv_dr = 1.0 / p.range.bin_m;
+  ctx.bins = bins;
+  ctx.gain2 = &gain2;
+  ctx.lut = &lut;
+  return ctx;
+}
+
+LineElementScratch::LineElementScratch(int samples, int bins_)
+    : bins(bins_),
+      first(static_cast<std::size_t>(samples)),
+      centre(first.size()),
+      code(first.size()),
+      category(first.size()),
+      frac_next(first.size()),
+      range(first.size()),
+      incidence(first.size()),
+      local_incidence(first.size()),
+      area(first.size()),
+      sigma0(first.size()),
+      g2(first.size()),
+      power(first.size()),
+      p_lo(first.size()),
+      p_hi(first.size()),
+      a_lo(first.size()),
+      a_hi(first.size()),
+      acc(kCopies * stride(), 0.0),
+      acc_area(acc.size(), 0.0),
+      mapped(acc.size(), 0),
+      seen(acc.size(), 0),
+      touch(acc.size(), 0) {
+  general.reserve(first.size());
+}
+
+namespace {
+
+constexpr std::int32_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
+constexpr std::int32_t kHidden =
+    kSkip | sample_flag::kShadow | sample_flag::kBackFacing;  // not sample_visible
+
+// LineElementScratch::code: the touch bits of the first bin (bits 0-7) and
+// of the next one (8-15); whether the centre is in a bin and the element
+// visible (the visible count); whether it is left to spread().
+constexpr int kCodeNextShift = 8;
+constexpr std::int32_t kCodeSeen = 1 << 16;
+constexpr std::int32_t kCodeGeneral = 1 << 24;
+
+// Pass 1 works on eight elements at a time in GCC vector types (one AVX2
+// register of floats; two SSE2 registers in the default clone): GCC 12 does
+// not vectorise this loop by itself (its conditions mix byte flags and float
+// comparisons). Comparisons give -1 / 0 lane masks; m ? a : b selects.
+// The helpers below take and return such vectors; they are internal and
+// inlined into the clones, so the ABI note about passing them without AVX
+// (-Wpsabi, reported at the end of the file, hence not popped) is moot.
+#pragma GCC diagnostic ignored "-Wpsabi"
+using F8 = float __attribute__((vector_size(32)));
+using I8 = std::int32_t __attribute__((vector_size(32)));
+using U16x8 = std::uint16_t __attribute__((vector_size(16)));
+using U8x8 = std::uint8_t __attribute__((vector_size(8)));
+constexpr int kLanes = 8;
+
+template <class V, class T>
+inline V load(const T* p) {
+  V v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+template <class V, class T>
+inline void store(T* p, V v) {
+  std::memcpy(p, &v, sizeof v);
+}
+inline F8 splat(float x) {
+  return F8{} + x;
+}
+inline I8 splat(std::int32_t x) {
+  return I8{} + x;
+}
+inline F8 vmin(F8 a, F8 b) {
+  return b < a ? b : a;
+}
+inline F8 vmax(F8 a, F8 b) {
+  return a < b ? b : a;
+}
+
+// The fraction of a half element, uniform over the bin-coordinate interval
+// between x0 and x1 (either order), at or beyond the bin edge t; a
+// zero-length half is wholly on the side of its point (as spread()).
+inline F8 beyond(F8 x0, F8 x1, F8 t) {
+  const F8 zero = splat(0.0f), one = splat(1.0f);
+  const F8 lo = vmin(x0, x1), hi = vmax(x0, x1), w = hi - lo;
+  const F8 q = (hi - t) / (w > zero ? w : one);
+  const F8 f = vmin(vmax(q, zero), one);
+  const F8 point = lo >= t ? one : zero;
+  return w > zero ? f : point;
+}
+
+// Pass 1's inputs and outputs, at element j (one block of kLanes elements).
+struct BinsPassIo {
+  const std::uint8_t* flags;
+  const float *range, *near_end, *far_end, *incidence, *local_incidence, *area;
+  const std::uint16_t* category;
+  std::int32_t *first, *centre, *code;
+  float* frac_next;
+  float *range_out, *incidence_out, *local_out, *area_out;
+  std::int32_t* category_out;
+};
+
+// Pass 1, branch-free: each element's bins. An element whose slant span lies
+// in [0, bins) within two bins b0, b0 + 1 ("fast": almost all) gets b0, the
+// fraction of its power in b0 + 1 (half of it spread from the near end to
+// the centre, half from the centre to the far end, as spread() would) and
+// its touch bits; any other element that touches the swath is marked for
+// spread(). Also the centre's bin for the counts, and the power pass's
+// inputs with neutral values where the element is not visible (range 1,
+// area 0, a tabulated category, angles 0), so that pass needs no conditions.
+// Per-lane tallies of pass 1 (LineElementTally); `valid` masks the padding.
+struct BinsTally {
+  I8 in_swath{}, nodata{}, shadow{}, back_facing{}, layover{};
+  F8 r_min = splat(std::numeric_limits<float>::infinity());
+  F8 r_max = splat(-std::numeric_limits<float>::infinity());
+};
+
+__attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std::size_t j,
+                                                      float near_m, float inv_dr, int bins,
+                                                      std::int32_t any_category, I8 valid,
+                                                      BinsTally& t) {
+  const F8 nb = splat(static_cast<float>(bins)), zero = splat(0.0f);
+  const I8 f = __builtin_convertvector(load<U8x8>(io.flags + j), I8);
+  const I8 has = (f & kSkip) == 0;
+  const I8 vis = (f & kHidden) == 0;
+  const I8 lay = (f & sample_flag::kLayover) != 0;
+  const F8 r = load<F8>(io.range + j);
+  const F8 pos = (r - near_m) * inv_dr;
+  const F8 xa = (load<F8>(io.near_end + j) - near_m) * inv_dr;
+  const F8 xb = (load<F8>(io.far_end + j) - near_m) * inv_dr;
+  const I8 in_swath = has & (pos >= zero) & (pos < nb);
+  // The tallies (a mask is -1 where true).
+  t.in_swath -= in_swath & valid;
+  t.nodata -= ((f & sample_flag::kNoData) != 0) & valid;
+  t.shadow -= ((f & sample_flag::kShadow) != 0) & valid;
+  t.back_facing -= ((f & sample_flag::kBackFacing) != 0) & valid;
+  t.layover -= lay & valid;
+  t.r_min = vmin(t.r_min, (has & valid) ? r : t.r_min);
+  t.r_max = vmax(t.r_max, (has & valid) ? r : t.r_max);
+  store(io.centre + j, __builtin_convertvector(in_swath ? pos : nb, I8));
+  const F8 lo = vmin(vmin(xa, xb), pos), hi = vmax(vmax(xa, xb), pos);
+  const I8 touch = has & (hi >= zero) & (lo < nb);
+  // first_bin and last_bin (truncation of values clamped to [0, bins - 1]).
+  const I8 b0 = __builtin_convertvector(touch ? vmax(lo, zero) : zero, I8);
+  const I8 b1 = __builtin_convertvector(touch ? vmin(hi, nb - 1.0f) : zero, I8);
+  const I8 fast = touch & (lo >= zero) & (hi < nb) & ((b1 - b0) <= 1);
+  const I8 bits =
+      slar_touch::kData | (vis & slar_touch::kVisible) | (vis & lay & slar_touch::kLayover);
+  store(io.code + j, (fast & bits) | (fast & (b1 > b0) & (bits << kCodeNextShift)) |
+                         (in_swath & vis & kCodeSeen) | (touch & ~fast & kCodeGeneral));
+  store(io.first + j, fast ? b0 : splat(bins));
+  const F8 edge = __builtin_convertvector(b0 + 1, F8);
+  const F8 frac = 0.5f * (beyond(xa, pos, edge) + beyond(pos, xb, edge));
+  store(io.frac_next + j, fast ? frac : zero);
+  store(io.range_out + j, vis ? r : splat(1.0f));
+  store(io.incidence_out + j, vis ? load<F8>(io.incidence + j) : zero);
+  store(io.local_out + j, vis ? load<F8>(io.local_incidence + j) : zero);
+  store(io.area_out + j, vis ? load<F8>(io.area + j) : zero);
+  const I8 cat = __builtin_convertvector(load<U16x8>(io.category + j), I8);
+  store(io.category_out + j, vis ? cat : splat(any_category));
+}
+
+// Pass 1 over the line; the last partial block through a padded copy (its
+// padding: no-data elements).
+RIS_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
+                                 std::int32_t any_category, const BinsPassIo& io,
+                                 LineElementTally& tally) {
+  BinsTally t;
+  const std::size_t full = static_cast<std::size_t>(n / kLanes) * kLanes;
+  for (std::size_t j = 0; j < full; j += kLanes) {
+    bins_block(io, j, near_m, inv_dr, bins, any_category, splat(-1), t);
+  }
+  const std::size_t rest = static_cast<std::size_t>(n) - full;
+  if (rest > 0) {
+    std::uint8_t flags[kLanes];
+    float in[6][kLanes] = {};
+    std::uint16_t category[kLanes] = {};
+    std::int32_t out_i[4][kLanes];
+    float out_f[5][kLanes];
+    std::fill(flags, flags + kLanes, sample_flag::kNoData);
+    std::copy_n(io.flags + full, rest, flags);
+    const float* const src[6] = {io.range,     io.near_end,        io.far_end,
+                                 io.incidence, io.local_incidence, io.area};
+    for (int k = 0; k < 6; ++k) std::copy_n(src[k] + full, rest, in[k]);
+    std::copy_n(io.category + full, rest, category);
+    const BinsPassIo pad{flags,    in[0],    in[1],    in[2],    in[3],    in[4],
+                         in[5],    category, out_i[0], out_i[1], out_i[2], out_f[0],
+                         out_f[1], out_f[2], out_f[3], out_f[4], out_i[3]};
+    I8 valid{};
+    for (std::size_t l = 0; l < rest; ++l) valid[l] = -1;
+    bins_block(pad, 0, near_m, inv_dr, bins, any_category, valid, t);
+    std::int32_t* const dst_i[4] = {io.first, io.centre, io.code, io.category_out};
+    float* const dst_f[5] = {io.frac_next, io.range_out, io.incidence_out, io.local_out,
+                             io.area_out};
+    for (int k = 0; k < 4; ++k) std::copy_n(out_i[k], rest, dst_i[k] + full);
+    for (int k = 0; k < 5; ++k) std::copy_n(out_f[k], rest, dst_f[k] + full);
+  }
+  for (int l = 0; l < kLanes; ++l) {
+    tally.in_swath += t.in_swath[l];
+    tally.nodata += t.nodata[l];
+    tally.shadow += t.shadow[l];
+    tally.back_facing += t.back_facing[l];
+    tally.layover += t.layover[l];
+    tally.r_min_m = std::min(tally.r_min_m, t.r_min[l]);
+    tally.r_max_m = std::max(tally.r_max_m, t.r_max[l]);
+  }
+}
+
+// Pass 2: each element's power P_i (0 where not visible: its area is 0) and
+// its split between b0 and b0 + 1. The table lookups (gathers) first, then
+// the arithmetic in a loop of its own, which vectorises.
+RIS_VECTOR_CLONES void power_pass(int n, double k_radar, bool uniform, double g2_uniform,
+                                  const double* __restrict gain2, const float* __restrict curves,
+                                  const std::int64_t* __restrict curve_offset,
+                                  const float* __restrict range, const float* __restrict incidence,
+                                  const float* __restrict local_incidence,
+                                  const float* __restrict area,
+                                  const std::int32_t* __restrict category,
+                                  const float* __restrict frac_next, float* __restrict sigma0,
+                                  double* __restrict g2, double* __restrict power,
+                                  double* __restrict p_lo, double* __restrict p_hi,
+                                  double* __restrict a_lo, double* __restrict a_hi) {
+  for (int j = 0; j < n; ++j) {
+    sigma0[j] = Sigma0Lut::interpolate(curves + curve_offset[category[j]], local_incidence[j]);
+  }
+  if (uniform) {
+    for (int j = 0; j < n; ++j) g2[j] = g2_uniform;
+  } else {
+    for (int j = 0; j < n; ++j) g2[j] = TwoWayGainTable::interpolate(gain2, double(incidence[j]));
+  }
+  for (int j = 0; j < n; ++j) {
+    const double p = radar_power_w(k_radar, g2[j], sigma0[j], area[j], double(range[j]));
+    power[j] = p;
+    const double frac = frac_next[j];
+    const double ph = p * frac, ah = double(area[j]) * frac;
+    p_hi[j] = ph;
+    p_lo[j] = p - ph;
+    a_hi[j] = ah;
+    a_lo[j] = double(area[j]) - ah;
+  }
+}
+
+// Pass 3: the fast elements into the four copies, element j into copy j % 4
+// (consecutive elements usually share a bin: in one copy each add would wait
+// for the previous one's store). Elements without a bin add to the spare
+// bin `bins`.
+void scatter_pass(int n, LineElementScratch& s) {
+  const std::size_t stride = s.stride();
+  const std::int32_t* __restrict first = s.first.data();
+  const std::int32_t* __restrict centre = s.centre.data();
+  const std::int32_t* __restrict code = s.code.data();
+  const double* __restrict p_lo = s.p_lo.data();
+  const double* __restrict p_hi = s.p_hi.data();
+  const double* __restrict a_lo = s.a_lo.data();
+  const double* __restrict a_hi = s.a_hi.data();
+  double* __restrict acc = s.acc.data();
+  double* __restrict acc_area = s.acc_area.data();
+  std::uint8_t* __restrict touch = s.touch.data();
+  std::uint32_t* __restrict mapped = s.mapped.data();
+  std::uint32_t* __restrict seen = s.seen.data();
+  const auto one = [&](int j, std::size_t q) {
+    const std::size_t jj = static_cast<std::size_t>(j);
+    const std::size_t b = q * stride + static_cast<std::size_t>(first[jj]);
+    acc[b] += p_lo[jj];
+    acc[b + 1] += p_hi[jj];
+    acc_area[b] += a_lo[jj];
+    acc_area[b + 1] += a_hi[jj];
+    const std::int32_t c = code[jj];
+    touch[b] |= static_cast<std::uint8_t>(c & 0xff);
+    touch[b + 1] |= static_cast<std::uint8_t>((c >> kCodeNextShift) & 0xff);
+    const std::size_t k = q * stride + static_cast<std::size_t>(centre[jj]);
+    mapped[k] += 1;
+    seen[k] += (c & kCodeSeen) ? 1 : 0;
+  };
+  int j = 0;
+  for (; j + 4 <= n; j += 4) {
+    one(j, 0);
+    one(j + 1, 1);
+    one(j + 2, 2);
+    one(j + 3, 3);
+  }
+  for (; j < n; ++j) one(j, static_cast<std::size_t>(j & 3));
+}
+
+// Pass 5: the copies summed into the line's outputs, and zeroed for the next
+// line; one loop per type, so that each vectorises.
+RIS_VECTOR_CLONES void merge_pass(int bins, std::size_t stride, double* __restrict acc,
+                                  double* __restrict acc_area, std::uint32_t* __restrict mapped,
+                                  std::uint32_t* __restrict seen, std::uint8_t* __restrict touch,
+                                  double* __restrict out_power, double* __restrict out_area,
+                                  std::uint8_t* __restrict out_touch,
+                                  std::uint16_t* __restrict out_mapped,
+                                  std::uint16_t* __restrict out_visible) {
+  const std::size_t s1 = stride, s2 = 2 * stride, s3 = 3 * stride;
+  const std::size_t nb = static_cast<std::size_t>(bins);
+  for (std::size_t b = 0; b < nb; ++b) {
+    out_power[b] = (acc[b] + acc[b + s1]) + (acc[b + s2] + acc[b + s3]);
+    out_area[b] = (acc_area[b] + acc_area[b + s1]) + (acc_area[b + s2] + acc_area[b + s3]);
+  }
+  for (std::size_t b = 0; b < nb; ++b) {
+    out_touch[b] |=
+        static_cast<std::uint8_t>(touch[b] | touch[b + s1] | touch[b + s2] | touch[b + s3]);
+  }
+  constexpr std::uint32_t kMax = 65535;  // the counts saturate
+  for (std::size_t b = 0; b < nb; ++b) {
+    const std::uint32_t m =
+        out_mapped[b] + mapped[b] + mapped[b + s1] + mapped[b + s2] + mapped[b + s3];
+    const std::uint32_t v = out_visible[b] + seen[b] + seen[b + s1] + seen[b + s2] + seen[b + s3];
+    out_mapped[b] = static_cast<std::uint16_t>(std::min(m, kMax));
+    out_visible[b] = static_cast<std::uint16_t>(std::min(v, kMax));
+  }
+  for (std::size_t q = 0; q < LineElementScratch::kCopies; ++q) {
+    std::fill_n(acc + q * stride, nb, 0.0);
+    std::fill_n(acc_area + q * stride, nb, 0.0);
+    std::fill_n(touch + q * stride, nb, std::uint8_t{0});
+    std::fill_n(mapped + q * stride, nb, 0u);
+    std::fill_n(seen + q * stride, nb, 0u);
+  }
+}
+
+}  // namespace
+
+LineElementTally form_line_profile(const SlarElementContext& c, const LineElements& e,
+                                   LineElementScratch& s, const LineProfileRow& out,
+                                   float* element_power_w) {
+  const int n = e.samples;
+  const int bins = c.bins;
+  RIS_CHECK(s.bins == bins && s.first.size() >= static_cast<std::size_t>(n));
+  LineElementTally t;
+  const Sigma0Lut& lut = *c.lut;
+  const BinsPassIo io{e.flags,
+                      e.slant_range_m,
+                      e.near_end_m,
+                      e.far_end_m,
+                      e.incidence_rad ? e.incidence_rad : e.local_incidence_rad,
+                      e.local_incidence_rad,
+                      e.area_m2,
+                      e.category,
+                      s.first.data(),
+                      s.centre.data(),
+                      s.code.data(),
+                      s.frac_next.data(),
+                      s.range.data(),
+                      s.incidence.data(),
+                      s.local_incidence.data(),
+                      s.area.data(),
+                      s.category.data()};
+  bins_pass(n, static_cast<float>(c.near_m), static_cast<float>(c.inv_dr), bins, lut.any_category(),
+            io, t);
+  if (!lut.empty()) {
+    power_pass(n, c.k_radar, c.gain2->uniform(), c.gain2->at(0.0), c.gain2->data(), lut.data(),
+               lut.offsets(), s.range.data(), s.incidence.data(), s.local_incidence.data(),
+               s.area.data(), s.category.data(), s.frac_next.data(), s.sigma0.data(), s.g2.data(),
+               s.power.data(), s.p_lo.data(), s.p_hi.data(), s.a_lo.data(), s.a_hi.data());
+  } else {
+    // Nothing tabulated: nothing is visible (a visible element's category
+    // is checked to be tabulated).
+    for (auto* v : {&s.power, &s.p_lo, &s.p_hi, &s.a_lo, &s.a_hi})
+      std::fill(v->begin(), v->end(), 0.0);
+  }
+  scatter_pass(n, s);
+
+  // Pass 4: the elements spanning more than two bins or the swath's edge,
+  // into copy 0 by spread(), in element order.
+  s.general.clear();
+  for (int j = 0; j < n; ++j) {
+    if (s.code[static_cast<std::size_t>(j)] & kCodeGeneral) s.general.push_back(j);
+  }
+  for (const std::int32_t j : s.general) {
+    const std::size_t jj = static_cast<std::size_t>(j);
+    const std::uint8_t f = e.flags[jj];
+    const bool vis = sample_visible(f);
+    const double pos = (double(e.slant_range_m[jj]) - c.near_m) * c.inv_dr;
+    const double xa = (double(e.near_end_m[jj]) - c.near_m) * c.inv_dr;
+    const double xb = (double(e.far_end_m[jj]) - c.near_m) * c.inv_dr;
+    const double lo = std::min(std::min(xa, xb), pos), hi = std::max(std::max(xa, xb), pos);
+    if (hi < 0.0 || lo >= bins) continue;  // in single precision only
+    const int b0 = first_bin(lo), b1 = last_bin(hi, bins);
+    std::uint8_t bits = slar_touch::kData;
+    if (vis) bits |= slar_touch::kVisible;
+    if (vis && (f & sample_flag::kLayover)) bits |= slar_touch::kLayover;
+    for (int b = b0; b <= b1; ++b) s.touch[static_cast<std::size_t>(b)] |= bits;
+    if (!vis) continue;
+    // Half the element (near end to centre, centre to far end) each.
+    const double half_power = 0.5 * s.power[jj], half_area = 0.5 * double(e.area_m2[jj]);
+    spread(s.acc.data(), s.acc_area.data(), xa, pos, half_power, half_area, bins);
+    spread(s.acc.data(), s.acc_area.data(), pos, xb, half_power, half_area, bins);
+  }
+
+  merge_pass(bins, s.stride(), s.acc.data(), s.acc_area.data(), s.mapped.data(), s.seen.data(),
+             s.touch.data(), out.power_w, out.area_m2, out.touch, out.mapped_count,
+             out.visible_count);
+  if (element_power_w) {
+    for (int j = 0; j < n; ++j) element_power_w[j] = static_cast<float>(s.power[j]);
+  }
+  return t;
+}
+
+}  // namespace ris::detail

@@ -1,0 +1,222 @@
+#include "image/slar_element.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "ris/geometry/line_scan.h"
+#include "ris/util/units.h"
+#include "slar_fixtures.h"
+
+namespace ris::detail {
+namespace {
+
+// One random line: elements in order of range with a few reversals
+// (layover), spans mostly under a bin (some zero, some over several bins),
+// the first and last ones beyond the swath's ends, every kind of flag.
+struct RandomLine {
+  int n = 0;
+  std::vector<std::uint8_t> flags;
+  std::vector<float> range, near_end, far_end, incidence, local_incidence, area;
+  std::vector<std::uint16_t> category;
+
+  RandomLine(int samples, std::uint32_t seed) : n(samples) {
+    const auto size = static_cast<std::size_t>(n);
+    flags.resize(size);
+    for (auto* v : {&range, &near_end, &far_end, &incidence, &local_incidence, &area}) {
+      v->resize(size);
+    }
+    category.resize(size);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    double r = -1.5;
+    for (std::size_t j = 0; j < size; ++j) {
+      r += u(rng) < 0.05 ? -0.4 : 0.21 + 0.05 * u(rng);
+      const double kind = u(rng);
+      const double span = kind < 0.05 ? 0.0 : (kind < 0.12 ? 1.0 + 3.0 * u(rng) : 0.45 * u(rng));
+      const double t = u(rng);
+      range[j] = static_cast<float>(r);
+      near_end[j] = static_cast<float>(r - t * span);
+      far_end[j] = static_cast<float>(r + (1.0 - t) * span);
+      if (u(rng) < 0.1) std::swap(near_end[j], far_end[j]);  // facing away
+      incidence[j] = static_cast<float>(0.3 + 0.9 * u(rng));
+      local_incidence[j] = static_cast<float>(1.5 * u(rng));
+      area[j] = static_cast<float>(30.0 + 10.0 * u(rng));
+      category[j] = static_cast<std::uint16_t>(1 + j % 3);
+      std::uint8_t f = 0;
+      if (u(rng) < 0.05) f |= sample_flag::kNoData;
+      if (u(rng) < 0.03) f |= sample_flag::kUnseen;
+      if (u(rng) < 0.10) f |= sample_flag::kShadow;
+      if (u(rng) < 0.05) f |= sample_flag::kBackFacing;
+      if (u(rng) < 0.08) f |= sample_flag::kLayover;
+      if (f & sample_flag::kNoData) {
+        range[j] = near_end[j] = far_end[j] = local_incidence[j] = area[j] = nan;
+        category[j] = 0;
+      }
+      flags[j] = f;
+    }
+  }
+  LineElements elements() const {
+    return {n,
+            flags.data(),
+            range.data(),
+            near_end.data(),
+            far_end.data(),
+            incidence.data(),
+            local_incidence.data(),
+            area.data(),
+            category.data()};
+  }
+};
+
+// The reference: each element on its own, in order, in double precision,
+// both halves through spread() (the definition in ris/image/slar_image.h).
+struct Reference {
+  std::vector<std::uint8_t> touch;
+  std::vector<std::uint16_t> mapped, visible;
+  std::vector<double> power, area;
+  std::vector<float> element_power;
+  LineElementTally tally;
+
+  Reference(const SlarElementContext& c, const RandomLine& l)
+      : touch(static_cast<std::size_t>(c.bins)),
+        mapped(touch.size()),
+        visible(touch.size()),
+        power(touch.size()),
+        area(touch.size()),
+        element_power(static_cast<std::size_t>(l.n)) {
+    const int bins = c.bins;
+    for (std::size_t j = 0; j < element_power.size(); ++j) {
+      const std::uint8_t f = l.flags[j];
+      tally.nodata += (f & sample_flag::kNoData) ? 1 : 0;
+      tally.shadow += (f & sample_flag::kShadow) ? 1 : 0;
+      tally.back_facing += (f & sample_flag::kBackFacing) ? 1 : 0;
+      tally.layover += (f & sample_flag::kLayover) ? 1 : 0;
+      if (f & (sample_flag::kNoData | sample_flag::kUnseen)) continue;
+      const bool vis = sample_visible(f);
+      tally.r_min_m = std::min(tally.r_min_m, l.range[j]);
+      tally.r_max_m = std::max(tally.r_max_m, l.range[j]);
+      const double pos = (double(l.range[j]) - c.near_m) * c.inv_dr;
+      if (pos >= 0.0 && pos < bins) {
+        const auto k = static_cast<std::size_t>(pos);
+        ++mapped[k];
+        if (vis) ++visible[k];
+        ++tally.in_swath;
+      }
+      const double p =
+          radar_power_w(c.k_radar, c.gain2->at(l.incidence[j]),
+                        c.lut->at(l.category[j], l.local_incidence[j]), l.area[j], l.range[j]);
+      if (vis) element_power[j] = static_cast<float>(p);
+      const double xa = (double(l.near_end[j]) - c.near_m) * c.inv_dr;
+      const double xb = (double(l.far_end[j]) - c.near_m) * c.inv_dr;
+      const double lo = std::min({xa, xb, pos}), hi = std::max({xa, xb, pos});
+      if (hi < 0.0 || lo >= bins) continue;
+      std::uint8_t bits = slar_touch::kData;
+      if (vis) bits |= slar_touch::kVisible;
+      if (vis && (f & sample_flag::kLayover)) bits |= slar_touch::kLayover;
+      for (int b = first_bin(lo); b <= last_bin(hi, bins); ++b) {
+        touch[static_cast<std::size_t>(b)] |= bits;
+      }
+      if (!vis) continue;
+      spread(power.data(), area.data(), xa, pos, 0.5 * p, 0.5 * l.area[j], bins);
+      spread(power.data(), area.data(), pos, xb, 0.5 * p, 0.5 * l.area[j], bins);
+    }
+  }
+};
+
+double gaussian_gain(double beta) {
+  return std::exp(-std::pow((beta - 1.1) / 0.4, 2));
+}
+
+// Bin coordinates are the ranges themselves (near 0, 1 m bins), so single
+// and double precision put every element in the same bins: touch bits and
+// counts must agree exactly, powers to float rounding.
+TEST(SlarElement, LineProfileMatchesElementByElementReference) {
+  const int bins = 40;
+  SlarImagingParams p;
+  p.range = {0.0, 1.0, bins};
+  p.transmit_power_w = 1000.0;
+  p.wavelength_m = 0.03;
+  p.peak_gain = 300.0;
+  p.elevation_gain = gaussian_gain;
+  const std::vector<std::uint16_t> cats = {1, 2, 3};
+  const Sigma0Lut lut = Sigma0Lut::build(test::CosineSigma0Source(), {}, cats, "test");
+  const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, "test");
+  const SlarElementContext ctx = element_context(p, gain2, lut, bins);
+  ASSERT_EQ(ctx.inv_dr, 1.0);
+
+  const int n = 203;  // not a multiple of the 8-element blocks
+  LineElementScratch scratch(n, bins);
+  int general = 0;
+  for (std::uint32_t seed = 1; seed <= 20; ++seed) {  // scratch reused line after line
+    const RandomLine line(n, seed);
+    const Reference ref(ctx, line);
+    std::vector<std::uint8_t> touch(bins, 0);
+    std::vector<std::uint16_t> mapped(bins, 0), visible(bins, 0);
+    std::vector<double> power(bins, -1.0), area(bins, -1.0);
+    std::vector<float> element_power(static_cast<std::size_t>(n), -1.0f);
+    const LineElementTally t =
+        form_line_profile(ctx, line.elements(), scratch,
+                          {touch.data(), mapped.data(), visible.data(), power.data(), area.data()},
+                          element_power.data());
+    general += static_cast<int>(scratch.general.size());
+    EXPECT_EQ(t.in_swath, ref.tally.in_swath);
+    EXPECT_EQ(t.nodata, ref.tally.nodata);
+    EXPECT_EQ(t.shadow, ref.tally.shadow);
+    EXPECT_EQ(t.back_facing, ref.tally.back_facing);
+    EXPECT_EQ(t.layover, ref.tally.layover);
+    EXPECT_EQ(t.r_min_m, ref.tally.r_min_m);
+    EXPECT_EQ(t.r_max_m, ref.tally.r_max_m);
+    EXPECT_EQ(element_power, ref.element_power) << "seed " << seed;
+    EXPECT_EQ(touch, ref.touch) << "seed " << seed;
+    EXPECT_EQ(mapped, ref.mapped) << "seed " << seed;
+    EXPECT_EQ(visible, ref.visible) << "seed " << seed;
+    const double p_max = *std::max_element(ref.power.begin(), ref.power.end());
+    const double a_max = *std::max_element(ref.area.begin(), ref.area.end());
+    ASSERT_GT(p_max, 0.0);
+    for (std::size_t b = 0; b < power.size(); ++b) {
+      // The fractions in float: ~1e-7 of an element's power.
+      EXPECT_NEAR(power[b], ref.power[b], 1e-6 * p_max) << "seed " << seed << " bin " << b;
+      EXPECT_NEAR(area[b], ref.area[b], 1e-6 * a_max) << "seed " << seed << " bin " << b;
+    }
+  }
+  EXPECT_GT(general, 20);  // the spread() path ran too
+}
+
+// A uniform elevation pattern reads no look angle (the fused path leaves it
+// unset): NaN there changes nothing.
+TEST(SlarElement, UniformGainIgnoresTheLookAngle) {
+  const int bins = 40;
+  SlarImagingParams p;
+  p.range = {0.0, 1.0, bins};
+  p.transmit_power_w = 1000.0;
+  p.wavelength_m = 0.03;
+  const std::vector<std::uint16_t> cats = {1, 2, 3};
+  const Sigma0Lut lut = Sigma0Lut::build(test::CosineSigma0Source(), {}, cats, "test");
+  const TwoWayGainTable gain2({}, 1.0, "test");
+  const SlarElementContext ctx = element_context(p, gain2, lut, bins);
+  RandomLine line(100, 3);
+  LineElementScratch scratch(line.n, bins);
+  std::vector<std::uint8_t> touch(bins, 0);
+  std::vector<std::uint16_t> mapped(bins, 0), visible(bins, 0);
+  std::vector<double> power(bins), area(bins);
+  form_line_profile(ctx, line.elements(), scratch,
+                    {touch.data(), mapped.data(), visible.data(), power.data(), area.data()},
+                    nullptr);
+  const std::vector<double> expected = power;
+  std::fill(line.incidence.begin(), line.incidence.end(), std::numeric_limits<float>::quiet_NaN());
+  form_line_profile(ctx, line.elements(), scratch,
+                    {touch.data(), mapped.data(), visible.data(), power.data(), area.data()},
+                    nullptr);
+  EXPECT_EQ(power, expected);
+  EXPECT_GT(*std::max_element(power.begin(), power.end()), 0.0);
+}
+
+}  // namespace
+}  // namespace ris::detail
