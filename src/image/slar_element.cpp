@@ -265,11 +265,12 @@ RIS_VECTOR_CLONES void power_pass(int n, double k_radar, bool uniform, double g2
   }
 }
 
-// Pass 3: the fast elements into the four copies, element j into copy j % 4
+// Pass 3: the fast elements into the four copies, element j into copy
+// (first_index + j) % 4
 // (consecutive elements usually share a bin: in one copy each add would wait
 // for the previous one's store). Elements without a bin add to the spare
 // bin `bins`.
-void scatter_pass(int n, LineElementScratch& s) {
+void scatter_pass(int n, int first_index, LineElementScratch& s) {
   const std::size_t stride = s.stride();
   const std::int32_t* __restrict first = s.first.data();
   const std::int32_t* __restrict centre = s.centre.data();
@@ -297,14 +298,18 @@ void scatter_pass(int n, LineElementScratch& s) {
     mapped[k] += 1;
     seen[k] += (c & kCodeSeen) ? 1 : 0;
   };
+  const auto copy = [first_index](int j) {
+    return static_cast<std::size_t>((first_index + j) & 3);
+  };
+  const std::size_t q0 = copy(0), q1 = copy(1), q2 = copy(2), q3 = copy(3);
   int j = 0;
   for (; j + 4 <= n; j += 4) {
-    one(j, 0);
-    one(j + 1, 1);
-    one(j + 2, 2);
-    one(j + 3, 3);
+    one(j, q0);
+    one(j + 1, q1);
+    one(j + 2, q2);
+    one(j + 3, q3);
   }
-  for (; j < n; ++j) one(j, static_cast<std::size_t>(j & 3));
+  for (; j < n; ++j) one(j, copy(j));
 }
 
 // Pass 5: the copies summed into the line's outputs, and zeroed for the next
@@ -383,7 +388,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     for (auto* v : {&s.power, &s.p_lo, &s.p_hi, &s.a_lo, &s.a_hi})
       std::fill(v->begin(), v->end(), 0.0);
   }
-  scatter_pass(n, s);
+  scatter_pass(n, e.first_index, s);
 
   // Pass 4: the elements spanning more than two bins or the swath's edge,
   // into copy 0 by spread(), in element order.

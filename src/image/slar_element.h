@@ -99,6 +99,11 @@ struct LineElements {
   const float* local_incidence_rad = nullptr;
   const float* area_m2 = nullptr;
   const std::uint16_t* category = nullptr;
+  // Element 0's index on its whole line, when these elements are a span of
+  // it (the oblique fused path clips lines to the scene): the profile copy
+  // an element adds to follows its index on the line, so that a span and
+  // the whole line sum in the same groups and give the same bytes.
+  int first_index = 0;
 };
 
 // The line's outputs: its rows of SlarLineProfiles (touch bits and centre
@@ -122,7 +127,9 @@ struct LineElementTally {
 
 // One thread's scratch for form_line_profile, allocated once.
 struct LineElementScratch {
-  static constexpr int kCopies = 4;  // interleaved profile copies (element j adds to j % 4)
+  // Interleaved profile copies: the element at index j on its line adds to
+  // copy j % 4.
+  static constexpr int kCopies = 4;
   int bins = 0;
   // Per element: the first bin touched (`bins`, a spare, for an element the
   // scatter pass skips), the centre's bin (`bins` when outside), the

@@ -189,6 +189,59 @@ TEST(SlarElement, LineProfileMatchesElementByElementReference) {
   EXPECT_GT(general, 20);  // the spread() path ran too
 }
 
+// A span of a line (the oblique fused path clips lines to the scene) sums
+// as the whole line with the samples outside it unseen (the stage path):
+// the same bytes.
+TEST(SlarElement, SpanOfALineGivesTheWholeLinesBytes) {
+  const int bins = 40;
+  SlarImagingParams p;
+  p.range = {0.0, 1.0, bins};
+  p.transmit_power_w = 1000.0;
+  p.wavelength_m = 0.03;
+  p.peak_gain = 300.0;
+  p.elevation_gain = gaussian_gain;
+  const std::vector<std::uint16_t> cats = {1, 2, 3};
+  const Sigma0Lut lut = Sigma0Lut::build(test::CosineSigma0Source(), {}, cats, "test");
+  const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, "test");
+  const SlarElementContext ctx = element_context(p, gain2, lut, bins);
+  RandomLine line(203, 11);
+  LineElementScratch scratch(line.n, bins);
+  for (const int begin : {1, 2, 3, 6}) {
+    const int end = line.n - begin;
+    RandomLine whole = line;
+    for (int j = 0; j < whole.n; ++j) {
+      if (j < begin || j >= end) whole.flags[static_cast<std::size_t>(j)] |= sample_flag::kUnseen;
+    }
+    std::vector<std::uint8_t> touch_w(bins, 0), touch_s(bins, 0);
+    std::vector<std::uint16_t> mapped_w(bins, 0), mapped_s(bins, 0), vis_w(bins, 0), vis_s(bins, 0);
+    std::vector<double> power_w(bins), power_s(bins), area_w(bins), area_s(bins);
+    const LineElementTally tw = form_line_profile(
+        ctx, whole.elements(), scratch,
+        {touch_w.data(), mapped_w.data(), vis_w.data(), power_w.data(), area_w.data()}, nullptr);
+    LineElements span = line.elements();
+    const auto shift = static_cast<std::size_t>(begin);
+    span.samples = end - begin;
+    span.flags += shift;
+    span.slant_range_m += shift;
+    span.near_end_m += shift;
+    span.far_end_m += shift;
+    span.incidence_rad += shift;
+    span.local_incidence_rad += shift;
+    span.area_m2 += shift;
+    span.category += shift;
+    span.first_index = begin;
+    const LineElementTally ts = form_line_profile(
+        ctx, span, scratch,
+        {touch_s.data(), mapped_s.data(), vis_s.data(), power_s.data(), area_s.data()}, nullptr);
+    EXPECT_EQ(ts.in_swath, tw.in_swath);
+    EXPECT_EQ(power_s, power_w) << "begin " << begin;
+    EXPECT_EQ(area_s, area_w) << "begin " << begin;
+    EXPECT_EQ(touch_s, touch_w);
+    EXPECT_EQ(mapped_s, mapped_w);
+    EXPECT_EQ(vis_s, vis_w);
+  }
+}
+
 // A uniform elevation pattern reads no look angle (the fused path leaves it
 // unset): NaN there changes nothing.
 TEST(SlarElement, UniformGainIgnoresTheLookAngle) {

@@ -23,17 +23,15 @@ void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_
   mark_shadow_and_layover(ls);
 }
 
-// Image formation's per-line step (as form_slar_image): the line's elements
-// into its range profile row; counts into `counts`. Returns the number of
-// elements whose centre falls in a bin.
+// Image formation's per-line step (as form_slar_image).
 std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
                              SlarLineProfiles& prof, int line, SlarLineCounts& counts,
-                             double range_window_bins) {
+                             double range_window_bins, int first_sample) {
   const std::size_t row = prof.index(line, 0);
   const LineElements e{
-      samples,          s.flags.data(),     s.range.data(),           s.near_end.data(),
-      s.far_end.data(), s.incidence.data(), s.local_incidence.data(), s.area.data(),
-      s.category.data()};
+      samples,           s.flags.data(),     s.range.data(),           s.near_end.data(),
+      s.far_end.data(),  s.incidence.data(), s.local_incidence.data(), s.area.data(),
+      s.category.data(), first_sample};
   const LineProfileRow out{prof.touch.data() + row, prof.mapped_count.data() + row,
                            prof.visible_count.data() + row, s.acc.acc.data(),
                            s.acc.acc_area.data()};

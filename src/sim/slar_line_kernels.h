@@ -64,10 +64,12 @@ void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_
 
 // Image formation's per-line step (as form_slar_image): the line's elements
 // into its range profile row; counts into `counts`. Returns the number of
-// elements whose centre falls in a bin.
+// elements whose centre falls in a bin. first_sample: the line's sample
+// index of the scratch's element 0, when it holds a span of the line
+// (LineElements::first_index; the same bytes as the whole line then).
 std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
                              SlarLineProfiles& prof, int line, SlarLineCounts& counts,
-                             double range_window_bins);
+                             double range_window_bins, int first_sample = 0);
 
 // The fused run for a heading off the grid axes (slar_oblique_lines.cpp):
 // fills prof (allocated), maps (sized to the scene) and counts.

@@ -147,7 +147,7 @@ void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lu
         span_layout.samples = n;
         span_layout.first_sample_u_m = g.sample_u_m(span.begin);
         line_geometry(span_layout, look, need_incidence, s);
-        in_swath += accumulate_line(ctx, n, s, prof, line, local, p.range_window_bins);
+        in_swath += accumulate_line(ctx, n, s, prof, line, local, p.range_window_bins, span.begin);
         b.span.push_back(span);
         b.offset.push_back(b.value.size());
         for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
