@@ -55,6 +55,9 @@ class GroundRangeResampler {
   std::vector<std::int32_t> k0_, k1_, nearest_;
   std::vector<double> weight_;
   std::vector<std::uint8_t> inside_;
+  // The leading columns whose nearest bin is at most bins.count - 4 (the
+  // AVX2 kernel reads 4 bytes from there).
+  std::size_t nearest_gather_cols_ = 0;
 };
 
 // Resamples a lines x bins float raster (power) to lines x grid.count; NaN
