@@ -55,9 +55,8 @@ class GroundRangeResampler {
   std::vector<std::int32_t> k0_, k1_, nearest_;
   std::vector<double> weight_;
   std::vector<std::uint8_t> inside_;
-  // The leading columns whose nearest bin is at most bins.count - 4 (the
-  // AVX2 kernel reads 4 bytes from there).
-  std::size_t nearest_gather_cols_ = 0;
+  // The runs of columns inside the swath and with a nearest bin.
+  std::size_t inside_begin_ = 0, inside_end_ = 0, nearest_begin_ = 0, nearest_end_ = 0;
 };
 
 // Resamples a lines x bins float raster (power) to lines x grid.count; NaN

@@ -122,6 +122,9 @@ class FadingField {
   std::vector<double> looks_, sqrt_looks_;
   std::vector<GammaSampler> gamma_;
   std::vector<std::uint8_t> squeeze_in_registers_;  // per bin: N >= 1 (no boost draw)
+  // Per bin, for the vectorised draw: the Gamma sampler's c (NaN where N < 1,
+  // which sends every such pixel to the scalar path) and d.
+  std::vector<double> squeeze_c_, squeeze_d_;
   FadingLaw law_;
   std::uint64_t seed_;
   const ZigguratTables* zig_;
