@@ -4,8 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "ris/util/error.h"
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 namespace ris {
 
@@ -80,43 +85,171 @@ int SlarAzimuthIntegrator::lines_ready() const {
   return std::max(0, pushed_ - margin_ + 1 - emitted_);
 }
 
-void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2,
-                                 std::uint8_t* mask) {
-  RIS_CHECK(count >= 0 && count <= lines_ready());
-  const int n = lines_;
-  const int bins = bins_;
+namespace {
+
+// What emit() reads: the running sums (rows of `bins`, the first kept one
+// being running-sum index `base`), the footprint's half length per bin and
+// the image's line count.
+struct EmitRows {
+  const double* cum;
+  const double* cum_area;
+  const int* cum_data;
+  const int* cum_visible;
+  const int* cum_layover;
+  const double* half;
+  int base;
+  int bins;
+  int lines;
+  std::size_t row(int cum_index) const {
+    return static_cast<std::size_t>(cum_index - base) * static_cast<std::size_t>(bins);
+  }
+};
+
+// Pixel (line k, bin b) of emit(): the profile integrated over
+// [k - half, k + half] by the running sums, and the mask from the lines whose
+// strip overlaps it.
+inline void emit_pixel(const EmitRows& r, int k, int b, float* power, float* area,
+                       std::uint8_t* mask) {
+  const int n = r.lines;
+  const std::size_t bb = static_cast<std::size_t>(b);
   // Integral of the profile from -1/2 to x (line units), clamped.
-  const auto integral = [&](const std::vector<double>& c, std::size_t bb, double x) {
+  const auto integral = [&](const double* c, double x) {
     const double y = std::clamp(x + 0.5, 0.0, double(n));
     const int i = std::min(static_cast<int>(y), n - 1);
     const double f = y - i;
-    const std::size_t a = row(i) + bb, b = row(i + 1) + bb;
-    return c[a] + f * (c[b] - c[a]);
+    const std::size_t lo = r.row(i) + bb, hi = r.row(i + 1) + bb;
+    return c[lo] + f * (c[hi] - c[lo]);
   };
+  const double half = r.half[bb];
+  const double a = k - half, e = k + half;
+  power[bb] = static_cast<float>(integral(r.cum, e) - integral(r.cum, a));
+  area[bb] = static_cast<float>(integral(r.cum_area, e) - integral(r.cum_area, a));
+  // Lines whose strip overlaps the footprint: j + 1/2 > a and j - 1/2 < e.
+  const int j_lo = std::max(0, static_cast<int>(std::floor(a - 0.5)) + 1);
+  const int j_hi = std::min(n - 1, static_cast<int>(std::ceil(e + 0.5)) - 1);
+  const std::size_t lo = r.row(j_lo) + bb, hi = r.row(j_hi + 1) + bb;
+  const int data = r.cum_data[hi] - r.cum_data[lo];
+  const int visible = r.cum_visible[hi] - r.cum_visible[lo];
+  const int layover = r.cum_layover[hi] - r.cum_layover[lo];
+  std::uint8_t m = 0;
+  if (data == 0) m |= pixel_flag::kNoData;
+  if (data > 0 && visible == 0) m |= pixel_flag::kShadow;
+  if (layover > 0) m |= pixel_flag::kLayover;
+  mask[bb] = m;
+}
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define RIS_AZIMUTH_AVX2 1
+
+// Helpers of emit_line_avx2 (lambdas would not inherit its target).
+__attribute__((target("avx2"))) inline bool all_lanes_equal(__m128i v) {
+  return _mm_movemask_epi8(_mm_cmpeq_epi32(v, _mm_shuffle_epi32(v, 0))) == 0xffff;
+}
+// c[at] + f (c[at + stride] - c[at]) for four neighbouring bins.
+__attribute__((target("avx2"))) inline __m256d integral4(const double* c, std::size_t at,
+                                                         std::size_t stride, __m256d f) {
+  const __m256d c0 = _mm256_loadu_pd(c + at), c1 = _mm256_loadu_pd(c + at + stride);
+  return _mm256_add_pd(c0, _mm256_mul_pd(f, _mm256_sub_pd(c1, c0)));
+}
+__attribute__((target("avx2"))) inline __m128i count4(const int* c, std::size_t lo,
+                                                      std::size_t hi) {
+  return _mm_sub_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(c + hi)),
+                       _mm_loadu_si128(reinterpret_cast<const __m128i*>(c + lo)));
+}
+
+// emit()'s per-pixel rule four bins at a time. The footprint grows slowly
+// with range, so four neighbouring bins almost always read the same rows of
+// the running sums (the same i at both window ends and the same line
+// strips): those take contiguous vector loads; the arithmetic is the scalar
+// rule's, in double with separate multiplies and adds, so the same bytes.
+// A block whose rows differ takes emit_pixel bin by bin. Returns the first
+// bin not done (the last bins % 4 are left to the caller).
+__attribute__((target("avx2"))) int emit_line_avx2(const EmitRows& r, int k, float* power,
+                                                   float* area, std::uint8_t* mask) {
+  const __m256d zero = _mm256_setzero_pd(), half_line = _mm256_set1_pd(0.5);
+  const __m256d lines_d = _mm256_set1_pd(double(r.lines));
+  const __m128i last = _mm_set1_epi32(r.lines - 1);
+  const __m256d kd = _mm256_set1_pd(double(k));
+  const std::size_t stride = static_cast<std::size_t>(r.bins);
+  int b = 0;
+  for (; b + 4 <= r.bins; b += 4) {
+    const __m256d half = _mm256_loadu_pd(r.half + b);
+    const __m256d a = _mm256_sub_pd(kd, half), e = _mm256_add_pd(kd, half);
+    // std::clamp(x + 1/2, 0, n): max(0, .) keeps -0 as clamp does, then min(n, .).
+    const __m256d ya = _mm256_min_pd(lines_d, _mm256_max_pd(zero, _mm256_add_pd(a, half_line)));
+    const __m256d ye = _mm256_min_pd(lines_d, _mm256_max_pd(zero, _mm256_add_pd(e, half_line)));
+    const __m128i ia = _mm_min_epi32(_mm256_cvttpd_epi32(ya), last);
+    const __m128i ie = _mm_min_epi32(_mm256_cvttpd_epi32(ye), last);
+    // Lines whose strip overlaps the footprint (see the scalar rule).
+    const __m128i j_lo = _mm_max_epi32(
+        _mm_setzero_si128(),
+        _mm_add_epi32(_mm256_cvttpd_epi32(_mm256_floor_pd(_mm256_sub_pd(a, half_line))),
+                      _mm_set1_epi32(1)));
+    const __m128i j_hi = _mm_min_epi32(
+        last, _mm_sub_epi32(_mm256_cvttpd_epi32(_mm256_ceil_pd(_mm256_add_pd(e, half_line))),
+                            _mm_set1_epi32(1)));
+    if (!(all_lanes_equal(ia) && all_lanes_equal(ie) && all_lanes_equal(j_lo) &&
+          all_lanes_equal(j_hi))) {
+      // The rows differ within the block: the scalar rule, bin by bin.
+      for (int bb = b; bb < b + 4; ++bb) emit_pixel(r, k, bb, power, area, mask);
+      continue;
+    }
+    const std::size_t ra = r.row(_mm_cvtsi128_si32(ia)) + static_cast<std::size_t>(b);
+    const std::size_t re = r.row(_mm_cvtsi128_si32(ie)) + static_cast<std::size_t>(b);
+    const __m256d fa = _mm256_sub_pd(ya, _mm256_cvtepi32_pd(ia));
+    const __m256d fe = _mm256_sub_pd(ye, _mm256_cvtepi32_pd(ie));
+    _mm_storeu_ps(power + b, _mm256_cvtpd_ps(_mm256_sub_pd(integral4(r.cum, re, stride, fe),
+                                                           integral4(r.cum, ra, stride, fa))));
+    _mm_storeu_ps(area + b, _mm256_cvtpd_ps(_mm256_sub_pd(integral4(r.cum_area, re, stride, fe),
+                                                          integral4(r.cum_area, ra, stride, fa))));
+    const std::size_t lo = r.row(_mm_cvtsi128_si32(j_lo)) + static_cast<std::size_t>(b);
+    const std::size_t hi = r.row(_mm_cvtsi128_si32(j_hi) + 1) + static_cast<std::size_t>(b);
+    const __m128i data = count4(r.cum_data, lo, hi), visible = count4(r.cum_visible, lo, hi),
+                  layover = count4(r.cum_layover, lo, hi);
+    const __m128i z = _mm_setzero_si128();
+    const __m128i no_data = _mm_cmpeq_epi32(data, z);
+    const __m128i shadow = _mm_and_si128(_mm_cmpgt_epi32(data, z), _mm_cmpeq_epi32(visible, z));
+    const __m128i laid = _mm_cmpgt_epi32(layover, z);
+    const __m128i m =
+        _mm_or_si128(_mm_or_si128(_mm_and_si128(no_data, _mm_set1_epi32(pixel_flag::kNoData)),
+                                  _mm_and_si128(shadow, _mm_set1_epi32(pixel_flag::kShadow))),
+                     _mm_and_si128(laid, _mm_set1_epi32(pixel_flag::kLayover)));
+    const __m128i m16 = _mm_packus_epi32(m, m);
+    const int m8 = _mm_cvtsi128_si32(_mm_packus_epi16(m16, m16));
+    std::memcpy(mask + b, &m8, 4);
+  }
+  return b;
+}
+#endif
+
+}  // namespace
+
+void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2,
+                                 std::uint8_t* mask) {
+  RIS_CHECK(count >= 0 && count <= lines_ready());
+  const int bins = bins_;
+  const EmitRows rows{cum_.data(),
+                      cum_area_.data(),
+                      cum_data_.data(),
+                      cum_visible_.data(),
+                      cum_layover_.data(),
+                      half_.data(),
+                      base_,
+                      bins,
+                      lines_};
   const int first = emitted_;
+#ifdef RIS_AZIMUTH_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+#endif
 #pragma omp parallel for schedule(static)
   for (int k = first; k < first + count; ++k) {
     const std::size_t out = static_cast<std::size_t>(k - first) * static_cast<std::size_t>(bins);
-    for (int b = 0; b < bins; ++b) {
-      const std::size_t bb = static_cast<std::size_t>(b);
-      const double half = half_[bb];
-      const double a = k - half, e = k + half;
-      mean_power_w[out + bb] = static_cast<float>(integral(cum_, bb, e) - integral(cum_, bb, a));
-      area_m2[out + bb] =
-          static_cast<float>(integral(cum_area_, bb, e) - integral(cum_area_, bb, a));
-      // Lines whose strip overlaps the footprint: j + 1/2 > a and j - 1/2 < e.
-      const int j_lo = std::max(0, static_cast<int>(std::floor(a - 0.5)) + 1);
-      const int j_hi = std::min(n - 1, static_cast<int>(std::ceil(e + 0.5)) - 1);
-      const std::size_t lo = row(j_lo) + bb, hi = row(j_hi + 1) + bb;
-      const int data = cum_data_[hi] - cum_data_[lo];
-      const int visible = cum_visible_[hi] - cum_visible_[lo];
-      const int layover = cum_layover_[hi] - cum_layover_[lo];
-      std::uint8_t m = 0;
-      if (data == 0) m |= pixel_flag::kNoData;
-      if (data > 0 && visible == 0) m |= pixel_flag::kShadow;
-      if (layover > 0) m |= pixel_flag::kLayover;
-      mask[out + bb] = m;
-    }
+    int b0 = 0;
+#ifdef RIS_AZIMUTH_AVX2
+    if (avx2) b0 = emit_line_avx2(rows, k, mean_power_w + out, area_m2 + out, mask + out);
+#endif
+    for (int b = b0; b < bins; ++b)
+      emit_pixel(rows, k, b, mean_power_w + out, area_m2 + out, mask + out);
   }
   emitted_ += count;
   // Drop the running sums no later line needs (indices below emitted_ - M).
