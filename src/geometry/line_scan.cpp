@@ -128,40 +128,66 @@ void line_element_ends(const LineSamples& l) {
   edge(n - 1);
 }
 
+namespace {
+
+// cot psi = (H - h) / u of samples [j0, j0 + n) of a line, +inf where
+// skipped (branch-free: it vectorises).
+RIS_VECTOR_CLONES void cot_look_angle(int j0, int n, double first_u, double step, double H,
+                                      const float* __restrict h,
+                                      const std::uint8_t* __restrict flags,
+                                      double* __restrict cot) {
+  for (int k = 0; k < n; ++k) {
+    const int j = j0 + k;
+    const double c = (H - double(h[j])) / (first_u + j * step);
+    cot[k] = (flags[j] & kSkip) ? std::numeric_limits<double>::infinity() : c;
+  }
+}
+
+}  // namespace
+
 void mark_shadow_and_layover(const LineSamples& l) {
-  const double H = l.altitude_m;
   // Cast shadow: a point is shadowed when a nearer point has a larger look
   // angle from nadir psi = atan2(u, H - h) (MODEL.md section 2: t = tan psi =
-  // u / (H - h) where H > h). Compared as psi_max > psi <=> D u_max - u D_max
-  // > 0 with D = H - h (the sine of the angle difference), which also holds
-  // for terrain above the antenna (a PPI on a mast among hills).
-  double u_max = 0.0, d_max = 0.0;
-  bool any = false;
-  for (int j = 0; j < l.samples; ++j) {
-    if (l.flags[j] & kSkip) continue;
-    const double u = l.first_u_m + j * l.step_m;
-    const double d = H - double(l.height_m[j]);
-    if (!any || d * u_max - u * d_max < 0.0) {
-      u_max = u;  // psi >= psi_max: the new horizon
-      d_max = d;
-      any = true;
-    } else if (d * u_max - u * d_max > 0.0) {
-      l.flags[j] |= sample_flag::kShadow;
-    }
-  }
+  // u / (H - h) where H > h). For u > 0 (every sample taken: the callers flag
+  // u <= 0 kUnseen) cot psi = (H - h) / u decreases strictly with psi over
+  // (0, pi), so psi_max > psi <=> cot psi > min of the nearer samples' cot
+  // psi: a running minimum, one dependent instruction per sample instead of
+  // the horizon's cross product, and valid also for terrain above the
+  // antenna (H - h < 0: a PPI on a mast among hills). The cotangents are
+  // computed a block at a time first (vectorised). Equal angles shadow
+  // nothing, as before.
+  constexpr int kBlock = 256;
+  double cot[kBlock];
+  double cot_min = std::numeric_limits<double>::infinity();
+  // The arrays in locals: flags are bytes, whose stores may alias anything
+  // (the LineSamples itself, for all the compiler knows).
+  std::uint8_t* __restrict flags = l.flags;
+  const float* __restrict range = l.slant_range_m;
   // Layover, SNAP definition: near to far keeping the largest R, a smaller R
   // is layover; far to near keeping the smallest R, a larger R is layover.
+  // Both scans branch-free; the forward one rides along the shadow scan.
   float max_r = -std::numeric_limits<float>::infinity();
-  for (int j = 0; j < l.samples; ++j) {
-    if (l.flags[j] & kSkip) continue;
-    if (l.slant_range_m[j] < max_r) l.flags[j] |= sample_flag::kLayover;
-    max_r = std::max(max_r, l.slant_range_m[j]);
+  for (int j0 = 0; j0 < l.samples; j0 += kBlock) {
+    const int n = std::min(kBlock, l.samples - j0);
+    cot_look_angle(j0, n, l.first_u_m, l.step_m, l.altitude_m, l.height_m, flags, cot);
+    for (int k = 0; k < n; ++k) {
+      const std::size_t j = static_cast<std::size_t>(j0 + k);
+      const bool take = !(flags[j] & kSkip);
+      const float r = range[j];
+      std::uint8_t f = flags[j];
+      if (take && cot[k] > cot_min) f |= sample_flag::kShadow;
+      if (take && r < max_r) f |= sample_flag::kLayover;
+      flags[j] = f;
+      cot_min = std::min(cot_min, cot[k]);
+      max_r = std::max(max_r, take ? r : max_r);
+    }
   }
   float min_r = std::numeric_limits<float>::infinity();
   for (int j = l.samples - 1; j >= 0; --j) {
-    if (l.flags[j] & kSkip) continue;
-    if (l.slant_range_m[j] > min_r) l.flags[j] |= sample_flag::kLayover;
-    min_r = std::min(min_r, l.slant_range_m[j]);
+    const bool take = !(flags[j] & kSkip);
+    const float r = range[j];
+    if (take && r > min_r) flags[j] |= sample_flag::kLayover;
+    min_r = std::min(min_r, take ? r : min_r);
   }
 }
 

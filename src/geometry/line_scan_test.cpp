@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 namespace ris {
@@ -73,6 +74,72 @@ TEST(LineScan, ElementEndsOfAFlatLineAndAtAGap) {
   EXPECT_TRUE(std::isnan(near_end[2]) && std::isnan(far_end[2]));
   EXPECT_NEAR(near_end[3], std::hypot(125.0, H + 0.5), 1e-3);  // h_near = -0.1 x 5 m
   EXPECT_NEAR(far_end[3], std::hypot(135.0, H), 1e-3);         // shares sample 4's mean
+}
+
+// The shadow scan through the running minimum of cot psi against the
+// horizon's cross-product test (the definition: shadowed where a nearer
+// sample's look angle is larger, D u_max - u D_max > 0), and the layover
+// scans against their definition, on rough random lines: some terrain above
+// the antenna (a PPI on a mast), gaps, samples behind the sensor unseen.
+TEST(LineScan, ShadowAndLayoverMatchTheirDefinitions) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  const int n = 700;  // more than one of the scan's blocks
+  int shadowed = 0, layover = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const double H = trial % 3 == 0 ? 300.0 : 3000.0;  // the low antenna sees hills above it
+    const double first_u = trial % 2 == 0 ? -35.0 : 5.0, step = 10.0;
+    std::vector<float> h(n), range(n), near_end(n), far_end(n), dh(n, 0.0f);
+    std::vector<std::uint8_t> flags(n, 0);
+    double z = 0.0;
+    for (int j = 0; j < n; ++j) {
+      const auto k = static_cast<std::size_t>(j);
+      z += 40.0 * (uni(rng) - 0.5) + (uni(rng) < 0.02 ? 300.0 : 0.0);
+      h[k] = static_cast<float>(z);
+      const double u = first_u + j * step;
+      range[k] = static_cast<float>(std::hypot(u, H - z));
+      if (uni(rng) < 0.03) flags[k] |= sample_flag::kNoData;
+      if (!(u > 0.0)) flags[k] |= sample_flag::kUnseen;
+    }
+    std::vector<std::uint8_t> expected = flags;
+    const auto skip = [&](int j) {
+      return (flags[static_cast<std::size_t>(j)] & (sample_flag::kNoData | sample_flag::kUnseen)) !=
+             0;
+    };
+    double u_max = 0.0, d_max = 0.0;
+    bool any = false;
+    float max_r = -1.0f;
+    for (int j = 0; j < n; ++j) {
+      if (skip(j)) continue;
+      const auto k = static_cast<std::size_t>(j);
+      const double u = first_u + j * step, d = H - double(h[k]);
+      if (!any || d * u_max - u * d_max < 0.0) {
+        u_max = u;
+        d_max = d;
+        any = true;
+      } else if (d * u_max - u * d_max > 0.0) {
+        expected[k] |= sample_flag::kShadow;
+      }
+      if (range[k] < max_r) expected[k] |= sample_flag::kLayover;
+      max_r = std::max(max_r, range[k]);
+    }
+    float min_r = std::numeric_limits<float>::infinity();
+    for (int j = n - 1; j >= 0; --j) {
+      if (skip(j)) continue;
+      const auto k = static_cast<std::size_t>(j);
+      if (range[k] > min_r) expected[k] |= sample_flag::kLayover;
+      min_r = std::min(min_r, range[k]);
+    }
+    mark_shadow_and_layover({n, first_u, step, H, h.data(), range.data(), near_end.data(),
+                             far_end.data(), dh.data(), flags.data()});
+    EXPECT_EQ(flags, expected) << "trial " << trial;
+    for (const std::uint8_t f : flags) {
+      shadowed += (f & sample_flag::kShadow) ? 1 : 0;
+      layover += (f & sample_flag::kLayover) ? 1 : 0;
+    }
+  }
+  EXPECT_GT(shadowed, 1000);
+  EXPECT_GT(layover, 100);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 #include "ris/util/vector_clones.h"
+#include "util/vec8.h"
 
 namespace ris::detail {
 
@@ -65,42 +66,19 @@ constexpr int kCodeNextShift = 8;
 constexpr std::int32_t kCodeSeen = 1 << 16;
 constexpr std::int32_t kCodeGeneral = 1 << 24;
 
-// Pass 1 works on eight elements at a time in GCC vector types (one AVX2
-// register of floats; two SSE2 registers in the default clone): GCC 12 does
-// not vectorise this loop by itself (its conditions mix byte flags and float
-// comparisons). Comparisons give -1 / 0 lane masks; m ? a : b selects.
-// The helpers below take and return such vectors; they are internal and
-// inlined into the clones, so the ABI note about passing them without AVX
-// (-Wpsabi, reported at the end of the file, hence not popped) is moot.
-#pragma GCC diagnostic ignored "-Wpsabi"
-using F8 = float __attribute__((vector_size(32)));
-using I8 = std::int32_t __attribute__((vector_size(32)));
-using U16x8 = std::uint16_t __attribute__((vector_size(16)));
-using U8x8 = std::uint8_t __attribute__((vector_size(8)));
-constexpr int kLanes = 8;
-
-template <class V, class T>
-inline V load(const T* p) {
-  V v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-template <class V, class T>
-inline void store(T* p, V v) {
-  std::memcpy(p, &v, sizeof v);
-}
-inline F8 splat(float x) {
-  return F8{} + x;
-}
-inline I8 splat(std::int32_t x) {
-  return I8{} + x;
-}
-inline F8 vmin(F8 a, F8 b) {
-  return b < a ? b : a;
-}
-inline F8 vmax(F8 a, F8 b) {
-  return a < b ? b : a;
-}
+// Pass 1 works on eight elements at a time in GCC vector types
+// (util/vec8.h): GCC 12 does not vectorise this loop by itself (its
+// conditions mix byte flags and float comparisons).
+using vec8::F8;
+using vec8::I8;
+using vec8::kLanes;
+using vec8::load;
+using vec8::splat;
+using vec8::store;
+using vec8::U16x8;
+using vec8::U8x8;
+using vec8::vmax;
+using vec8::vmin;
 
 // The fraction of a half element, uniform over the bin-coordinate interval
 // between x0 and x1 (either order), at or beyond the bin edge t; a

@@ -11,7 +11,9 @@
 #include "ris/geometry/terrain_sample.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
+#include "ris/util/vector_clones.h"
 #include "sim/slar_line_kernels.h"
+#include "util/vec8.h"
 
 namespace ris {
 
@@ -65,6 +67,63 @@ void gather_row(const SceneWindow& in, int scene_rows, int r, double dx_m, doubl
   one(0, false, v[1] != 0, 0.0f, z[1]);
   for (int c = 1; c < cols - 1; ++c) one(c, v[c - 1] != 0, v[c + 1] != 0, z[c - 1], z[c + 1]);
   one(cols - 1, v[cols - 2] != 0, false, z[cols - 2], 0.0f);
+}
+
+// The scene-grid maps of a row of cells that is one line: sample j is cell
+// j, or cols - 1 - j (`reverse`) where u grows towards the west. Eight
+// samples at a time in vector types (util/vec8.h), the same operations as
+// scene_map_cell (which takes the remainder), so the same bytes; a scalar
+// loop over cells was a fifth of the fused stage (a double division per
+// cell for the degrees, and branches).
+RIS_VECTOR_CLONES void map_row(int n, bool reverse, double near_m, double far_m,
+                               const std::uint8_t* __restrict flags, const float* __restrict range,
+                               const float* __restrict local_incidence,
+                               const std::uint8_t* __restrict valid, std::uint8_t* __restrict mask,
+                               float* __restrict deg) {
+  using namespace vec8;
+  // double(R) >= near_m <=> R >= near_f, the smallest float whose double is
+  // >= near_m (likewise far_m): the comparisons in single precision.
+  const auto float_at_or_above = [](double x) {
+    float f = static_cast<float>(x);
+    if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+  };
+  const F8 near_f = splat(float_at_or_above(near_m)), far_f = splat(float_at_or_above(far_m));
+  const F8 nan = splat(kNaN);
+  const I8 reversed = {7, 6, 5, 4, 3, 2, 1, 0};
+  const int full = n / kLanes * kLanes;
+  for (int j = 0; j < full; j += kLanes) {
+    const auto jj = static_cast<std::size_t>(j);
+    const I8 sf = __builtin_convertvector(load<U8x8>(flags + jj), I8);
+    const F8 r = load<F8>(range + jj);
+    const I8 has_data = (sf & (sample_flag::kNoData | sample_flag::kUnseen)) == 0;
+    I8 f = ((sf & sample_flag::kNoData) != 0) & scene_flag::kNoData;
+    f |= ((sf & sample_flag::kShadow) != 0) & scene_flag::kShadow;
+    f |= ((sf & sample_flag::kLayover) != 0) & scene_flag::kLayover;
+    f |= ((sf & sample_flag::kBackFacing) != 0) & scene_flag::kBackFacing;
+    const I8 in_swath = (r >= near_f) & (r < far_f);
+    f |= (((sf & sample_flag::kUnseen) != 0) | (has_data & ~in_swath)) & scene_flag::kOutsideSwath;
+    // rad_to_deg in double, as scene_map_sample.
+    const D8 rad = __builtin_convertvector(load<F8>(local_incidence + jj), D8);
+    const F8 d = __builtin_convertvector(rad * 180.0 / kPi, F8);
+    const std::size_t c = reverse ? static_cast<std::size_t>(n - kLanes - j) : jj;
+    I8 ok = __builtin_convertvector(load<U8x8>(valid + c), I8) != 0;
+    if (reverse) ok = __builtin_shuffle(ok, reversed);
+    f |= ~ok & scene_flag::kNoData;
+    F8 out = (has_data & ok) ? d : nan;
+    if (reverse) {
+      f = __builtin_shuffle(f, reversed);
+      out = __builtin_shuffle(out, reversed);
+    }
+    store(mask + c, __builtin_convertvector(f, U8x8));
+    store(deg + c, out);
+  }
+  for (int j = full; j < n; ++j) {
+    const auto jj = static_cast<std::size_t>(j);
+    const auto c = static_cast<std::size_t>(reverse ? n - 1 - j : j);
+    scene_map_cell(valid[c] != 0, flags[jj], range[jj], local_incidence[jj], near_m, far_m, mask[c],
+                   deg[c]);
+  }
 }
 
 }  // namespace
@@ -242,7 +301,12 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
 
       // The scene-grid maps (scene_geometry_maps: each cell is its own
       // sample here).
-      if (lc >= 0) {
+      if (cross_is_x_ && lc >= 0 && in.col0 == 0 && in.cols == samples && maps.col0 == 0 &&
+          maps.cols == samples) {
+        map_row(samples, !u_grows_with_index_, near_m, far_m, s.flags.data(), s.range.data(),
+                s.local_incidence.data(), in.valid + in.index(lc, 0), maps.mask + maps.index(lc, 0),
+                maps.local_incidence_deg + maps.index(lc, 0));
+      } else if (lc >= 0) {
         for (int j = 0; j < samples; ++j) {
           const std::size_t jj = static_cast<std::size_t>(j);
           int r = 0, c = 0;

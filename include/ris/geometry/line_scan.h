@@ -128,7 +128,8 @@ struct LineSamples {
 // terrain is shared by the two cells beside it.
 void line_element_ends(const LineSamples& line);
 
-// Cast shadow and layover along the line (MODEL.md section 2).
+// Cast shadow and layover along the line (MODEL.md section 2). Samples not
+// skipped (kNoData, kUnseen) must be in front of the sensor, u > 0.
 void mark_shadow_and_layover(const LineSamples& line);
 
 }  // namespace ris

@@ -1,0 +1,53 @@
+// Internal: eight-lane GCC vector types and helpers, for hot loops that GCC
+// 12 does not vectorise by itself (conditions that mix byte flags with float
+// or double comparisons). One F8 is one AVX2 register in a RIS_VECTOR_CLONES
+// function's AVX2 clone and two SSE2 registers in its default clone; the
+// lane operations round as the scalar ones (no FMA), so both clones give the
+// same bytes. Comparisons give -1 / 0 lane masks (I8); `m ? a : b` selects.
+//
+// Example:
+//   const ris::vec8::F8 r = ris::vec8::load<ris::vec8::F8>(range + j);
+//   ris::vec8::store(out + j, r < ris::vec8::splat(1.0f) ? r : ris::vec8::splat(1.0f));
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+// The helpers take and return vectors; they are internal and inlined into
+// the clones, so GCC's note that passing them without AVX changes the ABI
+// (-Wpsabi, reported at the end of the file, hence not popped) is moot.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace ris::vec8 {
+
+inline constexpr int kLanes = 8;
+using F8 = float __attribute__((vector_size(32)));
+using D8 = double __attribute__((vector_size(64)));
+using I8 = std::int32_t __attribute__((vector_size(32)));
+using U16x8 = std::uint16_t __attribute__((vector_size(16)));
+using U8x8 = std::uint8_t __attribute__((vector_size(8)));
+
+template <class V, class T>
+inline V load(const T* p) {
+  V v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+template <class V, class T>
+inline void store(T* p, V v) {
+  std::memcpy(p, &v, sizeof v);
+}
+inline F8 splat(float x) {
+  return F8{} + x;
+}
+inline I8 splat(std::int32_t x) {
+  return I8{} + x;
+}
+inline F8 vmin(F8 a, F8 b) {
+  return b < a ? b : a;
+}
+inline F8 vmax(F8 a, F8 b) {
+  return a < b ? b : a;
+}
+
+}  // namespace ris::vec8
