@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <tuple>
 
@@ -94,38 +93,92 @@ std::pair<int, int> inside_samples(const GridLine& line, int rows, int cols, int
 
 namespace {
 
-// Four floats as one SSE register (GCC/Clang vector extension; SSE2 is the
-// x86-64 baseline, so no CPU dispatch and the same bytes everywhere).
-using Float4 = float __attribute__((vector_size(16)));
+// An AVX2 clone beside the SSE2 default, chosen at load time (GCC function
+// multiversioning, as ris/geometry/line_scan.cpp): the AVX2 target has no
+// FMA, so no multiply-add is contracted and the vector operations round as
+// the scalar ones: both clones give the same bytes on any CPU.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define RIS_TERRAIN_LINE_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define RIS_TERRAIN_LINE_CLONES
+#endif
 
-inline Float4 load_texel(const TerrainTexel& t) {
-  Float4 v;
-  std::memcpy(&v, &t, sizeof v);
-  return v;
+// Samples [begin, end) of the line into out[j - begin]: written for GCC's
+// loop vectoriser (bilinear_cells is selects only; every texel load is
+// unconditional, a gather; products are formed before the selects, which
+// if-convert), with Index-typed cell indices (32-bit: 8 lanes of AVX2
+// gathers).
+template <typename Index>
+[[gnu::always_inline]] inline void sample_span(const float* __restrict tex, int rows, int cols,
+                                               GridLine line, int begin, int end,
+                                               float* __restrict height, float* __restrict dz_dx,
+                                               float* __restrict dz_dy,
+                                               std::uint16_t* __restrict category,
+                                               std::uint8_t* __restrict flags) {
+  for (int j = begin; j < end; ++j) {
+    const BilinearCells<Index> b = bilinear_cells<Index>(rows, cols, line.col(j), line.row(j));
+    // Texel k of cell i is tex[4 i + k] (height, dz/dx, dz/dy, category).
+    const Index i0 = 4 * b.cell00, i1 = i0 + 4 * b.step_col, i2 = i0 + 4 * b.step_row,
+                i3 = i2 + 4 * b.step_col;
+    const float h0 = tex[i0], h1 = tex[i1], h2 = tex[i2], h3 = tex[i3];
+    const float x0 = tex[i0 + 1], x1 = tex[i1 + 1], x2 = tex[i2 + 1], x3 = tex[i3 + 1];
+    const float y0 = tex[i0 + 2], y1 = tex[i1 + 2], y2 = tex[i2 + 2], y3 = tex[i3 + 2];
+    const float cat = tex[4 * b.nearest + 3];
+    const float w0 = b.weight[0], w1 = b.weight[1], w2 = b.weight[2], w3 = b.weight[3];
+    // Sum of weight x value over the corners with a weight above 0, in
+    // corner order (as bilinear_terrain_sample): a no-data corner's NaN
+    // makes the sample no data.
+    const bool k0 = w0 > 0.0f, k1 = w1 > 0.0f, k2 = w2 > 0.0f, k3 = w3 > 0.0f;
+    const float ph0 = w0 * h0, ph1 = w1 * h1, ph2 = w2 * h2, ph3 = w3 * h3;
+    const float px0 = w0 * x0, px1 = w1 * x1, px2 = w2 * x2, px3 = w3 * x3;
+    const float py0 = w0 * y0, py1 = w1 * y1, py2 = w2 * y2, py3 = w3 * y3;
+    float h = 0.0f, gx = 0.0f, gy = 0.0f;
+    h += k0 ? ph0 : 0.0f;
+    gx += k0 ? px0 : 0.0f;
+    gy += k0 ? py0 : 0.0f;
+    h += k1 ? ph1 : 0.0f;
+    gx += k1 ? px1 : 0.0f;
+    gy += k1 ? py1 : 0.0f;
+    h += k2 ? ph2 : 0.0f;
+    gx += k2 ? px2 : 0.0f;
+    gy += k2 ? py2 : 0.0f;
+    h += k3 ? ph3 : 0.0f;
+    gx += k3 ? px3 : 0.0f;
+    gy += k3 ? py3 : 0.0f;
+    const bool no_data = h != h;  // NaN
+    const int o = j - begin;
+    height[o] = h;
+    dz_dx[o] = gx;
+    dz_dy[o] = gy;
+    category[o] = no_data ? std::uint16_t{0} : static_cast<std::uint16_t>(static_cast<int>(cat));
+    flags[o] = no_data ? sample_flag::kNoData : std::uint8_t{0};
+  }
+}
+
+RIS_TERRAIN_LINE_CLONES void sample_span_i32(const float* __restrict tex, int rows, int cols,
+                                             GridLine line, int begin, int end,
+                                             float* __restrict height, float* __restrict dz_dx,
+                                             float* __restrict dz_dy,
+                                             std::uint16_t* __restrict category,
+                                             std::uint8_t* __restrict flags) {
+  sample_span<std::int32_t>(tex, rows, cols, line, begin, end, height, dz_dx, dz_dy, category,
+                            flags);
 }
 
 }  // namespace
 
 void sample_terrain_line(const TerrainTexels& tex, const GridLine& line, int begin, int end,
                          const SampledTerrain& out) {
-  const TerrainTexel* texel = tex.texel.data();
-  for (int j = begin; j < end; ++j) {
-    const BilinearFootprint fp = bilinear_footprint(tex.rows, tex.cols, line.col(j), line.row(j));
-    // Sum of weight x (height, dz/dx, dz/dy, -) over the corners with a
-    // weight above 0, in corner order (as bilinear_terrain_sample): a
-    // no-data corner's NaN makes the sample no data.
-    Float4 acc = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (int k = 0; k < 4; ++k) {
-      if (fp.weight[k] > 0.0f) acc += load_texel(texel[fp.index[k]]) * fp.weight[k];
-    }
-    const auto o = static_cast<std::size_t>(j - begin);
-    const bool no_data = std::isnan(acc[0]);
-    out.height_m[o] = acc[0];
-    out.dz_dx[o] = acc[1];
-    out.dz_dy[o] = acc[2];
-    out.category[o] = no_data ? std::uint16_t{0}
-                              : static_cast<std::uint16_t>(texel[fp.index[fp.nearest]].category);
-    out.flags[o] = no_data ? sample_flag::kNoData : std::uint8_t{0};
+  static_assert(sizeof(TerrainTexel) == 4 * sizeof(float));
+  const auto* t = reinterpret_cast<const float*>(tex.texel.data());
+  // 32-bit float indices (4 per cell) where they fit: every scene that
+  // fits in memory with its texels up to 2^29 cells.
+  if (tex.texel.size() < (std::size_t{1} << 29)) {
+    sample_span_i32(t, tex.rows, tex.cols, line, begin, end, out.height_m, out.dz_dx, out.dz_dy,
+                    out.category, out.flags);
+  } else {
+    sample_span<std::int64_t>(t, tex.rows, tex.cols, line, begin, end, out.height_m, out.dz_dx,
+                              out.dz_dy, out.category, out.flags);
   }
 }
 
