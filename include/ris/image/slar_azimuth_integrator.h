@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "ris/image/slar_image.h"
+#include "ris/util/default_init_allocator.h"
 
 namespace ris {
 
@@ -53,8 +54,12 @@ class SlarAzimuthIntegrator {
   std::vector<double> half_;  // per bin, lines
   int pushed_ = 0, emitted_ = 0;
   int base_ = 0;  // running-sum index of the first kept row
-  std::vector<double> cum_, cum_area_;
-  std::vector<int> cum_data_, cum_visible_, cum_layover_;
+  // Grown a block of lines at a time and written in full by push(): no zero
+  // fill (ris/util/default_init_allocator.h).
+  template <typename T>
+  using Rows = std::vector<T, DefaultInitAllocator<T>>;
+  Rows<double> cum_, cum_area_;
+  Rows<int> cum_data_, cum_visible_, cum_layover_;
 };
 
 }  // namespace ris
