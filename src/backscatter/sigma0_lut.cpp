@@ -30,7 +30,7 @@ Sigma0Lut Sigma0Lut::build(const Sigma0Source& source, const RadarBand& band,
                                    c));
     }
     if (order.empty()) lut.any_category_ = c;
-    lut.offset_[c] = static_cast<std::int64_t>(order.size()) * (kSteps + 1);
+    lut.offset_[c] = static_cast<std::int32_t>(order.size()) * (kSteps + 1);
     order.push_back(c);
     // The first evaluation, here in category order, is where a model checks
     // the band (an InputError is thrown from this thread, as before).

@@ -214,7 +214,7 @@ RIS_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
 // the arithmetic in a loop of its own, which vectorises.
 RIS_VECTOR_CLONES void power_pass(int n, double k_radar, bool uniform, double g2_uniform,
                                   const double* __restrict gain2, const float* __restrict curves,
-                                  const std::int64_t* __restrict curve_offset,
+                                  const std::int32_t* __restrict curve_offset,
                                   const float* __restrict range, const float* __restrict incidence,
                                   const float* __restrict local_incidence,
                                   const float* __restrict area,
@@ -224,7 +224,7 @@ RIS_VECTOR_CLONES void power_pass(int n, double k_radar, bool uniform, double g2
                                   double* __restrict p_lo, double* __restrict p_hi,
                                   double* __restrict a_lo, double* __restrict a_hi) {
   for (int j = 0; j < n; ++j) {
-    sigma0[j] = Sigma0Lut::interpolate(curves + curve_offset[category[j]], local_incidence[j]);
+    sigma0[j] = Sigma0Lut::interpolate(curves, curve_offset[category[j]], local_incidence[j]);
   }
   if (uniform) {
     for (int j = 0; j < n; ++j) g2[j] = g2_uniform;

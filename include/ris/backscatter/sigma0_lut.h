@@ -44,36 +44,37 @@ class Sigma0Lut {
   // sigma0 (linear) at local incidence incidence_rad; angles beyond [0, pi/2]
   // are clamped. The category must have been tabulated (has() true).
   float at(std::uint16_t category, float incidence_rad) const {
-    return interpolate(curve(category), incidence_rad);
+    return interpolate(table_.data(), offset_[category], incidence_rad);
   }
 
-  // at() in two steps, for loops that look up many elements (a vectorised
-  // loop gathers from the curves): the category's tabulated curve (kSteps +
-  // 1 samples; has() true) and its value at incidence_rad (clamped to [0,
-  // pi/2]; not NaN).
-  const float* curve(std::uint16_t category) const { return table_.data() + offset_[category]; }
-  static float interpolate(const float* curve, float incidence_rad) {
-    const float pos = std::clamp(incidence_rad * kInvStep, 0.0f, static_cast<float>(kSteps));
+  // at() on the raw table, for loops that look up many elements: the
+  // category's curve starts at data() + offsets()[category] (kSteps + 1
+  // samples). 32-bit offsets and selects rather than std::clamp, so that
+  // GCC vectorises such a loop (gathers by 32-bit index).
+  const float* data() const { return table_.data(); }
+  const std::int32_t* offsets() const { return offset_.data(); }
+  static float interpolate(const float* table, std::int32_t offset, float incidence_rad) {
+    float pos = incidence_rad * kInvStep;
+    pos = pos < 0.0f ? 0.0f : pos;
+    pos = pos > static_cast<float>(kSteps) ? static_cast<float>(kSteps) : pos;
     int i = static_cast<int>(pos);
-    i = std::min(i, kSteps - 1);
+    i = i < kSteps - 1 ? i : kSteps - 1;
     const float f = pos - static_cast<float>(i);
-    return curve[i] + f * (curve[i + 1] - curve[i]);
+    const std::int32_t k = offset + i;
+    return table[k] + f * (table[k + 1] - table[k]);
   }
 
   // A tabulated category (the first), for lookups whose result is discarded
   // (a vectorised loop's lanes of elements that are not visible); 0 when
   // none is tabulated (then nothing may be looked up).
   std::uint16_t any_category() const { return any_category_; }
-  // The storage behind curve(), for a vectorised loop that gathers:
-  // curve(c) == data() + offsets()[c].
-  const float* data() const { return table_.data(); }
-  const std::int64_t* offsets() const { return offset_.data(); }
   bool empty() const { return table_.empty(); }
 
  private:
   static constexpr float kInvStep = static_cast<float>(1.0 / kStepRad);
-  std::vector<float> table_;          // (kSteps + 1) samples per tabulated category
-  std::vector<std::int64_t> offset_;  // by category id; -1 when absent
+  std::vector<float> table_;  // (kSteps + 1) samples per tabulated category
+  // By category id; -1 when absent. At most 65536 x 1801 samples: 32 bits.
+  std::vector<std::int32_t> offset_;
   std::uint16_t any_category_ = 0;
 };
 
