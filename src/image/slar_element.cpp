@@ -50,7 +50,7 @@ LineElementScratch::LineElementScratch(int samples, int bins_)
       mapped(acc.size(), 0),
       seen(acc.size(), 0),
       touch(acc.size(), 0) {
-  general.reserve(first.size());
+  general.resize(first.size());
 }
 
 namespace {
@@ -370,11 +370,18 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
 
   // Pass 4: the elements spanning more than two bins or the swath's edge,
   // into copy 0 by spread(), in element order.
-  s.general.clear();
+  // Their indices gathered branch-free (an index is written at every
+  // element and kept where the count advances).
+  const std::int32_t* __restrict code = s.code.data();
+  std::int32_t* __restrict general = s.general.data();
+  int n_general = 0;
   for (int j = 0; j < n; ++j) {
-    if (s.code[static_cast<std::size_t>(j)] & kCodeGeneral) s.general.push_back(j);
+    general[n_general] = j;
+    n_general += (code[j] & kCodeGeneral) ? 1 : 0;
   }
-  for (const std::int32_t j : s.general) {
+  s.n_general = n_general;
+  for (int g = 0; g < n_general; ++g) {
+    const std::int32_t j = general[g];
     const std::size_t jj = static_cast<std::size_t>(j);
     const std::uint8_t f = e.flags[jj];
     const bool vis = sample_visible(f);

@@ -139,7 +139,8 @@ struct LineElementScratch {
   std::vector<std::int32_t> first, centre, code, category;
   std::vector<float> frac_next, range, incidence, local_incidence, area, sigma0;
   std::vector<double> g2, power, p_lo, p_hi, a_lo, a_hi;
-  std::vector<std::int32_t> general;
+  std::vector<std::int32_t> general;  // the first n_general are used
+  int n_general = 0;
   // Per copy and bin (+ 2 spares).
   std::vector<double> acc, acc_area;
   std::vector<std::uint32_t> mapped, seen;

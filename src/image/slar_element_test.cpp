@@ -165,7 +165,7 @@ TEST(SlarElement, LineProfileMatchesElementByElementReference) {
         form_line_profile(ctx, line.elements(), scratch,
                           {touch.data(), mapped.data(), visible.data(), power.data(), area.data()},
                           element_power.data());
-    general += static_cast<int>(scratch.general.size());
+    general += scratch.n_general;
     EXPECT_EQ(t.in_swath, ref.tally.in_swath);
     EXPECT_EQ(t.nodata, ref.tally.nodata);
     EXPECT_EQ(t.shadow, ref.tally.shadow);
