@@ -7,14 +7,17 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "ris/backscatter/library.h"
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/geometry/scene_geometry_maps.h"
 #include "ris/geometry/slar_geometry.h"
 #include "ris/image/slar_image.h"
+#include "ris/image/speckle.h"
 #include "ris/perf/bench_setup.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_derived.h"
@@ -98,6 +101,25 @@ void BM_MedianElevation(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(scene.size()));
 }
 BENCHMARK(BM_MedianElevation)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The speckle alone (ris/image/speckle.h: batched Philox blocks, the common
+// draw vectorised) over a 2000-line x 488-bin image, N = 1.05 (the
+// figure-4-5 radar's). Args: threads, law (0 exact, 1 seed).
+void BM_Fading(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const int lines = 2000, bins = 488;
+  const std::vector<double> looks(bins, 1.05);
+  const ris::FadingLaw law =
+      state.range(1) ? ris::FadingLaw::seed_eq21 : ris::FadingLaw::exact_gamma;
+  std::vector<float> power(static_cast<std::size_t>(lines) * bins);
+  for (auto _ : state) {
+    std::fill(power.begin(), power.end(), 1.0f);
+    ris::apply_fading(power, lines, bins, looks, law, 7);
+    benchmark::DoNotOptimize(power.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(power.size()));
+}
+BENCHMARK(BM_Fading)->ArgsProduct({{1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Args: threads, oblique (0/1).
 BENCHMARK(BM_Geometry)->ArgsProduct({{1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -241,7 +241,8 @@ void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2,
 #ifdef RIS_AZIMUTH_AVX2
   static const bool avx2 = __builtin_cpu_supports("avx2");
 #endif
-#pragma omp parallel for schedule(static)
+  // Dynamic blocks of lines (see render_slar); each line is independent.
+#pragma omp parallel for schedule(dynamic, 16)
   for (int k = first; k < first + count; ++k) {
     const std::size_t out = static_cast<std::size_t>(k - first) * static_cast<std::size_t>(bins);
     int b0 = 0;

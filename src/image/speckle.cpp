@@ -153,15 +153,19 @@ void FadingField::apply_line(float* row, int line) const {
           y = y > kSeedFadingFloor ? y : kSeedFadingFloor;
           drawn = true;
         } else if (squeeze_in_registers_[b]) {
-          // GammaSampler's first try: v = (1 + c x)^3, accepted by the squeeze
-          // u < 1 - 0.0331 x^4 with u from the third word (boost 1: d v).
+          // GammaSampler's first try: v = (1 + c x)^3 and u from the third
+          // word, accepted by its squeeze or its logarithmic test (boost 1:
+          // d v).
           const GammaSampler& g = gamma_[b];
           double v = 1.0 + g.c() * x;
           if (v > 0.0) {
             v = v * v * v;
             const double u = (static_cast<double>(w[2][i]) + 0.5) * 0x1.0p-32;
             const double x2 = x * x;
-            if (u < 1.0 - 0.0331 * x2 * x2) {
+            // The squeeze, then (as GammaSampler, with the same values) the
+            // logarithmic test before any further draw.
+            if (u < 1.0 - 0.0331 * x2 * x2 ||
+                std::log(u) < 0.5 * x2 + g.d() * (1.0 - v + std::log(v))) {
               y = 1.0 * g.d() * v / looks_[b];
               drawn = true;
             }

@@ -195,7 +195,10 @@ SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed,
   pic.ground_grey.resize(n_ground);
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
   const auto b_count = static_cast<std::size_t>(bins);
-#pragma omp parallel for schedule(static)
+  // Dynamic blocks of lines: on a shared machine, when one thread loses its
+  // core the other takes its lines instead of waiting at the barrier (each
+  // line is independent: the same bytes for any schedule).
+#pragma omp parallel for schedule(dynamic, 16)
   for (int line = 0; line < lines; ++line) {
     const std::size_t at = static_cast<std::size_t>(line) * b_count;
     const std::uint8_t* mask = img.mask.data() + at;

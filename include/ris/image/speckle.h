@@ -104,9 +104,9 @@ inline double fading_factor(FadingLaw law, double looks, std::uint64_t seed, std
 // line's first Philox blocks are computed for 64 bins at once
 // (philox_first_blocks, vectorised). Most pixels need no more than that
 // block: the ziggurat's common case (two words) and, for the exact law with
-// N >= 1, Marsaglia and Tsang's squeeze (the third word) decide in
-// registers. Any other pixel (the ziggurat's wedge or tail, v <= 0, the
-// squeeze's logarithmic test, N < 1) is drawn again from its own stream by
+// N >= 1, Marsaglia and Tsang's squeeze or logarithmic test (the third word)
+// decide in registers. Any other pixel (the ziggurat's wedge or tail,
+// v <= 0, a rejected first try, N < 1) is drawn again from its own stream by
 // GammaSampler / ziggurat_normal, which make the same draws. The same bytes
 // as fading_factor per pixel (tested).
 class FadingField {
