@@ -25,13 +25,16 @@ bool nearly(double a, double b) {
   return std::abs(a - b) < 1e-9;
 }
 
-// The cells of row r of the window (all columns) into the scratch in column
-// order: height, slope (slope_difference, as surface_gradient), category and
-// the no-data flag; NaN height and slope where a cell has no data. Rows
-// outside the scene read `none` (no data). The interior columns take no
-// branches, so the loop vectorises.
+// The cells of row r of the window (all columns) into the scratch in sample
+// order (column c is sample c, or cols - 1 - c with `reverse`, where u grows
+// towards the west: written in place, no reversal afterwards): height, slope
+// (slope_difference, as surface_gradient), category and the flags (kNoData,
+// and kUnseen from s.unseen); NaN height and slope where a cell has no data.
+// Rows outside the scene read `none` (no data). The interior columns take no
+// branches.
 void gather_row(const SceneWindow& in, int scene_rows, int r, double dx_m, double dy_m,
-                const std::uint8_t* none_valid, const float* none_z, detail::LineScratch& s) {
+                const std::uint8_t* none_valid, const float* none_z, bool reverse,
+                detail::LineScratch& s) {
   const int cols = in.cols;
   const std::size_t base = in.index(r, in.col0);
   const float* __restrict z = in.elevation_m + base;
@@ -48,17 +51,19 @@ void gather_row(const SceneWindow& in, int scene_rows, int r, double dx_m, doubl
   float* __restrict gy = s.dz_dy.data();
   std::uint16_t* __restrict cg = s.category.data();
   std::uint8_t* __restrict fl = s.flags.data();
+  const std::uint8_t* __restrict unseen = s.unseen.data();
   const auto one = [&](int c, bool left_ok, bool right_ok, float zl, float zr) {
     const bool ok = v[c] != 0;
     const float zc = z[c];
     const float sx = slope_difference(left_ok, zl, right_ok, zr, zc, dx_m);
     const float sy = slope_difference(vd[c] != 0, zd[c], vu[c] != 0, zu[c], zc, dy_m);
-    h[c] = ok ? zc : kNaN;
-    gx[c] = ok ? sx : kNaN;
-    gy[c] = ok ? sy : kNaN;
+    const int j = reverse ? cols - 1 - c : c;
+    h[j] = ok ? zc : kNaN;
+    gx[j] = ok ? sx : kNaN;
+    gy[j] = ok ? sy : kNaN;
     const std::uint16_t k = cat[c];  // loaded unconditionally: no control flow
-    cg[c] = ok ? k : std::uint16_t{0};
-    fl[c] = ok ? std::uint8_t{0} : sample_flag::kNoData;
+    cg[j] = ok ? k : std::uint16_t{0};
+    fl[j] = static_cast<std::uint8_t>((ok ? 0 : sample_flag::kNoData) | unseen[j]);
   };
   if (cols == 1) {
     one(0, false, false, 0.0f, 0.0f);
@@ -254,16 +259,7 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
       if (cross_is_x_ && lc >= 0 && in.col0 == 0 && in.cols == samples) {
         // A row of cells, contiguous in memory.
         gather_row(in, scene.rows, lc, scene.dx_m, scene.dy_m, s.none_valid.data(), s.none_z.data(),
-                   s);
-        if (!u_grows_with_index_) {
-          std::reverse(s.height.begin(), s.height.end());
-          std::reverse(s.dz_dx.begin(), s.dz_dx.end());
-          std::reverse(s.dz_dy.begin(), s.dz_dy.end());
-          std::reverse(s.category.begin(), s.category.end());
-          std::reverse(s.flags.begin(), s.flags.end());
-        }
-        for (int j = 0; j < samples; ++j)
-          s.flags[static_cast<std::size_t>(j)] |= s.unseen[static_cast<std::size_t>(j)];
+                   !u_grows_with_index_, s);
       } else
         for (int j = 0; j < samples; ++j) {
           const std::size_t jj = static_cast<std::size_t>(j);
