@@ -67,7 +67,7 @@ void BM_TerrainTexels(benchmark::State& state) {
   const LineFixture& f = line_fixture();
   for (auto _ : state) {
     ris::TerrainTexels tex = ris::terrain_texels(f.scene);
-    benchmark::DoNotOptimize(tex.texel.data());
+    benchmark::DoNotOptimize(tex.texel.get());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(f.scene.size()));
 }

@@ -4,33 +4,81 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <vector>
 
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_sample.h"
 
 namespace ris {
 
+namespace {
+
+// An AVX2 clone beside the SSE2 default, chosen at load time (GCC function
+// multiversioning, as ris/geometry/line_scan.cpp): the AVX2 target has no
+// FMA, so no multiply-add is contracted and the vector operations round as
+// the scalar ones: both clones give the same bytes on any CPU.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define RIS_TERRAIN_LINE_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define RIS_TERRAIN_LINE_CLONES
+#endif
+
+// One row's texels: the interior columns [1, cols - 1) in one pass of
+// selects (slope_difference, no branches) that vectorises; the edge columns
+// by cell_slope, the same rule with the bounds checked. zs, vs / zn, vn: the
+// rows south (r + 1) and north (r - 1), or a row without data beyond the
+// scene's edge.
+RIS_TERRAIN_LINE_CLONES void texel_row_interior(
+    int cols, double dx_m, double dy_m, const float* __restrict z, const std::uint8_t* __restrict v,
+    const std::uint16_t* __restrict cat, const float* __restrict zs,
+    const std::uint8_t* __restrict vs, const float* __restrict zn,
+    const std::uint8_t* __restrict vn, TerrainTexel* __restrict out) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int c = 1; c < cols - 1; ++c) {
+    const bool ok = v[c] != 0;
+    const float gx = slope_difference(v[c - 1] != 0, z[c - 1], v[c + 1] != 0, z[c + 1], z[c], dx_m);
+    const float gy = slope_difference(vs[c] != 0, zs[c], vn[c] != 0, zn[c], z[c], dy_m);
+    out[c].height_m = ok ? z[c] : nan;
+    out[c].dz_dx = ok ? gx : nan;
+    out[c].dz_dy = ok ? gy : nan;
+    out[c].category = static_cast<float>(cat[c]);
+  }
+}
+
+}  // namespace
+
 TerrainTexels terrain_texels(const Scene& scene) {
   TerrainTexels t;
   t.rows = scene.rows;
   t.cols = scene.cols;
-  t.texel.resize(scene.size());
+  t.texel.reset(new TerrainTexel[t.size()]);  // not zeroed: every texel is written below
   const float nan = std::numeric_limits<float>::quiet_NaN();
+  const auto cols = static_cast<std::size_t>(scene.cols);
+  const std::vector<float> no_z(cols, 0.0f);
+  const std::vector<std::uint8_t> no_valid(cols, 0);
+  const auto edge = [&](int r, int c) {
+    const std::size_t i = scene.index(r, c);
+    TerrainTexel& x = t.texel[i];
+    x.category = static_cast<float>(scene.category[i]);
+    if (!scene.valid[i]) {
+      x.height_m = x.dz_dx = x.dz_dy = nan;
+      return;
+    }
+    x.height_m = scene.elevation_m[i];
+    std::tie(x.dz_dx, x.dz_dy) = cell_slope(scene, r, c);
+  };
 #pragma omp parallel for schedule(static)
   for (int r = 0; r < scene.rows; ++r) {
-    for (int c = 0; c < scene.cols; ++c) {
-      const std::size_t i = scene.index(r, c);
-      TerrainTexel& x = t.texel[i];
-      x.category = static_cast<float>(scene.category[i]);
-      if (!scene.valid[i]) {
-        x.height_m = x.dz_dx = x.dz_dy = nan;
-        continue;
-      }
-      x.height_m = scene.elevation_m[i];
-      const auto [gx, gy] = cell_slope(scene, r, c);
-      x.dz_dx = gx;
-      x.dz_dy = gy;
-    }
+    const std::size_t row = scene.index(r, 0);
+    const bool south = r + 1 < scene.rows, north = r > 0;
+    texel_row_interior(scene.cols, scene.dx_m, scene.dy_m, &scene.elevation_m[row],
+                       &scene.valid[row], &scene.category[row],
+                       south ? &scene.elevation_m[row + cols] : no_z.data(),
+                       south ? &scene.valid[row + cols] : no_valid.data(),
+                       north ? &scene.elevation_m[row - cols] : no_z.data(),
+                       north ? &scene.valid[row - cols] : no_valid.data(), &t.texel[row]);
+    edge(r, 0);
+    if (scene.cols > 1) edge(r, scene.cols - 1);
   }
   return t;
 }
@@ -92,16 +140,6 @@ std::pair<int, int> inside_samples(const GridLine& line, int rows, int cols, int
 }
 
 namespace {
-
-// An AVX2 clone beside the SSE2 default, chosen at load time (GCC function
-// multiversioning, as ris/geometry/line_scan.cpp): the AVX2 target has no
-// FMA, so no multiply-add is contracted and the vector operations round as
-// the scalar ones: both clones give the same bytes on any CPU.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RIS_TERRAIN_LINE_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define RIS_TERRAIN_LINE_CLONES
-#endif
 
 // Samples [begin, end) of the line into out[j - begin]: written for GCC's
 // loop vectoriser (bilinear_cells is selects only; every texel load is
@@ -170,10 +208,10 @@ RIS_TERRAIN_LINE_CLONES void sample_span_i32(const float* __restrict tex, int ro
 void sample_terrain_line(const TerrainTexels& tex, const GridLine& line, int begin, int end,
                          const SampledTerrain& out) {
   static_assert(sizeof(TerrainTexel) == 4 * sizeof(float));
-  const auto* t = reinterpret_cast<const float*>(tex.texel.data());
+  const auto* t = reinterpret_cast<const float*>(tex.texel.get());
   // 32-bit float indices (4 per cell) where they fit: every scene that
   // fits in memory with its texels up to 2^29 cells.
-  if (tex.texel.size() < (std::size_t{1} << 29)) {
+  if (tex.size() < (std::size_t{1} << 29)) {
     sample_span_i32(t, tex.rows, tex.cols, line, begin, end, out.height_m, out.dz_dx, out.dz_dy,
                     out.category, out.flags);
   } else {

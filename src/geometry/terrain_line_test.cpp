@@ -37,6 +37,37 @@ struct Sampled {
   SampledTerrain out() { return {h.data(), gx.data(), gy.data(), cat.data(), flags.data()}; }
 };
 
+// The texels hold each cell's height (NaN without data), its slope exactly
+// as surface_gradient (the vectorised interior and the edges alike) and its
+// category.
+TEST(TerrainLine, TexelsHoldHeightSlopeAndCategoryAsTheSceneAndGradient) {
+  for (int cols : {1, 2, 3, 17}) {
+    Scene s = plane_scene();
+    s.cols = cols;
+    s.elevation_m.resize(static_cast<std::size_t>(s.rows * cols));
+    s.category.resize(s.elevation_m.size());
+    s.valid.resize(s.elevation_m.size());
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      s.elevation_m[i] = static_cast<float>(std::sin(0.37 * double(i)) * 50.0 + 0.1 * double(i));
+      s.category[i] = static_cast<std::uint16_t>(i % 7);
+      s.valid[i] = (i % 5 == 3) ? 0 : 1;
+    }
+    const TerrainTexels tex = terrain_texels(s);
+    const SurfaceGradient grad = surface_gradient(s);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const TerrainTexel& t = tex.texel[i];
+      EXPECT_EQ(static_cast<std::uint16_t>(t.category), s.category[i]);
+      if (!s.valid[i]) {
+        EXPECT_TRUE(std::isnan(t.height_m) && std::isnan(t.dz_dx) && std::isnan(t.dz_dy)) << i;
+        continue;
+      }
+      EXPECT_EQ(t.height_m, s.elevation_m[i]) << i;
+      EXPECT_EQ(t.dz_dx, grad.dz_dx[i]) << "cols " << cols << " cell " << i;
+      EXPECT_EQ(t.dz_dy, grad.dz_dy[i]) << "cols " << cols << " cell " << i;
+    }
+  }
+}
+
 // The span is exactly the samples within the scene (GridLine::inside), for
 // lines at many headings and offsets, including lines that miss the scene,
 // start or end inside it, or run along a grid axis or an edge.

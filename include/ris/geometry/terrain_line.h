@@ -23,8 +23,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <utility>
-#include <vector>
 
 #include "ris/geometry/line_scan.h"  // sample_flag
 #include "ris/scene/scene.h"
@@ -33,20 +33,25 @@ namespace ris {
 
 // One cell's terrain as the line sampler reads it: height (NaN where the cell
 // has no data), the slope of ris/geometry/surface_gradient.h (NaN where no
-// data) and the category (exact as a float up to 2^24).
+// data) and the category (exact as a float up to 2^24). Trivial (no
+// initialisers), so that a scene's texels are written once, not zeroed first.
 struct alignas(16) TerrainTexel {
-  float height_m = 0.0f;
-  float dz_dx = 0.0f;
-  float dz_dy = 0.0f;
-  float category = 0.0f;
+  float height_m;
+  float dz_dx;
+  float dz_dy;
+  float category;
 };
 
 struct TerrainTexels {
   int rows = 0, cols = 0;
-  std::vector<TerrainTexel> texel;  // rows * cols, Scene::index order
+  std::unique_ptr<TerrainTexel[]> texel;  // rows * cols, Scene::index order
+  std::size_t size() const {
+    return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+  }
 };
 
-// The texels of a whole scene (16 bytes a cell), in parallel over rows.
+// The texels of a whole scene (16 bytes a cell), in parallel over rows; each
+// row's interior in one vectorised pass.
 TerrainTexels terrain_texels(const Scene& scene);
 
 // A straight line of samples in grid coordinates (Scene::grid_from_world:
