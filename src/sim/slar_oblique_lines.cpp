@@ -75,15 +75,17 @@ void scatter_block(const Scene& scene, const CellSampleFrame& f, const BlockMapV
     const double lbase = f.line_row_base(r), sbase = f.sample_row_base(r);
     const auto [c_begin, c_end] =
         candidates(affine_range(lbase, f.line_dc, lf_lo, lf_hi), scene.cols);
+    // Raw row pointers: byte stores may alias a vector's data pointer.
     const std::size_t row = scene.index(r, 0);
+    const std::uint8_t* const valid = scene.valid.data() + row;
+    std::uint8_t* const mask = maps.mask.data() + row;
+    float* const incidence = maps.local_incidence_deg.data() + row;
     for (int c = c_begin; c < c_end; ++c) {
       int line = 0, j = 0;
       if (!nearest_index(f.line_f(lbase, c), f.lines, line) || line < l0 || line >= l1) continue;
       // Cells outside the swath keep their initial mask.
       if (!nearest_index(f.sample_f(sbase, c), f.samples, j)) continue;
-      const std::size_t cell = row + static_cast<std::size_t>(c);
-      scene_map_from_sample(scene.valid[cell] != 0, b.at(line, j), maps.mask[cell],
-                            maps.local_incidence_deg[cell]);
+      scene_map_from_sample(valid[c] != 0, b.at(line, j), mask[c], incidence[c]);
     }
   }
 }
@@ -108,12 +110,17 @@ void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lu
   const LineLookFrame look{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
   const bool need_incidence = !gain2.uniform();
   const double near_m = p.range.near_m, far_m = p.range.far_m();
+  // Every cell starts outside the swath; the blocks overwrite theirs. Raw
+  // pointers: a byte store may alias a vector's own data pointer, which
+  // would otherwise be reloaded per cell.
   const auto n_cells = static_cast<std::int64_t>(scene.size());
+  std::uint8_t* const mask = maps.mask.data();
+  float* const incidence = maps.local_incidence_deg.data();
+  const std::uint8_t* const valid = scene.valid.data();
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n_cells; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    maps.mask[k] = (scene.valid[k] ? 0 : scene_flag::kNoData) | scene_flag::kOutsideSwath;
-    maps.local_incidence_deg[k] = kNaN;
+    mask[i] = (valid[i] ? 0 : scene_flag::kNoData) | scene_flag::kOutsideSwath;
+    incidence[i] = kNaN;
   }
   const int blocks = (g.lines + kBlockLines - 1) / kBlockLines;
   std::int64_t in_swath = 0;
@@ -149,10 +156,12 @@ void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lu
         line_geometry(span_layout, look, need_incidence, s);
         in_swath += accumulate_line(ctx, n, s, prof, line, local, p.range_window_bins, span.begin);
         b.span.push_back(span);
-        b.offset.push_back(b.value.size());
+        const std::size_t offset = b.value.size();
+        b.offset.push_back(offset);
+        b.value.resize(offset + static_cast<std::size_t>(n));
+        SampleMapValue* const value = b.value.data() + offset;
         for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
-          b.value.push_back(
-              scene_map_sample(s.flags[k], s.range[k], s.local_incidence[k], near_m, far_m));
+          value[k] = scene_map_sample(s.flags[k], s.range[k], s.local_incidence[k], near_m, far_m);
         }
       }
       scatter_block(scene, frame, b, maps);
