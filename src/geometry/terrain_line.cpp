@@ -1,8 +1,15 @@
 #include "ris/geometry/terrain_line.h"
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <mutex>
+#include <new>
 #include <tuple>
 #include <vector>
 
@@ -47,11 +54,82 @@ RIS_TERRAIN_LINE_CLONES void texel_row_interior(
 
 }  // namespace
 
+namespace {
+
+// One freed texel array kept for the next (one slot, the largest wins):
+// repeated simulations in one process (the benchmark, a study's runs, an
+// interactive session) then reuse it instead of faulting it in again, as
+// keep_freed_memory_for_reuse (ris/util/memory_reuse.h) does for blocks up
+// to 32 MiB. The array stays resident between runs, no more than the
+// largest run's peak.
+struct SpareTexels {
+  std::mutex mutex;
+  TerrainTexel* p = nullptr;
+  std::size_t bytes = 0;
+  ~SpareTexels() { std::free(p); }
+};
+
+SpareTexels& spare_texels() {
+  static SpareTexels s;
+  return s;
+}
+
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+
+// The allocation size of n texels: whole 2 MiB pages.
+std::size_t texel_bytes(std::size_t n) {
+  const std::size_t bytes = std::max<std::size_t>(n * sizeof(TerrainTexel), 1);
+  return (bytes + kHugePage - 1) / kHugePage * kHugePage;
+}
+
+// n texels, uninitialised: the spare array when it is large enough, else
+// 2 MiB-aligned and (Linux) advised to be backed by transparent huge pages
+// where the kernel allows it ("madvise" mode), so that the first touch
+// faults in 2 MiB at a time instead of 4 KiB (on this machine's virtual
+// CPUs a 64 MB array's 16,000 small faults cost ~40 ms, more than building
+// the texels). Contents and results do not depend on either.
+TerrainTexel* allocate_texels(std::size_t n) {
+  const std::size_t bytes = texel_bytes(n);
+  {
+    SpareTexels& spare = spare_texels();
+    const std::lock_guard<std::mutex> lock(spare.mutex);
+    if (spare.p != nullptr && spare.bytes >= bytes) {
+      TerrainTexel* p = spare.p;
+      spare.p = nullptr;
+      spare.bytes = 0;
+      return p;
+    }
+  }
+  void* p = std::aligned_alloc(kHugePage, bytes);
+  if (p == nullptr) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  (void)madvise(p, bytes, MADV_HUGEPAGE);  // advice only: ignore failure
+#endif
+  return static_cast<TerrainTexel*>(p);
+}
+
+}  // namespace
+
+void TerrainTexelsFree::operator()(TerrainTexel* p) const {
+  if (p == nullptr) return;
+  SpareTexels& spare = spare_texels();
+  const std::lock_guard<std::mutex> lock(spare.mutex);
+  // Keep the larger of this array and the spare (bytes: at least this
+  // array's size), free the other.
+  if (bytes > spare.bytes) {
+    std::swap(p, spare.p);
+    spare.bytes = bytes;
+  }
+  std::free(p);
+}
+
 TerrainTexels terrain_texels(const Scene& scene) {
   TerrainTexels t;
   t.rows = scene.rows;
   t.cols = scene.cols;
-  t.texel.reset(new TerrainTexel[t.size()]);  // not zeroed: every texel is written below
+  // Not zeroed: every texel is written below.
+  t.texel = std::unique_ptr<TerrainTexel[], TerrainTexelsFree>(
+      allocate_texels(t.size()), TerrainTexelsFree{texel_bytes(t.size())});
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const auto cols = static_cast<std::size_t>(scene.cols);
   const std::vector<float> no_z(cols, 0.0f);
