@@ -4,10 +4,10 @@
 // page by page on the next run: on this machine's virtual CPUs the page
 // faults cost as much as a third of a 1000 x 1000 scene's simulation.
 //
-// Blocks up to 32 MiB are then taken from the heap instead of fresh mmap()s
-// and the heap is not trimmed; the peak resident memory is what it would be anyway
-// (the largest run's working set). Call once, early in main(). Elsewhere than
-// glibc it does nothing.
+// Every block is then taken from the heap instead of a fresh mmap(), and the
+// heap is not trimmed; the peak resident memory is what it would be anyway
+// (the largest run's working set: freed blocks are reused, not added to).
+// Call once, early in main(). Elsewhere than glibc it does nothing.
 //
 // Example:
 //   int main() { ris::keep_freed_memory_for_reuse(); ... }
