@@ -15,27 +15,21 @@
 
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_sample.h"
+#include "ris/util/vector_clones.h"
 
 namespace ris {
 
 namespace {
 
-// An AVX2 clone beside the SSE2 default, chosen at load time (GCC function
-// multiversioning, as ris/geometry/line_scan.cpp): the AVX2 target has no
-// FMA, so no multiply-add is contracted and the vector operations round as
-// the scalar ones: both clones give the same bytes on any CPU.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RIS_TERRAIN_LINE_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define RIS_TERRAIN_LINE_CLONES
-#endif
+// Hot loops: an AVX2 clone beside the SSE2 default, the same bytes on any
+// CPU (ris/util/vector_clones.h).
 
 // One row's texels: the interior columns [1, cols - 1) in one pass of
 // selects (slope_difference, no branches) that vectorises; the edge columns
 // by cell_slope, the same rule with the bounds checked. zs, vs / zn, vn: the
 // rows south (r + 1) and north (r - 1), or a row without data beyond the
 // scene's edge.
-RIS_TERRAIN_LINE_CLONES void texel_row_interior(
+RIS_VECTOR_CLONES void texel_row_interior(
     int cols, double dx_m, double dy_m, const float* __restrict z, const std::uint8_t* __restrict v,
     const std::uint16_t* __restrict cat, const float* __restrict zs,
     const std::uint8_t* __restrict vs, const float* __restrict zn,
@@ -271,12 +265,11 @@ template <typename Index>
   }
 }
 
-RIS_TERRAIN_LINE_CLONES void sample_span_i32(const float* __restrict tex, int rows, int cols,
-                                             GridLine line, int begin, int end,
-                                             float* __restrict height, float* __restrict dz_dx,
-                                             float* __restrict dz_dy,
-                                             std::uint16_t* __restrict category,
-                                             std::uint8_t* __restrict flags) {
+RIS_VECTOR_CLONES void sample_span_i32(const float* __restrict tex, int rows, int cols,
+                                       GridLine line, int begin, int end, float* __restrict height,
+                                       float* __restrict dz_dx, float* __restrict dz_dy,
+                                       std::uint16_t* __restrict category,
+                                       std::uint8_t* __restrict flags) {
   sample_span<std::int32_t>(tex, rows, cols, line, begin, end, height, dz_dx, dz_dy, category,
                             flags);
 }
