@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -134,21 +135,40 @@ double gaussian_gain(double beta) {
   return std::exp(-std::pow((beta - 1.1) / 0.4, 2));
 }
 
+// A 40-bin profile with bins 1 m wide from range 0, categories 1-3 with the
+// cosine law, and an elevation pattern (gaussian_gain) or none.
+struct ProfileSetup {
+  static constexpr int kBins = 40;
+  static constexpr std::array<std::uint16_t, 3> kCategories = {1, 2, 3};
+  SlarImagingParams p;
+  Sigma0Lut lut;
+  TwoWayGainTable gain2;
+  SlarElementContext ctx;
+  explicit ProfileSetup(bool pattern)
+      : p(params(pattern)),
+        lut(Sigma0Lut::build(test::CosineSigma0Source(), {}, kCategories, "test")),
+        gain2(p.elevation_gain, p.peak_gain, "test"),
+        ctx(element_context(p, gain2, lut, kBins)) {}
+  static SlarImagingParams params(bool pattern) {
+    SlarImagingParams q;
+    q.range = {0.0, 1.0, kBins};
+    q.transmit_power_w = 1000.0;
+    q.wavelength_m = 0.03;
+    if (pattern) {
+      q.peak_gain = 300.0;
+      q.elevation_gain = gaussian_gain;
+    }
+    return q;
+  }
+};
+
 // Bin coordinates are the ranges themselves (near 0, 1 m bins), so single
 // and double precision put every element in the same bins: touch bits and
 // counts must agree exactly, powers to float rounding.
 TEST(SlarElement, LineProfileMatchesElementByElementReference) {
-  const int bins = 40;
-  SlarImagingParams p;
-  p.range = {0.0, 1.0, bins};
-  p.transmit_power_w = 1000.0;
-  p.wavelength_m = 0.03;
-  p.peak_gain = 300.0;
-  p.elevation_gain = gaussian_gain;
-  const std::vector<std::uint16_t> cats = {1, 2, 3};
-  const Sigma0Lut lut = Sigma0Lut::build(test::CosineSigma0Source(), {}, cats, "test");
-  const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, "test");
-  const SlarElementContext ctx = element_context(p, gain2, lut, bins);
+  const ProfileSetup setup(true);
+  const int bins = ProfileSetup::kBins;
+  const SlarElementContext& ctx = setup.ctx;
   ASSERT_EQ(ctx.inv_dr, 1.0);
 
   const int n = 203;  // not a multiple of the 8-element blocks
@@ -193,17 +213,9 @@ TEST(SlarElement, LineProfileMatchesElementByElementReference) {
 // as the whole line with the samples outside it unseen (the stage path):
 // the same bytes.
 TEST(SlarElement, SpanOfALineGivesTheWholeLinesBytes) {
-  const int bins = 40;
-  SlarImagingParams p;
-  p.range = {0.0, 1.0, bins};
-  p.transmit_power_w = 1000.0;
-  p.wavelength_m = 0.03;
-  p.peak_gain = 300.0;
-  p.elevation_gain = gaussian_gain;
-  const std::vector<std::uint16_t> cats = {1, 2, 3};
-  const Sigma0Lut lut = Sigma0Lut::build(test::CosineSigma0Source(), {}, cats, "test");
-  const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, "test");
-  const SlarElementContext ctx = element_context(p, gain2, lut, bins);
+  const ProfileSetup setup(true);
+  const int bins = ProfileSetup::kBins;
+  const SlarElementContext& ctx = setup.ctx;
   RandomLine line(203, 11);
   LineElementScratch scratch(line.n, bins);
   for (const int begin : {1, 2, 3, 6}) {
@@ -245,15 +257,9 @@ TEST(SlarElement, SpanOfALineGivesTheWholeLinesBytes) {
 // A uniform elevation pattern reads no look angle (the fused path leaves it
 // unset): NaN there changes nothing.
 TEST(SlarElement, UniformGainIgnoresTheLookAngle) {
-  const int bins = 40;
-  SlarImagingParams p;
-  p.range = {0.0, 1.0, bins};
-  p.transmit_power_w = 1000.0;
-  p.wavelength_m = 0.03;
-  const std::vector<std::uint16_t> cats = {1, 2, 3};
-  const Sigma0Lut lut = Sigma0Lut::build(test::CosineSigma0Source(), {}, cats, "test");
-  const TwoWayGainTable gain2({}, 1.0, "test");
-  const SlarElementContext ctx = element_context(p, gain2, lut, bins);
+  const ProfileSetup setup(false);
+  const int bins = ProfileSetup::kBins;
+  const SlarElementContext& ctx = setup.ctx;
   RandomLine line(100, 3);
   LineElementScratch scratch(line.n, bins);
   std::vector<std::uint8_t> touch(bins, 0);
