@@ -1,5 +1,5 @@
 // Internal: owning handles for cairo's surface and context (the drawings in
-// contact_sheet.cpp and line_chart.cpp), so every return path frees them.
+// contact_sheet.cpp, line_chart.cpp and scene_preview.cpp), so every return path frees them.
 #pragma once
 
 #include <cairo.h>

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "image/cairo_handles.h"
 #include "ris/image/category_palette.h"
 #include "ris/image/hillshade.h"
 #include "ris/io/atomic_file.h"
@@ -91,18 +92,8 @@ std::vector<std::uint8_t> shaded_category_rgb(const Scene& scene, const ScenePre
 
 namespace {
 
-struct CairoSurface {
-  cairo_surface_t* s = nullptr;
-  ~CairoSurface() {
-    if (s != nullptr) cairo_surface_destroy(s);
-  }
-};
-struct CairoContext {
-  cairo_t* c = nullptr;
-  ~CairoContext() {
-    if (c != nullptr) cairo_destroy(c);
-  }
-};
+using detail::CairoContext;
+using detail::CairoSurface;
 
 void text(cairo_t* cr, double x, double y, double size, const std::string& s, bool bold = false) {
   cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
