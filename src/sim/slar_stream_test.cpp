@@ -57,6 +57,15 @@ std::vector<std::string> files_in(const fs::path& dir) {
   return names;
 }
 
+// The test scene written as a GeoTIFF in a temporary folder (the folder
+// also takes the outputs).
+struct SceneFile {
+  Scene scene = test_scene();
+  test::TempDir dir;
+  fs::path path = dir / "scene.tif";
+  SceneFile() { write_scene_geotiff(scene, path); }
+};
+
 // Every file of two output folders, byte for byte.
 void expect_same_folders(const fs::path& a, const fs::path& b, const std::string& what) {
   const std::vector<std::string> na = files_in(a), nb = files_in(b);
@@ -74,21 +83,18 @@ void expect_same_folders(const fs::path& a, const fs::path& b, const std::string
 // sizes that do and do not divide the line count, 1 and 2 threads, and both
 // greytone references (the auto one takes the streamed exact median).
 TEST(SlarStream, StreamedEqualsInMemoryByteForByte) {
-  const Scene s = test_scene();
-  test::TempDir dir;
-  const fs::path scene_path = dir / "scene.tif";
-  write_scene_geotiff(s, scene_path);
-  const Scene read = read_scene(scene_path);
+  const SceneFile f;
+  const Scene read = read_scene(f.path);
   const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
   const int saved = omp_get_max_threads();
   for (double heading : {0.0, 90.0, 180.0, 270.0}) {
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
       const bool auto_ref = heading != 90.0;
-      const RadarParams radar = test_radar(s, heading, auto_ref);
-      const SlarRunInfo info{scene_path.string(), "r.toml", "test", 7, threads};
+      const RadarParams radar = test_radar(f.scene, heading, auto_ref);
+      const SlarRunInfo info{f.path.string(), "r.toml", "test", 7, threads};
       const std::string tag = fmt::format("heading {} threads {}", heading, threads);
-      const fs::path mem = dir / ("mem-" + tag);
+      const fs::path mem = f.dir / ("mem-" + tag);
       const SlarSimulation sim = simulate_slar(read, radar, src);
       // Pictures as GeoTIFFs (too large for PNG) in one case.
       SlarRunInfo info_tif = info;
@@ -99,9 +105,8 @@ TEST(SlarStream, StreamedEqualsInMemoryByteForByte) {
         SlarStreamOptions o;
         o.block_lines = block;
         o.quiet = true;
-        const fs::path out = dir / fmt::format("stream-{}-{}", tag, block);
-        const SlarStreamSummary sum =
-            simulate_slar_streamed(scene_path, radar, src, info_tif, out, o);
+        const fs::path out = f.dir / fmt::format("stream-{}-{}", tag, block);
+        const SlarStreamSummary sum = simulate_slar_streamed(f.path, radar, src, info_tif, out, o);
         EXPECT_EQ(sum.block_lines, std::min(block, sim.image.lines));
         expect_same_folders(mem, out, tag + fmt::format(" block {}", block));
         fs::remove_all(out);
@@ -115,22 +120,19 @@ TEST(SlarStream, StreamedEqualsInMemoryByteForByte) {
 // The incoherent SAR streams too (range and azimuth windows, NESZ noise):
 // the same bytes as in memory, metadata included.
 TEST(SlarStream, StreamedSarEqualsInMemoryByteForByte) {
-  const Scene s = test_scene();
-  test::TempDir dir;
-  const fs::path scene_path = dir / "scene.tif";
-  write_scene_geotiff(s, scene_path);
-  const Scene read = read_scene(scene_path);
+  const SceneFile f;
+  const Scene read = read_scene(f.path);
   const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
   for (double heading : {0.0, 270.0}) {
-    RadarParams radar = test_radar(s, heading, true);
+    RadarParams radar = test_radar(f.scene, heading, true);
     radar.mode = RadarMode::sar;
     radar.sar.range_resolution_m = 2.5 * radar.range_bin_m;
     radar.sar.azimuth_resolution_m = 14.0;
     radar.sar.azimuth_looks = 2;
     radar.sar.nesz = 1e-3;
-    const SlarRunInfo info{scene_path.string(), "sar.toml", "test", 3, 2};
+    const SlarRunInfo info{f.path.string(), "sar.toml", "test", 3, 2};
     const std::string tag = fmt::format("sar heading {}", heading);
-    const fs::path mem = dir / ("mem-" + tag);
+    const fs::path mem = f.dir / ("mem-" + tag);
     const SlarSimulation sim = simulate_slar(read, radar, src);
     ASSERT_FALSE(sim.noise_power_w.empty()) << tag;
     write_slar_products(mem, read, sim, render_slar(sim, info.seed), info);
@@ -138,8 +140,8 @@ TEST(SlarStream, StreamedSarEqualsInMemoryByteForByte) {
       SlarStreamOptions o;
       o.block_lines = block;
       o.quiet = true;
-      const fs::path out = dir / fmt::format("stream-{}-{}", tag, block);
-      simulate_slar_streamed(scene_path, radar, src, info, out, o);
+      const fs::path out = f.dir / fmt::format("stream-{}-{}", tag, block);
+      simulate_slar_streamed(f.path, radar, src, info, out, o);
       expect_same_folders(mem, out, tag + fmt::format(" block {}", block));
     }
   }
@@ -149,18 +151,15 @@ TEST(SlarStream, StreamedSarEqualsInMemoryByteForByte) {
 // staging folder) behind, including a failure found after blocks were
 // written (a swath that misses the scene).
 TEST(SlarStream, BadInputLeavesNoOutput) {
-  const Scene s = test_scene();
-  test::TempDir dir;
-  const fs::path scene_path = dir / "scene.tif";
-  write_scene_geotiff(s, scene_path);
+  const SceneFile f;
   const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
-  const RadarParams radar = test_radar(s, 0.0, true);
+  const RadarParams radar = test_radar(f.scene, 0.0, true);
   const SlarRunInfo info{"x", "r.toml", "test", 1, 1};
   SlarStreamOptions o;
   o.quiet = true;
   const auto expect_fails = [&](const fs::path& scene, const RadarParams& r,
                                 const std::string& expected) {
-    const fs::path out = dir / "out";
+    const fs::path out = f.dir / "out";
     try {
       simulate_slar_streamed(scene, r, src, info, out, o);
       ADD_FAILURE() << "no error for " << expected;
@@ -169,17 +168,17 @@ TEST(SlarStream, BadInputLeavesNoOutput) {
     }
     EXPECT_FALSE(fs::exists(out));
   };
-  expect_fails(dir / "missing.tif", radar, "missing.tif");
-  test::write_file(dir / "text.tif", "not a raster\n");
-  expect_fails(dir / "text.tif", radar, "text.tif");
-  RadarParams oblique = bench_radar(radar, s, deg_to_rad(30.0));
-  expect_fails(scene_path, oblique, "grid axis");
+  expect_fails(f.dir / "missing.tif", radar, "missing.tif");
+  test::write_file(f.dir / "text.tif", "not a raster\n");
+  expect_fails(f.dir / "text.tif", radar, "text.tif");
+  RadarParams oblique = bench_radar(radar, f.scene, deg_to_rad(30.0));
+  expect_fails(f.path, oblique, "grid axis");
   RadarParams far = radar;
   far.near_slant_range_m += 50000.0;  // the swath lies beyond the scene
   far.far_slant_range_m += 50000.0;
-  expect_fails(scene_path, far, "misses the scene");
+  expect_fails(f.path, far, "misses the scene");
   // Nothing but the inputs is left in the folder.
-  std::vector<std::string> left = files_in(dir.path());
+  std::vector<std::string> left = files_in(f.dir.path());
   EXPECT_EQ(left, (std::vector<std::string>{"scene.tif", "text.tif"}));
 }
 
