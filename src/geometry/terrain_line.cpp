@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <mutex>
 #include <new>
@@ -213,11 +214,27 @@ std::pair<int, int> inside_samples(const GridLine& line, int rows, int cols, int
 
 namespace {
 
-// Samples [begin, end) of the line into out[j - begin]: written for GCC's
-// loop vectoriser (bilinear_cells is selects only; every texel load is
-// unconditional, a gather; products are formed before the selects, which
-// if-convert), with Index-typed cell indices (32-bit: 8 lanes of AVX2
-// gathers).
+// Samples [begin, end) of the line into out[j - begin], a chunk of kChunk
+// samples at a time in two passes:
+//  1. where: bilinear_cells over the chunk (selects only, so GCC vectorises
+//     it), keeping each sample's first corner, nearest cell and weights;
+//  2. what: per sample, its four corner texels as 4-float vectors (height,
+//     dz/dx, dz/dy, category: one 16-byte load each, no gathers) weighted by
+//     the broadcast weight, the same float operations in the same corner
+//     order as bilinear_terrain_sample lane by lane.
+// Pass 2 replaced 13 AVX2 gathers a sample (13 lanes each of a different
+// texel load, ~8 cycles a gather on this EPYC) by 4 vector loads.
+constexpr int kChunk = 128;
+
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+
+inline Float4 load_texel(const float* p) {
+  Float4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
 template <typename Index>
 [[gnu::always_inline]] inline void sample_span(const float* __restrict tex, int rows, int cols,
                                                GridLine line, int begin, int end,
@@ -225,43 +242,51 @@ template <typename Index>
                                                float* __restrict dz_dy,
                                                std::uint16_t* __restrict category,
                                                std::uint8_t* __restrict flags) {
-  for (int j = begin; j < end; ++j) {
-    const BilinearCells<Index> b = bilinear_cells<Index>(rows, cols, line.col(j), line.row(j));
-    // Texel k of cell i is tex[4 i + k] (height, dz/dx, dz/dy, category).
-    const Index i0 = 4 * b.cell00, i1 = i0 + 4 * b.step_col, i2 = i0 + 4 * b.step_row,
-                i3 = i2 + 4 * b.step_col;
-    const float h0 = tex[i0], h1 = tex[i1], h2 = tex[i2], h3 = tex[i3];
-    const float x0 = tex[i0 + 1], x1 = tex[i1 + 1], x2 = tex[i2 + 1], x3 = tex[i3 + 1];
-    const float y0 = tex[i0 + 2], y1 = tex[i1 + 2], y2 = tex[i2 + 2], y3 = tex[i3 + 2];
-    const float cat = tex[4 * b.nearest + 3];
-    const float w0 = b.weight[0], w1 = b.weight[1], w2 = b.weight[2], w3 = b.weight[3];
-    // Sum of weight x value over the corners with a weight above 0, in
-    // corner order (as bilinear_terrain_sample): a no-data corner's NaN
-    // makes the sample no data.
-    const bool k0 = w0 > 0.0f, k1 = w1 > 0.0f, k2 = w2 > 0.0f, k3 = w3 > 0.0f;
-    const float ph0 = w0 * h0, ph1 = w1 * h1, ph2 = w2 * h2, ph3 = w3 * h3;
-    const float px0 = w0 * x0, px1 = w1 * x1, px2 = w2 * x2, px3 = w3 * x3;
-    const float py0 = w0 * y0, py1 = w1 * y1, py2 = w2 * y2, py3 = w3 * y3;
-    float h = 0.0f, gx = 0.0f, gy = 0.0f;
-    h += k0 ? ph0 : 0.0f;
-    gx += k0 ? px0 : 0.0f;
-    gy += k0 ? py0 : 0.0f;
-    h += k1 ? ph1 : 0.0f;
-    gx += k1 ? px1 : 0.0f;
-    gy += k1 ? py1 : 0.0f;
-    h += k2 ? ph2 : 0.0f;
-    gx += k2 ? px2 : 0.0f;
-    gy += k2 ? py2 : 0.0f;
-    h += k3 ? ph3 : 0.0f;
-    gx += k3 ? px3 : 0.0f;
-    gy += k3 ? py3 : 0.0f;
-    const bool no_data = h != h;  // NaN
-    const int o = j - begin;
-    height[o] = h;
-    dz_dx[o] = gx;
-    dz_dy[o] = gy;
-    category[o] = no_data ? std::uint16_t{0} : static_cast<std::uint16_t>(static_cast<int>(cat));
-    flags[o] = no_data ? sample_flag::kNoData : std::uint8_t{0};
+  // Texel k of cell i is tex[4 i + k]; the corners' offsets from the first
+  // are the same for every sample (bilinear_cells' steps).
+  const BilinearCells<Index> steps = bilinear_cells<Index>(rows, cols, 0.5, 0.5);
+  const Index d1 = 4 * steps.step_col, d2 = 4 * steps.step_row, d3 = d2 + d1;
+  alignas(32) Index first[kChunk], nearest[kChunk];
+  alignas(32) float w0[kChunk], w1[kChunk], w2[kChunk], w3[kChunk];
+  for (int j0 = begin; j0 < end; j0 += kChunk) {
+    const int n = std::min(kChunk, end - j0);
+    for (int k = 0; k < n; ++k) {
+      const BilinearCells<Index> b =
+          bilinear_cells<Index>(rows, cols, line.col(j0 + k), line.row(j0 + k));
+      first[k] = 4 * b.cell00;
+      nearest[k] = 4 * b.nearest + 3;
+      w0[k] = b.weight[0];
+      w1[k] = b.weight[1];
+      w2[k] = b.weight[2];
+      w3[k] = b.weight[3];
+    }
+    const int o0 = j0 - begin;
+    for (int k = 0; k < n; ++k) {
+      const float* const t = tex + first[k];
+      // Sum of weight x value over the corners with a weight above 0, in
+      // corner order (as bilinear_terrain_sample): a no-data corner's NaN
+      // makes the sample no data. The product comes before the select
+      // (0 x NaN is NaN).
+      Float4 acc = {0.0f, 0.0f, 0.0f, 0.0f};
+      const auto add = [&acc](float w, const float* p) {
+        const Float4 product = w * load_texel(p);
+        const Int4 keep = (Float4{} + w) > 0.0f;
+        acc += keep ? product : Float4{};
+      };
+      add(w0[k], t);
+      add(w1[k], t + d1);
+      add(w2[k], t + d2);
+      add(w3[k], t + d3);
+      const float h = acc[0];
+      const bool no_data = h != h;  // NaN
+      const int o = o0 + k;
+      height[o] = h;
+      dz_dx[o] = acc[1];
+      dz_dy[o] = acc[2];
+      category[o] = no_data ? std::uint16_t{0}
+                            : static_cast<std::uint16_t>(static_cast<int>(tex[nearest[k]]));
+      flags[o] = no_data ? sample_flag::kNoData : std::uint8_t{0};
+    }
   }
 }
 

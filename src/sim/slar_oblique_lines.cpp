@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ris/geometry/terrain_line.h"
+#include "ris/util/vector_clones.h"
 #include "sim/slar_line_kernels.h"
 
 namespace ris::detail {
@@ -39,28 +40,80 @@ std::pair<int, int> candidates(std::pair<double, double> ab, int n) {
   return {static_cast<int>(a), static_cast<int>(b)};
 }
 
-// One block of lines' scene-map values: per line its span and the values of
-// its span's samples (the rest are unseen).
+// One block of lines' scene-map values, dense: row k (line line0 + k) holds
+// samples [j_lo - 1, j_hi] of the line, where [j_lo, j_hi) covers every
+// line's span; samples outside a line's span (and the two guard columns,
+// which any sample index beyond the covered range is clamped to) are unseen.
+// Dense, so that the scatter looks a cell's value up without a branch.
 struct BlockMapValues {
   int line0 = 0, lines = 0;
-  std::vector<SlarLineSpan> span;
-  std::vector<std::size_t> offset;  // of each line's first span sample in `value`
-  std::vector<SampleMapValue> value;
+  int j_lo = 0, j_hi = 0;          // samples covered
+  int width = 0;                   // j_hi - j_lo + 2
+  std::vector<std::int32_t> mask;  // scene_flag bits; 32-bit for AVX2 gathers
+  std::vector<float> incidence_deg;
   SampleMapValue unseen;
 
-  const SampleMapValue& at(int line, int j) const {
-    const auto k = static_cast<std::size_t>(line - line0);
-    const SlarLineSpan& sp = span[k];
-    if (j < sp.begin || j >= sp.end) return unseen;
-    return value[offset[k] + static_cast<std::size_t>(j - sp.begin)];
+  // Sizes the block for spans [begin, end) of its lines, every value unseen.
+  void reset(int first_line, int n_lines, int lo, int hi) {
+    line0 = first_line;
+    lines = n_lines;
+    j_lo = lo;
+    j_hi = std::max(lo, hi);
+    width = j_hi - j_lo + 2;
+    const std::size_t n = static_cast<std::size_t>(lines) * static_cast<std::size_t>(width);
+    mask.assign(n, unseen.mask);
+    incidence_deg.assign(n, unseen.local_incidence_deg);
+  }
+  // Index of (line, j) for a line of the block and any j (clamped to the
+  // guard columns).
+  std::size_t index(int line, int j) const {
+    const int jc = j < j_lo - 1 ? j_lo - 1 : (j > j_hi ? j_hi : j);
+    return static_cast<std::size_t>(line - line0) * static_cast<std::size_t>(width) +
+           static_cast<std::size_t>(jc - (j_lo - 1));
   }
 };
 
+// round_half_away for the in-range indices of the scatter's inner loop
+// (|f| < 2^31): the same integer, through a 32-bit truncation, which GCC
+// vectorises (a 64-bit one it does not without AVX-512).
+inline int round_half_away_int(double f) {
+  const int t = static_cast<int>(f);
+  const double d = f - static_cast<double>(t);
+  return t + (d >= 0.5 ? 1 : 0) - (d <= -0.5 ? 1 : 0);
+}
+
+// The cells [c_begin, c_end) of one scene row, every one of them taking a
+// line of the block and a sample in [0, samples) (scatter_block has checked
+// the run's ends exactly): the inner loop has no test, so it runs without
+// branches.
+RIS_VECTOR_CLONES void scatter_run(double lbase, double line_dc, double sbase, double sample_dc,
+                                   int c_begin, int c_end, const BlockMapValues& b,
+                                   const std::uint8_t* __restrict valid,
+                                   std::uint8_t* __restrict mask, float* __restrict incidence) {
+  const std::int32_t* __restrict vm = b.mask.data();
+  const float* __restrict vi = b.incidence_deg.data();
+  const int lo = b.j_lo - 1, hi = b.j_hi, line0 = b.line0, width = b.width;
+  for (int c = c_begin; c < c_end; ++c) {
+    // The expressions of CellSampleFrame::line_f / sample_f, rounded as
+    // nearest_index rounds.
+    const int line = round_half_away_int(lbase + c * line_dc);
+    const int j0 = round_half_away_int(sbase + c * sample_dc);
+    const int j = j0 < lo ? lo : (j0 > hi ? hi : j0);
+    const int k = (line - line0) * width + (j - lo);
+    // Unconditional loads, so that GCC vectorises with gathers: a cell
+    // without data reads entry 0 (a guard column: unseen, NaN incidence)
+    // instead of selecting NaN, which GCC would turn into a masked load.
+    const int ok = valid[c] != 0 ? 1 : 0;
+    mask[c] = static_cast<std::uint8_t>(vm[k] | (ok ? 0 : scene_flag::kNoData));
+    incidence[c] = vi[k * ok];
+  }
+}
+
 // Writes the scene maps of the cells whose line (cell_sample) is in the
 // block: along each scene row the block's cells are one run of columns (the
-// line index is affine and monotone in the column), found analytically and
-// each cell checked exactly. Every cell belongs to one line, so blocks in
-// parallel never write the same cell.
+// line and sample indices are affine and monotone in the column), found
+// analytically with a margin and its ends then checked exactly. Every cell
+// belongs to one line, so blocks in parallel never write the same cell.
 void scatter_block(const Scene& scene, const CellSampleFrame& f, const BlockMapValues& b,
                    SceneGeometryMaps& maps) {
   const int l0 = b.line0, l1 = b.line0 + b.lines;
@@ -73,20 +126,21 @@ void scatter_block(const Scene& scene, const CellSampleFrame& f, const BlockMapV
       candidates(affine_range(f.line0, f.line_dr, lf_lo - c_hi, lf_hi - c_lo), scene.rows);
   for (int r = r_begin; r < r_end; ++r) {
     const double lbase = f.line_row_base(r), sbase = f.sample_row_base(r);
-    const auto [c_begin, c_end] =
-        candidates(affine_range(lbase, f.line_dc, lf_lo, lf_hi), scene.cols);
-    // Raw row pointers: byte stores may alias a vector's data pointer.
-    const std::size_t row = scene.index(r, 0);
-    const std::uint8_t* const valid = scene.valid.data() + row;
-    std::uint8_t* const mask = maps.mask.data() + row;
-    float* const incidence = maps.local_incidence_deg.data() + row;
-    for (int c = c_begin; c < c_end; ++c) {
+    auto [c_begin, c_end] = candidates(affine_range(lbase, f.line_dc, lf_lo, lf_hi), scene.cols);
+    // The cells that take a line of this block and a sample (cell_sample's
+    // rule): an interval of the candidates, since both indices are monotone
+    // in the column; trim its ends exactly.
+    const auto takes = [&](int c) {
       int line = 0, j = 0;
-      if (!nearest_index(f.line_f(lbase, c), f.lines, line) || line < l0 || line >= l1) continue;
-      // Cells outside the swath keep their initial mask.
-      if (!nearest_index(f.sample_f(sbase, c), f.samples, j)) continue;
-      scene_map_from_sample(valid[c] != 0, b.at(line, j), mask[c], incidence[c]);
-    }
+      return nearest_index(f.line_f(lbase, c), f.lines, line) && line >= l0 && line < l1 &&
+             nearest_index(f.sample_f(sbase, c), f.samples, j);
+    };
+    while (c_begin < c_end && !takes(c_begin)) ++c_begin;
+    while (c_end > c_begin && !takes(c_end - 1)) --c_end;
+    if (c_begin == c_end) continue;
+    const std::size_t row = scene.index(r, 0);
+    scatter_run(lbase, f.line_dc, sbase, f.sample_dc, c_begin, c_end, b, scene.valid.data() + row,
+                maps.mask.data() + row, maps.local_incidence_deg.data() + row);
   }
 }
 
@@ -135,16 +189,23 @@ void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lu
     const std::vector<float> u_all = s.u;
     BlockMapValues b;
     b.unseen = scene_map_sample(sample_flag::kUnseen, kNaN, kNaN, near_m, far_m);
-    b.value.reserve(static_cast<std::size_t>(kBlockLines) * static_cast<std::size_t>(g.samples));
+    std::vector<SlarLineSpan> spans(static_cast<std::size_t>(kBlockLines));
 #pragma omp for schedule(dynamic, 1)
     for (int block = 0; block < blocks; ++block) {
-      b.line0 = block * kBlockLines;
-      b.lines = std::min(kBlockLines, g.lines - b.line0);
-      b.span.clear();
-      b.offset.clear();
-      b.value.clear();
-      for (int line = b.line0; line < b.line0 + b.lines; ++line) {
-        const SlarLineSpan span = slar_line_span(scene, g, line);
+      const int line0 = block * kBlockLines;
+      const int lines = std::min(kBlockLines, g.lines - line0);
+      int j_lo = g.samples, j_hi = 0;
+      for (int k = 0; k < lines; ++k) {
+        const SlarLineSpan& span = spans[static_cast<std::size_t>(k)] =
+            slar_line_span(scene, g, line0 + k);
+        if (span.begin < span.end) {
+          j_lo = std::min(j_lo, span.begin);
+          j_hi = std::max(j_hi, span.end);
+        }
+      }
+      b.reset(line0, lines, j_lo, j_hi);
+      for (int line = line0; line < line0 + lines; ++line) {
+        const SlarLineSpan& span = spans[static_cast<std::size_t>(line - line0)];
         const int n = span.end - span.begin;
         const auto first = static_cast<std::ptrdiff_t>(span.begin);
         sample_terrain_line(
@@ -155,13 +216,15 @@ void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lu
         span_layout.first_sample_u_m = g.sample_u_m(span.begin);
         line_geometry(span_layout, look, need_incidence, s);
         in_swath += accumulate_line(ctx, n, s, prof, line, local, p.range_window_bins, span.begin);
-        b.span.push_back(span);
-        const std::size_t offset = b.value.size();
-        b.offset.push_back(offset);
-        b.value.resize(offset + static_cast<std::size_t>(n));
-        SampleMapValue* const value = b.value.data() + offset;
+        if (n <= 0) continue;
+        const std::size_t k0 = b.index(line, span.begin);
+        std::int32_t* const mask_out = b.mask.data() + k0;
+        float* const incidence_out = b.incidence_deg.data() + k0;
         for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
-          value[k] = scene_map_sample(s.flags[k], s.range[k], s.local_incidence[k], near_m, far_m);
+          const SampleMapValue v =
+              scene_map_sample(s.flags[k], s.range[k], s.local_incidence[k], near_m, far_m);
+          mask_out[k] = v.mask;
+          incidence_out[k] = v.local_incidence_deg;
         }
       }
       scatter_block(scene, frame, b, maps);
