@@ -123,7 +123,7 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
                                                       std::int32_t any_category, I8 valid,
                                                       BinsTally& t) {
   const F8 nb = splat(static_cast<float>(bins)), zero = splat(0.0f);
-  const I8 f = __builtin_convertvector(load<U8x8>(io.flags + j), I8);
+  const I8 f = vec8::widen_u8(load<U8x8>(io.flags + j));
   const I8 has = (f & kSkip) == 0;
   const I8 vis = (f & kHidden) == 0;
   const I8 lay = (f & sample_flag::kLayover) != 0;

@@ -43,6 +43,16 @@ inline F8 splat(float x) {
 inline I8 splat(std::int32_t x) {
   return I8{} + x;
 }
+// Bytes to and from 32-bit lanes through 16-bit lanes: the same values as
+// one __builtin_convertvector, but GCC 12 compiles the direct conversion
+// into a scalar extract / insert per lane and this into a few vector
+// instructions (vpmovzxbw, vpmovzxwd; vpackusdw, vpackuswb).
+inline I8 widen_u8(U8x8 b) {
+  return __builtin_convertvector(__builtin_convertvector(b, U16x8), I8);
+}
+inline U8x8 narrow_u8(I8 x) {
+  return __builtin_convertvector(__builtin_convertvector(x, U16x8), U8x8);
+}
 inline F8 vmin(F8 a, F8 b) {
   return b < a ? b : a;
 }
