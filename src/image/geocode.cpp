@@ -26,7 +26,7 @@ namespace {
 // Each scene cell takes the value of the pixel it maps to, else `fill`.
 template <typename T, typename Fill>
 std::vector<T> geocode(const Scene& scene, const Track& track, const SlarImage& img,
-                       const std::vector<T>& slant, Fill fill) {
+                       std::span<const T> slant, Fill fill) {
   RIS_CHECK(slant.size() == static_cast<std::size_t>(img.lines) * img.bins);
   RIS_CHECK(img.line_spacing_m > 0.0 && img.range.bin_m > 0.0);
   std::vector<T> out(scene.size(), fill);
@@ -48,13 +48,13 @@ std::vector<T> geocode(const Scene& scene, const Track& track, const SlarImage& 
 
 std::vector<float> geocode_slant_image(const Scene& scene, const Track& track,
                                        const SlarImage& image,
-                                       const std::vector<float>& slant_values) {
+                                       std::span<const float> slant_values) {
   return geocode(scene, track, image, slant_values, std::numeric_limits<float>::quiet_NaN());
 }
 
 std::vector<std::uint8_t> geocode_slant_grey(const Scene& scene, const Track& track,
                                              const SlarImage& image,
-                                             const std::vector<std::uint8_t>& slant_grey,
+                                             std::span<const std::uint8_t> slant_grey,
                                              std::uint8_t fill) {
   return geocode(scene, track, image, slant_grey, fill);
 }

@@ -1,6 +1,7 @@
 #include "ris/sim/point_target_irf.h"
 
 #include <cmath>
+#include <span>
 
 namespace ris {
 
@@ -15,7 +16,8 @@ constexpr int kHalfCutPx = 24;
 std::vector<PointTargetIrf> measure_point_targets(const SlarSimulation& sim,
                                                   const SlarPictures& pictures, bool coherent) {
   const SlarImage& img = sim.image;
-  const std::vector<float>& power = coherent ? pictures.speckled_power_w : img.mean_power_w;
+  const std::span<const float> power =
+      coherent ? std::span<const float>(pictures.speckled_power_w) : img.mean_power_w;
   std::vector<PointTargetIrf> out;
   for (const PointReturn& pr : sim.point_returns) {
     const double pos = (pr.slant_range_m - img.range.near_m) / img.range.bin_m;

@@ -76,7 +76,7 @@ void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene
                                 {"RIS_VERSION", RIS_VERSION}};
   write_png_gray(dir.path("ppi_scope.png"), pic.scope_grey.data(), sg.size, sg.size);
   write_png_gray(dir.path("bscope.png"), pic.bscope_grey.data(), b.bins, b.lines);
-  std::vector<float> mean = b.mean_power_w;
+  std::vector<float> mean(b.mean_power_w.begin(), b.mean_power_w.end());
   for (std::size_t i = 0; i < mean.size(); ++i)
     if (b.mask[i] & pixel_flag::kNoData) mean[i] = std::numeric_limits<float>::quiet_NaN();
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -384,11 +384,24 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
   RIS_CHECK(p.azimuth_beamwidth_rad > 0.0);
   SlarLineProfiles prof;
   prof.allocate(g.lines, p.range.count);
-  maps.mask.assign(scene.size(), 0);
+  // No fill (UninitVector): along a grid axis every cell is written by the
+  // line on its row or column (one line per row or column, checked below);
+  // the oblique path sets every cell first itself.
+  maps.mask.resize(scene.size());
   maps.local_incidence_deg.resize(scene.size());
   SlarLineCounts counts;
   if (g.direct_sampling) {
     const SlarLineEngine engine(scene, g, lut, p, radar_file);
+    {
+      RIS_CHECK(static_cast<std::size_t>(g.lines) * static_cast<std::size_t>(g.samples) ==
+                scene.size());
+      std::vector<std::uint8_t> taken(static_cast<std::size_t>(g.lines), 0);
+      for (int line = 0; line < g.lines; ++line) {
+        const int cell = engine.cell_of_line(line);
+        RIS_CHECK(cell >= 0 && cell < g.lines && !taken[static_cast<std::size_t>(cell)]);
+        taken[static_cast<std::size_t>(cell)] = 1;
+      }
+    }
     const SceneMapsWindow out{
         0, 0, scene.rows, scene.cols, maps.mask.data(), maps.local_incidence_deg.data()};
     engine.run(0, g.lines, SceneWindow::whole(scene), prof, out, counts);
@@ -399,7 +412,13 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
   g.shadow_samples = counts.shadow;
   g.back_facing_samples = counts.back_facing;
   g.layover_samples = counts.layover;
-  g.nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));
+  // Counted by the threads (a serial count over the scene was a serial step).
+  const std::uint8_t* const valid = scene.valid.data();
+  const auto n_cells = static_cast<std::int64_t>(scene.size());
+  std::int64_t nodata_cells = 0;
+#pragma omp parallel for schedule(static) reduction(+ : nodata_cells)
+  for (std::int64_t i = 0; i < n_cells; ++i) nodata_cells += valid[i] == 0 ? 1 : 0;
+  g.nodata_cells = nodata_cells;
   if (prof.samples_in_swath == 0) {
     throw InputError(radar_file, "sweep_delay",
                      fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the scene, "

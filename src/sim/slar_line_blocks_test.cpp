@@ -19,9 +19,11 @@
 namespace ris {
 namespace {
 
-template <typename T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+// Any two vectors of one type (std::vector or ris::UninitVector).
+template <typename Vector>
+bool same_bytes(const Vector& a, const Vector& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), a.size() * sizeof(typename Vector::value_type)) == 0;
 }
 
 Scene test_scene() {

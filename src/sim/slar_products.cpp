@@ -249,7 +249,7 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
   picture("slant_range", pic.slant_grey.data(), img.bins, img.lines);
   picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines);
   // No-data pixels are NaN in the power rasters (the files' no-data value).
-  std::vector<float> mean = img.mean_power_w;
+  std::vector<float> mean(img.mean_power_w.begin(), img.mean_power_w.end());
   for (std::size_t i = 0; i < mean.size(); ++i)
     if (img.mask[i] & pixel_flag::kNoData) mean[i] = std::numeric_limits<float>::quiet_NaN();
   const Georef georef{scene.geotransform(), scene.crs_wkt};

@@ -300,7 +300,7 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
       az.emit(n, block.mean_power_w.data(), block.area_m2.data(), mask.data());
       std::tie(sim.range_corrected, sim.area_corrected) = apply_switch_corrections(block, rs.terms);
       if (!sim.noise_power_w.empty()) add_noise_power(block, sim.noise_power_w);
-      mean.swap(block.mean_power_w);
+      mean.assign(block.mean_power_w.begin(), block.mean_power_w.end());
       for (std::size_t i = 0; i < np; ++i) {
         if (valid_power(mean[i], mask[i])) power.count(mean[i]);
         if (mask[i] & pixel_flag::kNoData) mean[i] = kNaNf;

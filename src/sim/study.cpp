@@ -348,7 +348,7 @@ StudyResult run_study(const Scene& scene, const toml::table& radar_doc,
     p.band = band;
     p.lines = sim.image.lines;
     p.bins = sim.image.bins;
-    p.slant_grey = pic.slant_grey;
+    p.slant_grey.assign(pic.slant_grey.begin(), pic.slant_grey.end());
     p.stats = category_stats(labels, pic.slant_grey, sim.image.mean_power_w, result.categories,
                              result.category_names);
     for (std::size_t a = 0; a < p.stats.size(); ++a) {

@@ -24,6 +24,7 @@
 #include "ris/geometry/slar_geometry.h"
 #include "ris/image/slar_image.h"
 #include "ris/scene/scene.h"
+#include "ris/util/default_init_allocator.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -37,8 +38,8 @@ inline constexpr std::uint8_t kOutsideSwath = 16;
 }  // namespace scene_flag
 
 struct SceneGeometryMaps {
-  std::vector<std::uint8_t> mask;          // rows x cols, scene_flag bits
-  std::vector<float> local_incidence_deg;  // rows x cols; NaN where no data or not imaged
+  UninitVector<std::uint8_t> mask;          // rows x cols, scene_flag bits
+  UninitVector<float> local_incidence_deg;  // rows x cols; NaN where no data or not imaged
 };
 
 SceneGeometryMaps scene_geometry_maps(const Scene& scene, const SlarGeometry& geometry,

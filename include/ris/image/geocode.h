@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "ris/image/slar_image.h"
@@ -38,13 +39,12 @@ bool geocode_pixel(const Scene& grid, const Track& track, const SlarImage& image
 // slant_values: lines x bins (the image's layout), e.g. power in W.
 // Returns rows x cols on the scene grid, NaN where no pixel applies.
 std::vector<float> geocode_slant_image(const Scene& scene, const Track& track,
-                                       const SlarImage& image,
-                                       const std::vector<float>& slant_values);
+                                       const SlarImage& image, std::span<const float> slant_values);
 
 // The same for 8-bit greytones; cells without a pixel get `fill` (0).
 std::vector<std::uint8_t> geocode_slant_grey(const Scene& scene, const Track& track,
                                              const SlarImage& image,
-                                             const std::vector<std::uint8_t>& slant_grey,
+                                             std::span<const std::uint8_t> slant_grey,
                                              std::uint8_t fill = 0);
 
 }  // namespace ris

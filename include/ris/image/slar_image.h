@@ -36,6 +36,7 @@
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/geometry/slar_geometry.h"
+#include "ris/util/default_init_allocator.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -98,15 +99,15 @@ struct SlarImage {
   int bins = 0;   // columns, near range first
   SlantRangeBins range;
   double line_spacing_m = 0.0;
-  std::vector<float> mean_power_w;  // lines x bins, received mean power (W)
+  UninitVector<float> mean_power_w;  // lines x bins, received mean power (W)
   // lines x bins: true area (m^2) of the visible elements summed like the
   // power (for the area switch of equation 15, ris/image/greytone_terms.h).
-  std::vector<float> area_m2;
-  std::vector<std::uint8_t> mask;  // lines x bins, pixel_flag bits
+  UninitVector<float> area_m2;
+  UninitVector<std::uint8_t> mask;  // lines x bins, pixel_flag bits
   // Per line (not integrated over the footprint), by element centre:
-  std::vector<std::uint16_t> mapped_count;   // elements with data
-  std::vector<std::uint16_t> visible_count;  // of which visible (lit, facing)
-  std::int64_t samples_in_swath = 0;         // elements with data whose centre is in a bin
+  UninitVector<std::uint16_t> mapped_count;   // elements with data
+  UninitVector<std::uint16_t> visible_count;  // of which visible (lit, facing)
+  std::int64_t samples_in_swath = 0;          // elements with data whose centre is in a bin
   // Only with keep_element_power: geometry lines x samples, P_i of each
   // visible element (0 otherwise), W.
   std::vector<float> element_power_w;
@@ -133,14 +134,16 @@ struct SlarLineProfiles {
   int line0 = 0;  // the first line held (a block of a streamed image)
   int lines = 0;
   int bins = 0;
-  std::vector<float> power_w;                // per line, summed P_i spread over bins
-  std::vector<float> area_m2;                // per line, summed visible area
-  std::vector<std::uint8_t> touch;           // slar_touch bits
-  std::vector<std::uint16_t> mapped_count;   // as SlarImage
-  std::vector<std::uint16_t> visible_count;  // as SlarImage
+  UninitVector<float> power_w;                // per line, summed P_i spread over bins
+  UninitVector<float> area_m2;                // per line, summed visible area
+  UninitVector<std::uint8_t> touch;           // slar_touch bits
+  UninitVector<std::uint16_t> mapped_count;   // as SlarImage
+  UninitVector<std::uint16_t> visible_count;  // as SlarImage
   std::int64_t samples_in_swath = 0;
 
-  // Lines [first_line, first_line + lines_) of bins_ bins each, zeroed.
+  // Lines [first_line, first_line + lines_) of bins_ bins each: touch and
+  // the counts zeroed; power_w and area_m2 not set (UninitVector): the
+  // caller writes every line's power and area in full (image formation does).
   void allocate(int lines_, int bins_, int first_line = 0);
   // line: the image's line number, in [line0, line0 + lines).
   std::size_t index(int line, int bin) const {

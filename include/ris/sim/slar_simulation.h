@@ -43,6 +43,7 @@
 #include "ris/sensor/radar_params.h"
 #include "ris/sensor/track.h"
 #include "ris/sim/point_target.h"
+#include "ris/util/default_init_allocator.h"
 
 namespace ris {
 
@@ -111,11 +112,12 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar,
 
 struct SlarPictures {
   std::uint64_t seed = 0;
-  std::vector<float> speckled_power_w;    // lines x bins (mean power when fading is off)
-  std::vector<std::uint8_t> slant_grey;   // lines x bins
-  std::vector<float> ground_power_w;      // lines x ground_grid.count, speckled
-  std::vector<std::uint8_t> ground_mask;  // lines x ground_grid.count, pixel_flag bits
-  std::vector<std::uint8_t> ground_grey;
+  // Written in full by render_slar's parallel loop (no zero fill first).
+  UninitVector<float> speckled_power_w;    // lines x bins (mean power when fading is off)
+  UninitVector<std::uint8_t> slant_grey;   // lines x bins
+  UninitVector<float> ground_power_w;      // lines x ground_grid.count, speckled
+  UninitVector<std::uint8_t> ground_mask;  // lines x ground_grid.count, pixel_flag bits
+  UninitVector<std::uint8_t> ground_grey;
   std::vector<double> looks;  // N per range bin
   double reference_power_w = 0.0;
   double reference_greytone = 0.0;
