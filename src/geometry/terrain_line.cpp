@@ -269,8 +269,9 @@ template <typename Index>
       // (0 x NaN is NaN).
       Float4 acc = {0.0f, 0.0f, 0.0f, 0.0f};
       const auto add = [&acc](float w, const float* p) {
-        const Float4 product = w * load_texel(p);
-        const Int4 keep = (Float4{} + w) > 0.0f;
+        const Float4 wv = {w, w, w, w};  // a broadcast (Float4{} + w is an add)
+        const Float4 product = wv * load_texel(p);
+        const Int4 keep = wv > Float4{};
         acc += keep ? product : Float4{};
       };
       add(w0[k], t);
