@@ -7,6 +7,7 @@
 
 #include "ris/util/fast_math.h"
 #include "ris/util/vector_clones.h"
+#include "util/vec8.h"
 
 namespace ris {
 
@@ -145,17 +146,115 @@ RIS_VECTOR_CLONES void cot_look_angle(int j0, int n, double first_u, double step
 
 }  // namespace
 
+namespace {
+
+// The scans eight samples at a time (util/vec8.h): a running minimum or
+// maximum is an inclusive prefix scan, log-step within the block (three
+// shifts and mins), then combined with the previous blocks' value, so the
+// chain from block to block is one min and one broadcast instead of one
+// dependent min per sample. The tests compare each sample with the
+// inclusive scan: x > min(m, x) <=> x > m (likewise for max), so no shift to
+// the exclusive scan is needed.
+using vec8::F8;
+using vec8::I8;
+using vec8::kLanes;
+using D4 = double __attribute__((vector_size(32)));
+using L4 = std::int64_t __attribute__((vector_size(32)));
+using I4 = std::int32_t __attribute__((vector_size(16)));
+
+inline D4 vmin4(D4 a, D4 b) {
+  return b < a ? b : a;  // std::min(a, b)
+}
+
+// Inclusive prefix minimum of the lanes (lane k: min of lanes 0..k).
+inline D4 prefix_min(D4 x) {
+  const D4 inf = D4{} + std::numeric_limits<double>::infinity();
+  x = vmin4(x, __builtin_shuffle(x, inf, L4{4, 0, 1, 2}));
+  return vmin4(x, __builtin_shuffle(x, inf, L4{4, 5, 0, 1}));
+}
+inline F8 prefix_max(F8 x) {
+  const F8 lo = vec8::splat(-std::numeric_limits<float>::infinity());
+  x = vec8::vmax(x, __builtin_shuffle(x, lo, I8{8, 0, 1, 2, 3, 4, 5, 6}));
+  x = vec8::vmax(x, __builtin_shuffle(x, lo, I8{8, 9, 0, 1, 2, 3, 4, 5}));
+  return vec8::vmax(x, __builtin_shuffle(x, lo, I8{8, 9, 10, 11, 0, 1, 2, 3}));
+}
+// Inclusive suffix minimum (lane k: min of lanes k..7).
+inline F8 suffix_min(F8 x) {
+  const F8 hi = vec8::splat(std::numeric_limits<float>::infinity());
+  x = vec8::vmin(x, __builtin_shuffle(x, hi, I8{1, 2, 3, 4, 5, 6, 7, 8}));
+  x = vec8::vmin(x, __builtin_shuffle(x, hi, I8{2, 3, 4, 5, 6, 7, 8, 9}));
+  return vec8::vmin(x, __builtin_shuffle(x, hi, I8{4, 5, 6, 7, 8, 9, 10, 11}));
+}
+
+// Forward: shadow (cot psi above the running minimum of the nearer samples')
+// and the near-to-far layover scan over samples [j0, j0 + n), n a multiple of
+// 8, cot psi of sample j0 + k in cot[k]; the running values carried in and
+// out.
+RIS_VECTOR_CLONES void forward_scan(int n, const double* __restrict cot,
+                                    const float* __restrict range, std::uint8_t* __restrict flags,
+                                    double& cot_min, float& max_r) {
+  using namespace vec8;
+  const F8 neg_inf = splat(-std::numeric_limits<float>::infinity());
+  D4 cot_carry = D4{} + cot_min;
+  F8 r_carry = splat(max_r);
+  for (int k = 0; k < n; k += kLanes) {
+    const auto kk = static_cast<std::size_t>(k);
+    const I8 f = widen_u8(load<U8x8>(flags + kk));
+    const I8 take = (f & kSkip) == 0;
+    const D4 c_lo = load<D4>(cot + kk), c_hi = load<D4>(cot + kk + 4);
+    const D4 m_lo = vmin4(prefix_min(c_lo), cot_carry);
+    const D4 m_hi = vmin4(prefix_min(c_hi), __builtin_shuffle(m_lo, L4{3, 3, 3, 3}));
+    cot_carry = __builtin_shuffle(m_hi, L4{3, 3, 3, 3});
+    // The two halves' comparisons (64-bit lanes) as one 8-lane mask.
+    const I8 above =
+        __builtin_shufflevector(__builtin_convertvector(c_lo > m_lo, I4),
+                                __builtin_convertvector(c_hi > m_hi, I4), 0, 1, 2, 3, 4, 5, 6, 7);
+    const F8 r = load<F8>(range + kk);
+    const F8 m_r = vmax(prefix_max(take ? r : neg_inf), r_carry);
+    r_carry = __builtin_shuffle(m_r, I8{7, 7, 7, 7, 7, 7, 7, 7});
+    const I8 out =
+        f | (take & above & sample_flag::kShadow) | (take & (r < m_r) & sample_flag::kLayover);
+    store(flags + kk, narrow_u8(out));
+  }
+  cot_min = cot_carry[0];
+  max_r = r_carry[0];
+}
+
+// Backward: the far-to-near layover scan over samples [0, n), n a multiple of
+// 8, from the far end; the running minimum carried in.
+RIS_VECTOR_CLONES void backward_scan(int n, const float* __restrict range,
+                                     std::uint8_t* __restrict flags, float min_r) {
+  using namespace vec8;
+  const F8 inf = splat(std::numeric_limits<float>::infinity());
+  F8 carry = splat(min_r);
+  for (int k = n - kLanes; k >= 0; k -= kLanes) {
+    const auto kk = static_cast<std::size_t>(k);
+    const I8 f = widen_u8(load<U8x8>(flags + kk));
+    const I8 take = (f & kSkip) == 0;
+    const F8 r = load<F8>(range + kk);
+    const F8 m = vmin(suffix_min(take ? r : inf), carry);
+    carry = __builtin_shuffle(m, I8{0, 0, 0, 0, 0, 0, 0, 0});
+    store(flags + kk, narrow_u8(f | (take & (r > m) & sample_flag::kLayover)));
+  }
+}
+
+}  // namespace
+
 void mark_shadow_and_layover(const LineSamples& l) {
   // Cast shadow: a point is shadowed when a nearer point has a larger look
   // angle from nadir psi = atan2(u, H - h) (MODEL.md section 2: t = tan psi =
   // u / (H - h) where H > h). For u > 0 (every sample taken: the callers flag
   // u <= 0 kUnseen) cot psi = (H - h) / u decreases strictly with psi over
   // (0, pi), so psi_max > psi <=> cot psi > min of the nearer samples' cot
-  // psi: a running minimum, one dependent instruction per sample instead of
-  // the horizon's cross product, and valid also for terrain above the
-  // antenna (H - h < 0: a PPI on a mast among hills). The cotangents are
-  // computed a block at a time first (vectorised). Equal angles shadow
-  // nothing, as before.
+  // psi: a running minimum instead of the horizon's cross product, valid
+  // also for terrain above the antenna (H - h < 0: a PPI on a mast among
+  // hills). The cotangents are computed a block at a time first
+  // (vectorised). Equal angles shadow nothing, as before.
+  // Layover, SNAP definition: near to far keeping the largest R, a smaller R
+  // is layover; far to near keeping the smallest R, a larger R is layover.
+  // Both running scans eight samples at a time (forward_scan,
+  // backward_scan); the samples after the last full eight one by one, the
+  // same comparisons.
   constexpr int kBlock = 256;
   double cot[kBlock];
   double cot_min = std::numeric_limits<double>::infinity();
@@ -163,14 +262,14 @@ void mark_shadow_and_layover(const LineSamples& l) {
   // (the LineSamples itself, for all the compiler knows).
   std::uint8_t* __restrict flags = l.flags;
   const float* __restrict range = l.slant_range_m;
-  // Layover, SNAP definition: near to far keeping the largest R, a smaller R
-  // is layover; far to near keeping the smallest R, a larger R is layover.
-  // Both scans branch-free; the forward one rides along the shadow scan.
+  const int full = l.samples / kLanes * kLanes;
   float max_r = -std::numeric_limits<float>::infinity();
   for (int j0 = 0; j0 < l.samples; j0 += kBlock) {
     const int n = std::min(kBlock, l.samples - j0);
     cot_look_angle(j0, n, l.first_u_m, l.step_m, l.altitude_m, l.height_m, flags, cot);
-    for (int k = 0; k < n; ++k) {
+    const int n_full = std::max(0, std::min(n, full - j0));
+    forward_scan(n_full, cot, range + j0, flags + j0, cot_min, max_r);
+    for (int k = n_full; k < n; ++k) {
       const std::size_t j = static_cast<std::size_t>(j0 + k);
       const bool take = !(flags[j] & kSkip);
       const float r = range[j];
@@ -183,12 +282,13 @@ void mark_shadow_and_layover(const LineSamples& l) {
     }
   }
   float min_r = std::numeric_limits<float>::infinity();
-  for (int j = l.samples - 1; j >= 0; --j) {
+  for (int j = l.samples - 1; j >= full; --j) {
     const bool take = !(flags[j] & kSkip);
     const float r = range[j];
     if (take && r > min_r) flags[j] |= sample_flag::kLayover;
     min_r = std::min(min_r, take ? r : min_r);
   }
+  backward_scan(full, range, flags, min_r);
 }
 
 }  // namespace ris

@@ -84,9 +84,11 @@ TEST(LineScan, ElementEndsOfAFlatLineAndAtAGap) {
 TEST(LineScan, ShadowAndLayoverMatchTheirDefinitions) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
-  const int n = 700;  // more than one of the scan's blocks
   int shadowed = 0, layover = 0;
   for (int trial = 0; trial < 30; ++trial) {
+    // More than one of the scan's blocks of 256, and short lines (1 to 16
+    // samples: the eight-sample vector blocks and the remainder).
+    const int n = trial % 5 == 4 ? 1 + 3 * (trial / 5) : 700;
     const double H = trial % 3 == 0 ? 300.0 : 3000.0;  // the low antenna sees hills above it
     const double first_u = trial % 2 == 0 ? -35.0 : 5.0, step = 10.0;
     std::vector<float> h(n), range(n), near_end(n), far_end(n), dh(n, 0.0f);
