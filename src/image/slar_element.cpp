@@ -113,7 +113,7 @@ struct BinsPassIo {
 // area 0, a tabulated category, angles 0), so that pass needs no conditions.
 // Per-lane tallies of pass 1 (LineElementTally); `valid` masks the padding.
 struct BinsTally {
-  I8 in_swath{}, nodata{}, shadow{}, back_facing{}, layover{};
+  I8 in_swath{}, nodata{}, shadow{}, back_facing{}, layover{}, general{};
   F8 r_min = splat(std::numeric_limits<float>::infinity());
   F8 r_max = splat(-std::numeric_limits<float>::infinity());
 };
@@ -147,6 +147,7 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
   const I8 b0 = __builtin_convertvector(touch ? vmax(lo, zero) : zero, I8);
   const I8 b1 = __builtin_convertvector(touch ? vmin(hi, nb - 1.0f) : zero, I8);
   const I8 fast = touch & (lo >= zero) & (hi < nb) & ((b1 - b0) <= 1);
+  t.general -= touch & ~fast;  // padding lanes have no data: never touch
   const I8 bits =
       slar_touch::kData | (vis & slar_touch::kVisible) | (vis & lay & slar_touch::kLayover);
   store(io.code + j, (fast & bits) | (fast & (b1 > b0) & (bits << kCodeNextShift)) |
@@ -204,6 +205,7 @@ RIS_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
     tally.shadow += t.shadow[l];
     tally.back_facing += t.back_facing[l];
     tally.layover += t.layover[l];
+    tally.general += t.general[l];
     tally.r_min_m = std::min(tally.r_min_m, t.r_min[l]);
     tally.r_max_m = std::max(tally.r_max_m, t.r_max[l]);
   }
@@ -371,13 +373,16 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   // Pass 4: the elements spanning more than two bins or the swath's edge,
   // into copy 0 by spread(), in element order.
   // Their indices gathered branch-free (an index is written at every
-  // element and kept where the count advances).
+  // element and kept where the count advances); most lines have none
+  // (bins_pass counts them), and then the loop over the line is skipped.
   const std::int32_t* __restrict code = s.code.data();
   std::int32_t* __restrict general = s.general.data();
   int n_general = 0;
-  for (int j = 0; j < n; ++j) {
-    general[n_general] = j;
-    n_general += (code[j] & kCodeGeneral) ? 1 : 0;
+  if (t.general > 0) {
+    for (int j = 0; j < n; ++j) {
+      general[n_general] = j;
+      n_general += (code[j] & kCodeGeneral) ? 1 : 0;
+    }
   }
   s.n_general = n_general;
   for (int g = 0; g < n_general; ++g) {

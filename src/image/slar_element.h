@@ -121,6 +121,7 @@ struct LineProfileRow {
 struct LineElementTally {
   std::int64_t in_swath = 0;  // elements with data whose centre falls in a bin
   std::int64_t nodata = 0, shadow = 0, back_facing = 0, layover = 0;  // elements with the flag
+  std::int64_t general = 0;  // elements left to spread() (more than two bins, the swath's edge)
   float r_min_m = std::numeric_limits<float>::infinity();  // slant range of the elements with data
   float r_max_m = -std::numeric_limits<float>::infinity();
 };
