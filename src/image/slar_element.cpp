@@ -41,15 +41,11 @@ LineElementScratch::LineElementScratch(int samples, int bins_)
       sigma0(first.size()),
       g2(first.size()),
       power(first.size()),
-      p_lo(first.size()),
-      p_hi(first.size()),
-      a_lo(first.size()),
-      a_hi(first.size()),
-      acc(kCopies * stride(), 0.0),
-      acc_area(acc.size(), 0.0),
-      mapped(acc.size(), 0),
-      seen(acc.size(), 0),
-      touch(acc.size(), 0) {
+      lo(2 * first.size()),
+      hi(2 * first.size()),
+      acc(2 * kCopies * stride(), 0.0),
+      counts(kCopies * stride(), 0),
+      touch(counts.size(), 0) {
   general.resize(first.size());
 }
 
@@ -65,6 +61,8 @@ constexpr std::int32_t kHidden =
 constexpr int kCodeNextShift = 8;
 constexpr std::int32_t kCodeSeen = 1 << 16;
 constexpr std::int32_t kCodeGeneral = 1 << 24;
+// One visible centre in LineElementScratch::counts (both halves).
+constexpr std::uint64_t kSeenOne = (std::uint64_t{1} << 32) | 1;
 
 // Pass 1 works on eight elements at a time in GCC vector types
 // (util/vec8.h): GCC 12 does not vectorise this loop by itself (its
@@ -223,8 +221,7 @@ RIS_VECTOR_CLONES void power_pass(int n, double k_radar, bool uniform, double g2
                                   const std::int32_t* __restrict category,
                                   const float* __restrict frac_next, float* __restrict sigma0,
                                   double* __restrict g2, double* __restrict power,
-                                  double* __restrict p_lo, double* __restrict p_hi,
-                                  double* __restrict a_lo, double* __restrict a_hi) {
+                                  double* __restrict lo, double* __restrict hi) {
   for (int j = 0; j < n; ++j) {
     sigma0[j] = Sigma0Lut::interpolate(curves, curve_offset[category[j]], local_incidence[j]);
   }
@@ -238,10 +235,11 @@ RIS_VECTOR_CLONES void power_pass(int n, double k_radar, bool uniform, double g2
     power[j] = p;
     const double frac = frac_next[j];
     const double ph = p * frac, ah = double(area[j]) * frac;
-    p_hi[j] = ph;
-    p_lo[j] = p - ph;
-    a_hi[j] = ah;
-    a_lo[j] = double(area[j]) - ah;
+    const auto k = 2 * static_cast<std::size_t>(j);
+    lo[k] = p - ph;
+    lo[k + 1] = double(area[j]) - ah;
+    hi[k] = ph;
+    hi[k + 1] = ah;
   }
 }
 
@@ -255,28 +253,27 @@ void scatter_pass(int n, int first_index, LineElementScratch& s) {
   const std::int32_t* __restrict first = s.first.data();
   const std::int32_t* __restrict centre = s.centre.data();
   const std::int32_t* __restrict code = s.code.data();
-  const double* __restrict p_lo = s.p_lo.data();
-  const double* __restrict p_hi = s.p_hi.data();
-  const double* __restrict a_lo = s.a_lo.data();
-  const double* __restrict a_hi = s.a_hi.data();
+  const double* __restrict lo = s.lo.data();
+  const double* __restrict hi = s.hi.data();
   double* __restrict acc = s.acc.data();
-  double* __restrict acc_area = s.acc_area.data();
   std::uint8_t* __restrict touch = s.touch.data();
-  std::uint32_t* __restrict mapped = s.mapped.data();
-  std::uint32_t* __restrict seen = s.seen.data();
+  std::uint64_t* __restrict counts = s.counts.data();
+  using D2 = double __attribute__((vector_size(16)));
+  const auto add = [](double* a, const double* x) {
+    vec8::store(a, vec8::load<D2>(a) + vec8::load<D2>(x));
+  };
   const auto one = [&](int j, std::size_t q) {
     const std::size_t jj = static_cast<std::size_t>(j);
     const std::size_t b = q * stride + static_cast<std::size_t>(first[jj]);
-    acc[b] += p_lo[jj];
-    acc[b + 1] += p_hi[jj];
-    acc_area[b] += a_lo[jj];
-    acc_area[b + 1] += a_hi[jj];
+    // The (power, area) pairs: the same two additions per bin as two
+    // scalar arrays, in one instruction.
+    add(acc + 2 * b, lo + 2 * jj);
+    add(acc + 2 * b + 2, hi + 2 * jj);
     const std::int32_t c = code[jj];
     touch[b] |= static_cast<std::uint8_t>(c & 0xff);
     touch[b + 1] |= static_cast<std::uint8_t>((c >> kCodeNextShift) & 0xff);
     const std::size_t k = q * stride + static_cast<std::size_t>(centre[jj]);
-    mapped[k] += 1;
-    seen[k] += (c & kCodeSeen) ? 1 : 0;
+    counts[k] += (c & kCodeSeen) ? kSeenOne : 1;
   };
   const auto copy = [first_index](int j) {
     return static_cast<std::size_t>((first_index + j) & 3);
@@ -295,8 +292,7 @@ void scatter_pass(int n, int first_index, LineElementScratch& s) {
 // Pass 5: the copies summed into the line's outputs, and zeroed for the next
 // line; one loop per type, so that each vectorises.
 RIS_VECTOR_CLONES void merge_pass(int bins, std::size_t stride, double* __restrict acc,
-                                  double* __restrict acc_area, std::uint32_t* __restrict mapped,
-                                  std::uint32_t* __restrict seen, std::uint8_t* __restrict touch,
+                                  std::uint64_t* __restrict counts, std::uint8_t* __restrict touch,
                                   double* __restrict out_power, double* __restrict out_area,
                                   std::uint8_t* __restrict out_touch,
                                   std::uint16_t* __restrict out_mapped,
@@ -304,8 +300,9 @@ RIS_VECTOR_CLONES void merge_pass(int bins, std::size_t stride, double* __restri
   const std::size_t s1 = stride, s2 = 2 * stride, s3 = 3 * stride;
   const std::size_t nb = static_cast<std::size_t>(bins);
   for (std::size_t b = 0; b < nb; ++b) {
-    out_power[b] = (acc[b] + acc[b + s1]) + (acc[b + s2] + acc[b + s3]);
-    out_area[b] = (acc_area[b] + acc_area[b + s1]) + (acc_area[b + s2] + acc_area[b + s3]);
+    const std::size_t k = 2 * b;
+    out_power[b] = (acc[k] + acc[k + 2 * s1]) + (acc[k + 2 * s2] + acc[k + 2 * s3]);
+    out_area[b] = (acc[k + 1] + acc[k + 1 + 2 * s1]) + (acc[k + 1 + 2 * s2] + acc[k + 1 + 2 * s3]);
   }
   for (std::size_t b = 0; b < nb; ++b) {
     out_touch[b] |=
@@ -313,18 +310,16 @@ RIS_VECTOR_CLONES void merge_pass(int bins, std::size_t stride, double* __restri
   }
   constexpr std::uint32_t kMax = 65535;  // the counts saturate
   for (std::size_t b = 0; b < nb; ++b) {
-    const std::uint32_t m =
-        out_mapped[b] + mapped[b] + mapped[b + s1] + mapped[b + s2] + mapped[b + s3];
-    const std::uint32_t v = out_visible[b] + seen[b] + seen[b + s1] + seen[b + s2] + seen[b + s3];
+    const std::uint64_t c = (counts[b] + counts[b + s1]) + (counts[b + s2] + counts[b + s3]);
+    const std::uint32_t m = out_mapped[b] + static_cast<std::uint32_t>(c & 0xffffffffu);
+    const std::uint32_t v = out_visible[b] + static_cast<std::uint32_t>(c >> 32);
     out_mapped[b] = static_cast<std::uint16_t>(std::min(m, kMax));
     out_visible[b] = static_cast<std::uint16_t>(std::min(v, kMax));
   }
   for (std::size_t q = 0; q < LineElementScratch::kCopies; ++q) {
-    std::fill_n(acc + q * stride, nb, 0.0);
-    std::fill_n(acc_area + q * stride, nb, 0.0);
+    std::fill_n(acc + 2 * q * stride, 2 * nb, 0.0);
     std::fill_n(touch + q * stride, nb, std::uint8_t{0});
-    std::fill_n(mapped + q * stride, nb, 0u);
-    std::fill_n(seen + q * stride, nb, 0u);
+    std::fill_n(counts + q * stride, nb, std::uint64_t{0});
   }
 }
 
@@ -361,12 +356,11 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     power_pass(n, c.k_radar, c.gain2->uniform(), c.gain2->at(0.0), c.gain2->data(), lut.data(),
                lut.offsets(), s.range.data(), s.incidence.data(), s.local_incidence.data(),
                s.area.data(), s.category.data(), s.frac_next.data(), s.sigma0.data(), s.g2.data(),
-               s.power.data(), s.p_lo.data(), s.p_hi.data(), s.a_lo.data(), s.a_hi.data());
+               s.power.data(), s.lo.data(), s.hi.data());
   } else {
     // Nothing tabulated: nothing is visible (a visible element's category
     // is checked to be tabulated).
-    for (auto* v : {&s.power, &s.p_lo, &s.p_hi, &s.a_lo, &s.a_hi})
-      std::fill(v->begin(), v->end(), 0.0);
+    for (auto* v : {&s.power, &s.lo, &s.hi}) std::fill(v->begin(), v->end(), 0.0);
   }
   scatter_pass(n, e.first_index, s);
 
@@ -403,13 +397,12 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     if (!vis) continue;
     // Half the element (near end to centre, centre to far end) each.
     const double half_power = 0.5 * s.power[jj], half_area = 0.5 * double(e.area_m2[jj]);
-    spread(s.acc.data(), s.acc_area.data(), xa, pos, half_power, half_area, bins);
-    spread(s.acc.data(), s.acc_area.data(), pos, xb, half_power, half_area, bins);
+    spread(s.acc.data(), s.acc.data() + 1, xa, pos, half_power, half_area, bins, 2);
+    spread(s.acc.data(), s.acc.data() + 1, pos, xb, half_power, half_area, bins, 2);
   }
 
-  merge_pass(bins, s.stride(), s.acc.data(), s.acc_area.data(), s.mapped.data(), s.seen.data(),
-             s.touch.data(), out.power_w, out.area_m2, out.touch, out.mapped_count,
-             out.visible_count);
+  merge_pass(bins, s.stride(), s.acc.data(), s.counts.data(), s.touch.data(), out.power_w,
+             out.area_m2, out.touch, out.mapped_count, out.visible_count);
   if (element_power_w) {
     for (int j = 0; j < n; ++j) element_power_w[j] = static_cast<float>(s.power[j]);
   }

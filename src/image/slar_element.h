@@ -25,6 +25,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -47,23 +48,24 @@ inline int last_bin(double hi, int bins) {
 
 // Adds `power` spread uniformly over the bin-coordinate interval between x0
 // and x1 (either order) to acc; the part outside [0, bins) is lost. A
-// zero-length interval puts everything into its bin.
+// zero-length interval puts everything into its bin. Bin b is acc[b *
+// stride] (and acc_area[b * stride]): stride 2 for interleaved pairs.
 inline void spread(double* acc, double* acc_area, double x0, double x1, double power, double area,
-                   int bins) {
+                   int bins, std::size_t stride = 1) {
   const double lo = std::min(x0, x1), hi = std::max(x0, x1);
   if (hi < 0.0 || lo >= bins) return;
   const int b0 = first_bin(lo), b1 = last_bin(hi, bins);
   const double width = hi - lo;
   if (b0 == b1 && width <= 0.0) {
-    acc[b0] += power;
-    acc_area[b0] += area;
+    acc[static_cast<std::size_t>(b0) * stride] += power;
+    acc_area[static_cast<std::size_t>(b0) * stride] += area;
     return;
   }
   const double inv_width = 1.0 / width;
   for (int b = b0; b <= b1; ++b) {
     const double f = (std::min(hi, double(b + 1)) - std::max(lo, double(b))) * inv_width;
-    acc[b] += power * f;
-    acc_area[b] += area * f;
+    acc[static_cast<std::size_t>(b) * stride] += power * f;
+    acc_area[static_cast<std::size_t>(b) * stride] += area * f;
   }
 }
 
@@ -139,12 +141,18 @@ struct LineElementScratch {
   // where not visible) and outputs; the elements left to spread().
   std::vector<std::int32_t> first, centre, code, category;
   std::vector<float> frac_next, range, incidence, local_incidence, area, sigma0;
-  std::vector<double> g2, power, p_lo, p_hi, a_lo, a_hi;
+  std::vector<double> g2, power;
+  // Per element, what it adds to its first bin and to the next: (power,
+  // area) pairs, interleaved as the profile copies' (2 values an element).
+  std::vector<double> lo, hi;
   std::vector<std::int32_t> general;  // the first n_general are used
   int n_general = 0;
-  // Per copy and bin (+ 2 spares).
-  std::vector<double> acc, acc_area;
-  std::vector<std::uint32_t> mapped, seen;
+  // Per copy and bin (+ 2 spares): the (power, area) sums interleaved (2
+  // values a bin: one 16-byte add per bin an element touches), the centre
+  // counts packed (all centres in the low 32 bits, visible ones in the high
+  // 32: one add), the touch bits.
+  std::vector<double> acc;
+  std::vector<std::uint64_t> counts;
   std::vector<std::uint8_t> touch;
   LineElementScratch(int samples, int bins);
   std::size_t stride() const { return static_cast<std::size_t>(bins) + 2; }
