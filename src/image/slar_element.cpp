@@ -24,6 +24,15 @@ SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainT
   ctx.bins = bins;
   ctx.gain2 = &gain2;
   ctx.lut = &lut;
+  const auto pairs = [](const auto* t, std::size_t size, auto& out) {
+    out.assign(2 * size, 0);
+    for (std::size_t k = 0; k < size; ++k) {
+      out[2 * k] = t[k];
+      out[2 * k + 1] = k + 1 < size ? t[k + 1] - t[k] : 0;
+    }
+  };
+  pairs(gain2.data(), std::size_t{TwoWayGainTable::kSteps} + 1, ctx.gain2_pairs);
+  pairs(lut.data(), lut.size(), ctx.sigma0_pairs);
   return ctx;
 }
 
@@ -209,26 +218,90 @@ RIS_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
   }
 }
 
+// Pass 2's table lookups on eight elements, the same operations as
+// Sigma0Lut::interpolate and TwoWayGainTable::interpolate (so the same
+// values) with the tables as (value, difference) pairs (SlarElementContext):
+// one 8- or 16-byte load per element where GCC's vectorised scalar loop
+// emulated two gathers.
+using D2 = double __attribute__((vector_size(16)));
+using D4 = double __attribute__((vector_size(32)));
+using F4 = float __attribute__((vector_size(16)));
+using I4 = std::int32_t __attribute__((vector_size(16)));
+
+__attribute__((always_inline)) inline F8 sigma0_block(const float* __restrict pairs, I8 offset,
+                                                      F8 incidence_rad) {
+  constexpr int kSteps = Sigma0Lut::kSteps;
+  F8 pos = incidence_rad * Sigma0Lut::kInvStep;
+  pos = pos < 0.0f ? splat(0.0f) : pos;
+  pos = pos > static_cast<float>(kSteps) ? splat(static_cast<float>(kSteps)) : pos;
+  I8 i = __builtin_convertvector(pos, I8);
+  i = i < kSteps - 1 ? i : splat(kSteps - 1);
+  const F8 f = pos - __builtin_convertvector(i, F8);
+  const I8 k = offset + i;
+  // A pair of floats is 8 bytes: loaded as one double each.
+  D4 a, b;
+  for (int l = 0; l < 4; ++l) {
+    a[l] = load<double>(pairs + 2 * k[l]);
+    b[l] = load<double>(pairs + 2 * k[l + 4]);
+  }
+  const F8 fa = F8(a), fb = F8(b);
+  const F8 t = __builtin_shuffle(fa, fb, I8{0, 2, 4, 6, 8, 10, 12, 14});
+  const F8 d = __builtin_shuffle(fa, fb, I8{1, 3, 5, 7, 9, 11, 13, 15});
+  return t + f * d;
+}
+
+__attribute__((always_inline)) inline D4 gain2_block(const double* __restrict pairs, F4 beta_rad) {
+  constexpr int kSteps = TwoWayGainTable::kSteps;
+  D4 pos = __builtin_convertvector(beta_rad, D4) * TwoWayGainTable::kInvStepRad;
+  pos = pos < 0.0 ? D4{} : pos;
+  pos = pos > double(kSteps) ? D4{} + double(kSteps) : pos;
+  I4 i = __builtin_convertvector(pos, I4);
+  i = i < kSteps - 1 ? i : I4{} + (kSteps - 1);
+  const D4 f = pos - __builtin_convertvector(i, D4);
+  const D2 p0 = load<D2>(pairs + 2 * i[0]), p1 = load<D2>(pairs + 2 * i[1]);
+  const D2 p2 = load<D2>(pairs + 2 * i[2]), p3 = load<D2>(pairs + 2 * i[3]);
+  const D4 a = __builtin_shufflevector(p0, p1, 0, 2, 1, 3);  // t0 t1 d0 d1
+  const D4 b = __builtin_shufflevector(p2, p3, 0, 2, 1, 3);  // t2 t3 d2 d3
+  const D4 t = __builtin_shufflevector(a, b, 0, 1, 4, 5);
+  const D4 d = __builtin_shufflevector(a, b, 2, 3, 6, 7);
+  return t + f * d;
+}
+
 // Pass 2: each element's power P_i (0 where not visible: its area is 0) and
-// its split between b0 and b0 + 1. The table lookups (gathers) first, then
-// the arithmetic in a loop of its own, which vectorises.
-RIS_VECTOR_CLONES void power_pass(int n, double k_radar, bool uniform, double g2_uniform,
-                                  const double* __restrict gain2, const float* __restrict curves,
-                                  const std::int32_t* __restrict curve_offset,
-                                  const float* __restrict range, const float* __restrict incidence,
-                                  const float* __restrict local_incidence,
-                                  const float* __restrict area,
-                                  const std::int32_t* __restrict category,
-                                  const float* __restrict frac_next, float* __restrict sigma0,
-                                  double* __restrict g2, double* __restrict power,
-                                  double* __restrict lo, double* __restrict hi) {
-  for (int j = 0; j < n; ++j) {
+// its split between b0 and b0 + 1. The table lookups first (eight elements
+// at a time, the rest one by one), then the arithmetic in a loop of its
+// own, which vectorises.
+RIS_VECTOR_CLONES void power_pass(
+    int n, double k_radar, bool uniform, double g2_uniform, const double* __restrict gain2,
+    const double* __restrict gain2_pairs, const float* __restrict curves,
+    const float* __restrict sigma0_pairs, const std::int32_t* __restrict curve_offset,
+    const float* __restrict range, const float* __restrict incidence,
+    const float* __restrict local_incidence, const float* __restrict area,
+    const std::int32_t* __restrict category, const float* __restrict frac_next,
+    float* __restrict sigma0, double* __restrict g2, double* __restrict power,
+    double* __restrict lo, double* __restrict hi) {
+  const int full = n / kLanes * kLanes;
+  for (int j = 0; j < full; j += kLanes) {
+    const auto jj = static_cast<std::size_t>(j);
+    I8 offset;
+    for (int l = 0; l < kLanes; ++l)
+      offset[l] = curve_offset[category[jj + static_cast<std::size_t>(l)]];
+    store(sigma0 + jj, sigma0_block(sigma0_pairs, offset, load<F8>(local_incidence + jj)));
+  }
+  for (int j = full; j < n; ++j) {
     sigma0[j] = Sigma0Lut::interpolate(curves, curve_offset[category[j]], local_incidence[j]);
   }
   if (uniform) {
     for (int j = 0; j < n; ++j) g2[j] = g2_uniform;
   } else {
-    for (int j = 0; j < n; ++j) g2[j] = TwoWayGainTable::interpolate(gain2, double(incidence[j]));
+    for (int j = 0; j < full; j += kLanes) {
+      const auto jj = static_cast<std::size_t>(j);
+      store(g2 + jj, gain2_block(gain2_pairs, load<F4>(incidence + jj)));
+      store(g2 + jj + 4, gain2_block(gain2_pairs, load<F4>(incidence + jj + 4)));
+    }
+    for (int j = full; j < n; ++j) {
+      g2[j] = TwoWayGainTable::interpolate(gain2, double(incidence[j]));
+    }
   }
   for (int j = 0; j < n; ++j) {
     const double p = radar_power_w(k_radar, g2[j], sigma0[j], area[j], double(range[j]));
@@ -258,7 +331,6 @@ void scatter_pass(int n, int first_index, LineElementScratch& s) {
   double* __restrict acc = s.acc.data();
   std::uint8_t* __restrict touch = s.touch.data();
   std::uint64_t* __restrict counts = s.counts.data();
-  using D2 = double __attribute__((vector_size(16)));
   const auto add = [](double* a, const double* x) {
     vec8::store(a, vec8::load<D2>(a) + vec8::load<D2>(x));
   };
@@ -353,10 +425,11 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   bins_pass(n, static_cast<float>(c.near_m), static_cast<float>(c.inv_dr), bins, lut.any_category(),
             io, t);
   if (!lut.empty()) {
-    power_pass(n, c.k_radar, c.gain2->uniform(), c.gain2->at(0.0), c.gain2->data(), lut.data(),
-               lut.offsets(), s.range.data(), s.incidence.data(), s.local_incidence.data(),
-               s.area.data(), s.category.data(), s.frac_next.data(), s.sigma0.data(), s.g2.data(),
-               s.power.data(), s.lo.data(), s.hi.data());
+    power_pass(n, c.k_radar, c.gain2->uniform(), c.gain2->at(0.0), c.gain2->data(),
+               c.gain2_pairs.data(), lut.data(), c.sigma0_pairs.data(), lut.offsets(),
+               s.range.data(), s.incidence.data(), s.local_incidence.data(), s.area.data(),
+               s.category.data(), s.frac_next.data(), s.sigma0.data(), s.g2.data(), s.power.data(),
+               s.lo.data(), s.hi.data());
   } else {
     // Nothing tabulated: nothing is visible (a visible element's category
     // is checked to be tabulated).

@@ -76,6 +76,12 @@ struct SlarElementContext {
   double k_radar = 0.0;  // P_t lambda^2 / (4 pi)^3
   const TwoWayGainTable* gain2 = nullptr;
   const Sigma0Lut* lut = nullptr;
+  // The two tables as (value, next value - value) pairs, entry k at [2k]:
+  // the power pass's lookups load one pair per element instead of two
+  // values (the same differences as interpolate() computes, so the same
+  // results).
+  std::vector<double> gain2_pairs;
+  std::vector<float> sigma0_pairs;
 };
 
 SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainTable& gain2,

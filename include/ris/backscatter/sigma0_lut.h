@@ -14,6 +14,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -52,7 +53,9 @@ class Sigma0Lut {
   // samples). 32-bit offsets and selects rather than std::clamp, so that
   // GCC vectorises such a loop (gathers by 32-bit index).
   const float* data() const { return table_.data(); }
+  std::size_t size() const { return table_.size(); }  // values in data()
   const std::int32_t* offsets() const { return offset_.data(); }
+  static constexpr float kInvStep = static_cast<float>(1.0 / kStepRad);
   static float interpolate(const float* table, std::int32_t offset, float incidence_rad) {
     float pos = incidence_rad * kInvStep;
     pos = pos < 0.0f ? 0.0f : pos;
@@ -71,7 +74,6 @@ class Sigma0Lut {
   bool empty() const { return table_.empty(); }
 
  private:
-  static constexpr float kInvStep = static_cast<float>(1.0 / kStepRad);
   std::vector<float> table_;  // (kSteps + 1) samples per tabulated category
   // By category id; -1 when absent. At most 65536 x 1801 samples: 32 bits.
   std::vector<std::int32_t> offset_;
