@@ -95,7 +95,7 @@ void BM_MedianElevation(benchmark::State& state) {
   const float* h = scene.elevation_m.data();
   for (auto _ : state) {
     const auto m = ris::median_pair_float(
-        scene.elevation_m, [=](std::size_t i) { return valid[i] && std::isfinite(h[i]); });
+        scene.elevation_m, [=](std::size_t i) { return (valid[i] != 0) & std::isfinite(h[i]); });
     benchmark::DoNotOptimize(m);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(scene.size()));

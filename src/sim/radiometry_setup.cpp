@@ -10,12 +10,21 @@ namespace {
 // Categories of the cells with data, sorted.
 std::vector<std::uint16_t> used_categories(const Scene& scene) {
   // Branch-free: a cell without data marks slot 65536, which is not read.
+  // Each thread marks its own table (the scan was a serial step of every
+  // run), merged after.
   std::vector<std::uint8_t> seen(65537, 0);
-  const std::size_t n = scene.size();
+  const auto n = static_cast<std::int64_t>(scene.size());
   const std::uint8_t* valid = scene.valid.data();
   const std::uint16_t* category = scene.category.data();
-  std::uint8_t* mark = seen.data();
-  for (std::size_t i = 0; i < n; ++i) mark[valid[i] ? std::size_t{category[i]} : 65536u] = 1;
+#pragma omp parallel
+  {
+    std::vector<std::uint8_t> local(65537, 0);
+    std::uint8_t* mark = local.data();
+#pragma omp for schedule(static) nowait
+    for (std::int64_t i = 0; i < n; ++i) mark[valid[i] ? std::size_t{category[i]} : 65536u] = 1;
+#pragma omp critical(ris_used_categories)
+    for (std::size_t c = 0; c < 65536; ++c) seen[c] |= local[c];
+  }
   std::vector<std::uint16_t> out;
   for (std::size_t c = 0; c < 65536; ++c)
     if (seen[c]) out.push_back(static_cast<std::uint16_t>(c));

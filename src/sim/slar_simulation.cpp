@@ -27,9 +27,9 @@ namespace {
 // The median of the cells with data (the upper one of an even count, as
 // nth_element at n / 2), by a parallel radix select (ris/util/float_select.h).
 double median_valid_elevation(const Scene& scene) {
-  const auto keep = [&](std::size_t i) {
-    return scene.valid[i] && std::isfinite(scene.elevation_m[i]);
-  };
+  const std::uint8_t* const valid = scene.valid.data();
+  const float* const h = scene.elevation_m.data();
+  const auto keep = [=](std::size_t i) { return (valid[i] != 0) & std::isfinite(h[i]); };
   const auto m = median_pair_float(scene.elevation_m, keep);
   return m ? m->second : 0.0;
 }

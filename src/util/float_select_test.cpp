@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -80,6 +81,39 @@ TEST(FloatSelect, MedianPairMatchesNthElement) {
   }
   const std::vector<float> none = {1.0f};
   EXPECT_FALSE(median_pair_float(none, [](std::size_t) { return false; }).has_value());
+}
+
+// Values keep() rejects are counted in a bucket no kept value can reach
+// (the top 16 bits of the all-ones NaN): long runs of rejected values, kept
+// values at the top of the range (+inf, FLT_MAX), a size that is not a
+// multiple of the counting chunk, 1 and 2 threads.
+TEST(FloatSelect, RejectedValuesNeverCount) {
+  const int saved = omp_get_max_threads();
+  const float inf = std::numeric_limits<float>::infinity();
+  const float all_ones_nan = std::bit_cast<float>(0x7fffffffu);
+  std::vector<float> v(5003, all_ones_nan);
+  std::vector<std::uint8_t> keep_mask(v.size(), 0);
+  const std::vector<float> kept = {inf, std::numeric_limits<float>::max(), 3.0f, -inf, 3.0f, inf};
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    const std::size_t i = 17 + 997 * k;  // one value in every few chunks
+    v[i] = kept[k];
+    keep_mask[i] = 1;
+  }
+  v[4000] = 7.0f;  // rejected by the mask, not by its value
+  const auto keep = [&](std::size_t i) { return (keep_mask[i] != 0) & !std::isnan(v[i]); };
+  std::vector<float> sorted = kept;
+  std::sort(sorted.begin(), sorted.end());
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    for (std::size_t k = 0; k < sorted.size(); ++k)
+      EXPECT_EQ(*kth_smallest_float(v, k, keep), sorted[k]);
+    EXPECT_FALSE(kth_smallest_float(v, sorted.size(), keep).has_value());
+    const auto m = median_pair_float(v, keep);
+    ASSERT_TRUE(m.has_value());
+    EXPECT_EQ(m->first, sorted[2]);
+    EXPECT_EQ(m->second, sorted[3]);
+  }
+  omp_set_num_threads(saved);
 }
 
 TEST(FloatSelect, OrderKeysSortAsTheFloats) {
