@@ -15,15 +15,22 @@
 namespace ris {
 
 SlarAzimuthIntegrator::SlarAzimuthIntegrator(const SlarImagingParams& p, double line_spacing_m,
-                                             int lines, int bins)
-    : lines_(lines), bins_(bins), half_(static_cast<std::size_t>(bins)) {
-  RIS_CHECK(lines > 0 && bins > 0);
+                                             int lines, int bins, int bin_begin, int bin_end)
+    : lines_(lines), bin0_(bin_begin) {
+  if (bin_end < 0) bin_end = bins;
+  RIS_CHECK(lines > 0 && bins > 0 && 0 <= bin_begin && bin_begin < bin_end && bin_end <= bins);
+  bins_ = bin_end - bin_begin;
+  threaded_ = bins_ == bins;
+  half_.resize(static_cast<std::size_t>(bins_));
   double half_max = 0.0;
-  for (int b = 0; b < bins; ++b) {
+  for (int b = 0; b < bins_; ++b) {
+    // The image's bin number: the same footprint as the whole integrator's.
+    const int image_bin = bin0_ + b;
     const double half =
         p.azimuth_window_lines > 0.0
             ? 0.5 * p.azimuth_window_lines
-            : 0.5 * slar_footprint_m(p.range.centre_m(b), p.azimuth_beamwidth_rad) / line_spacing_m;
+            : 0.5 * slar_footprint_m(p.range.centre_m(image_bin), p.azimuth_beamwidth_rad) /
+                  line_spacing_m;
     half_[static_cast<std::size_t>(b)] = half;
     if (std::isfinite(half)) half_max = std::max(half_max, half);
   }
@@ -43,7 +50,8 @@ std::size_t SlarAzimuthIntegrator::row(int cum_index) const {
 }
 
 void SlarAzimuthIntegrator::push(const SlarLineProfiles& prof, int count) {
-  RIS_CHECK(prof.bins == bins_ && count >= 0 && pushed_ + count <= lines_);
+  RIS_CHECK(prof.bins >= bin0_ + bins_ && count >= 0 && pushed_ + count <= lines_);
+  RIS_CHECK(!threaded_ || prof.bins == bins_);
   RIS_CHECK(prof.line0 <= pushed_ && pushed_ + count <= prof.line0 + prof.lines);
   if (count == 0) return;
   const std::size_t n =
@@ -55,13 +63,13 @@ void SlarAzimuthIntegrator::push(const SlarLineProfiles& prof, int count) {
   cum_layover_.resize(n);
   // Each thread sums its own bins over the lines, in line order (the
   // arithmetic of a pixel does not depend on the thread count).
-#pragma omp parallel
+#pragma omp parallel if (threaded_)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
     const int b0 = static_cast<int>(std::int64_t(bins_) * t / nt);
     const int b1 = static_cast<int>(std::int64_t(bins_) * (t + 1) / nt);
     for (int j = pushed_; j < pushed_ + count; ++j) {
-      const std::size_t in = prof.index(j, 0), prev = row(j), next = row(j + 1);
+      const std::size_t in = prof.index(j, bin0_), prev = row(j), next = row(j + 1);
       for (int b = b0; b < b1; ++b) {
         const std::size_t bb = static_cast<std::size_t>(b);
         const std::size_t k = in + bb;
@@ -224,10 +232,11 @@ __attribute__((target("avx2"))) int emit_line_avx2(const EmitRows& r, int k, flo
 
 }  // namespace
 
-void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2,
-                                 std::uint8_t* mask) {
+void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2, std::uint8_t* mask,
+                                 std::size_t row_stride) {
   RIS_CHECK(count >= 0 && count <= lines_ready());
   const int bins = bins_;
+  const std::size_t stride = row_stride > 0 ? row_stride : static_cast<std::size_t>(bins);
   const EmitRows rows{cum_.data(),
                       cum_area_.data(),
                       cum_data_.data(),
@@ -242,9 +251,9 @@ void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2,
   static const bool avx2 = __builtin_cpu_supports("avx2");
 #endif
   // Dynamic blocks of lines (see render_slar); each line is independent.
-#pragma omp parallel for schedule(dynamic, 16)
+#pragma omp parallel for schedule(dynamic, 16) if (threaded_)
   for (int k = first; k < first + count; ++k) {
-    const std::size_t out = static_cast<std::size_t>(k - first) * static_cast<std::size_t>(bins);
+    const std::size_t out = static_cast<std::size_t>(k - first) * stride;
     int b0 = 0;
 #ifdef RIS_AZIMUTH_AVX2
     if (avx2) b0 = emit_line_avx2(rows, k, mean_power_w + out, area_m2 + out, mask + out);

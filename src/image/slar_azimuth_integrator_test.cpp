@@ -17,7 +17,8 @@ namespace {
 // agree) against its rule written out pixel by pixel from whole-image running
 // sums, bit for bit: a footprint that grows fast across the swath (blocks of
 // four bins whose rows differ), a constant SAR window, zero-power and
-// no-data lines, bins % 4 != 0, 1 and 2 threads.
+// no-data lines, bins % 4 != 0, 1, 2 and 3 threads (integrate_slar_azimuth
+// gives each thread a range of bins).
 TEST(SlarAzimuthIntegrator, EqualsThePerPixelRuleFromWholeImageSums) {
   const int lines = 301, bins = 37;
   SlarLineProfiles prof;
@@ -57,7 +58,7 @@ TEST(SlarAzimuthIntegrator, EqualsThePerPixelRuleFromWholeImageSums) {
     };
     const auto cum_data = bit_sum(slar_touch::kData), cum_visible = bit_sum(slar_touch::kVisible),
                cum_layover = bit_sum(slar_touch::kLayover);
-    for (const int threads : {1, 2}) {
+    for (const int threads : {1, 2, 3}) {  // each thread a range of bins
       omp_set_num_threads(threads);
       SlarImage img;
       img.lines = lines;

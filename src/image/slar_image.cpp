@@ -1,6 +1,7 @@
 #include "ris/image/slar_image.h"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -207,14 +208,29 @@ void integrate_slar_azimuth(const SlarLineProfiles& prof, const SlarImagingParam
   img.mask.resize(n_pix);
   if (n_pix == 0) return;
   // The streamed step (ris/image/slar_azimuth_integrator.h), fed a block of
-  // lines at a time so its running sums stay small.
-  SlarAzimuthIntegrator az(p, line_spacing_m, prof.lines, prof.bins);
-  constexpr int kBlock = 256;
-  while (az.lines_emitted() < prof.lines) {
-    az.push(prof, std::min(kBlock, prof.lines - az.lines_pushed()));
-    const std::size_t at = img.index(az.lines_emitted(), 0);
-    az.emit(az.lines_ready(), img.mean_power_w.data() + at, img.area_m2.data() + at,
-            img.mask.data() + at);
+  // lines at a time so its running sums stay small. Each thread takes its
+  // own range of bins through the whole image (a pixel needs only its bin's
+  // column): one parallel region, where one integrator split each block's
+  // push and emit over the threads (two barriers per block, each a wait for
+  // the slower thread; the same bytes either way).
+  const int bins = prof.bins;
+#pragma omp parallel
+  {
+    // Ranges in multiples of four bins (emit's vector blocks).
+    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+    const int quads = (bins + 3) / 4;
+    const int b0 = std::min(bins, 4 * static_cast<int>(std::int64_t(quads) * t / nt));
+    const int b1 = std::min(bins, 4 * static_cast<int>(std::int64_t(quads) * (t + 1) / nt));
+    if (b1 > b0) {
+      SlarAzimuthIntegrator az(p, line_spacing_m, prof.lines, bins, b0, b1);
+      constexpr int kBlock = 256;
+      while (az.lines_emitted() < prof.lines) {
+        az.push(prof, std::min(kBlock, prof.lines - az.lines_pushed()));
+        const std::size_t at = img.index(az.lines_emitted(), b0);
+        az.emit(az.lines_ready(), img.mean_power_w.data() + at, img.area_m2.data() + at,
+                img.mask.data() + at, static_cast<std::size_t>(bins));
+      }
+    }
   }
 }
 

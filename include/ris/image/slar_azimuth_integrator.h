@@ -12,6 +12,14 @@
 // sums within M = ceil(max half) + 2 lines of the next line to emit are
 // kept, so memory is (block + 2 M) lines x bins, whatever the image length.
 //
+// An integrator may also hold only the bins [bin_begin, bin_end) of the
+// image (every pixel depends on its own bin's column alone): then push()
+// and emit() run on the calling thread, so that threads each take a range
+// of bins through the whole image in one parallel region, with no barrier
+// between blocks of lines (integrate_slar_azimuth does this; the whole-image
+// integrator splits each push and emit over the threads instead, which is
+// two barriers per block).
+//
 // Example:
 //   ris::SlarAzimuthIntegrator az(params, line_spacing_m, lines, bins);
 //   az.push(profiles_block, profiles_block.lines);  // lines [az.lines_pushed(), ...)
@@ -29,9 +37,11 @@ namespace ris {
 
 class SlarAzimuthIntegrator {
  public:
-  // lines, bins: the whole image's size.
-  SlarAzimuthIntegrator(const SlarImagingParams& params, double line_spacing_m, int lines,
-                        int bins);
+  // lines, bins: the whole image's size. [bin_begin, bin_end): the bins this
+  // integrator holds (bin_end < 0: to the last); with a part of the bins it
+  // runs single-threaded (see above).
+  SlarAzimuthIntegrator(const SlarImagingParams& params, double line_spacing_m, int lines, int bins,
+                        int bin_begin = 0, int bin_end = -1);
 
   // Adds the profiles of the next `count` lines, [lines_pushed(),
   // lines_pushed() + count), which `prof` must hold (prof.bins: the image's).
@@ -42,14 +52,19 @@ class SlarAzimuthIntegrator {
   // How many more lines emit() can produce now (all that are left once every
   // line has been pushed).
   int lines_ready() const;
-  // The next `count` (<= lines_ready()) image lines: count x bins each of
-  // mean power (W), area (m^2) and pixel_flag mask.
-  void emit(int count, float* mean_power_w, float* area_m2, std::uint8_t* mask);
+  // The next `count` (<= lines_ready()) image lines of the bins held: count
+  // rows of mean power (W), area (m^2) and pixel_flag mask, each pointer at
+  // the first row's first bin held, rows `row_stride` apart (0: the number of
+  // bins held).
+  void emit(int count, float* mean_power_w, float* area_m2, std::uint8_t* mask,
+            std::size_t row_stride = 0);
 
  private:
   std::size_t row(int cum_index) const;  // offset of a running-sum row
 
-  int lines_ = 0, bins_ = 0;
+  int lines_ = 0;
+  int bin0_ = 0, bins_ = 0;   // the bins held: [bin0_, bin0_ + bins_)
+  bool threaded_ = true;      // push and emit split over the threads
   int margin_ = 0;            // M
   std::vector<double> half_;  // per bin, lines
   int pushed_ = 0, emitted_ = 0;
