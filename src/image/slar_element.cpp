@@ -316,12 +316,12 @@ RIS_VECTOR_CLONES void power_pass(
   }
 }
 
-// Pass 3: the fast elements into the four copies, element j into copy
-// (first_index + j) % 4
+// Pass 3: the fast elements [j0, j0 + n) into the four copies, element j
+// into copy (first_index + j) % 4
 // (consecutive elements usually share a bin: in one copy each add would wait
 // for the previous one's store). Elements without a bin add to the spare
 // bin `bins`.
-void scatter_pass(int n, int first_index, LineElementScratch& s) {
+void scatter_pass(int j0, int n, int first_index, LineElementScratch& s) {
   const std::size_t stride = s.stride();
   const std::int32_t* __restrict first = s.first.data();
   const std::int32_t* __restrict centre = s.centre.data();
@@ -350,15 +350,16 @@ void scatter_pass(int n, int first_index, LineElementScratch& s) {
   const auto copy = [first_index](int j) {
     return static_cast<std::size_t>((first_index + j) & 3);
   };
-  const std::size_t q0 = copy(0), q1 = copy(1), q2 = copy(2), q3 = copy(3);
-  int j = 0;
-  for (; j + 4 <= n; j += 4) {
+  const std::size_t q0 = copy(j0), q1 = copy(j0 + 1), q2 = copy(j0 + 2), q3 = copy(j0 + 3);
+  const int j1 = j0 + n;
+  int j = j0;
+  for (; j + 4 <= j1; j += 4) {
     one(j, q0);
     one(j + 1, q1);
     one(j + 2, q2);
     one(j + 3, q3);
   }
-  for (; j < n; ++j) one(j, copy(j));
+  for (; j < j1; ++j) one(j, copy(j));
 }
 
 // Pass 5: the copies summed into the line's outputs, and zeroed for the next
@@ -405,37 +406,48 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   RIS_CHECK(s.bins == bins && s.first.size() >= static_cast<std::size_t>(n));
   LineElementTally t;
   const Sigma0Lut& lut = *c.lut;
-  const BinsPassIo io{e.flags,
-                      e.slant_range_m,
-                      e.near_end_m,
-                      e.far_end_m,
-                      e.incidence_rad ? e.incidence_rad : e.local_incidence_rad,
-                      e.local_incidence_rad,
-                      e.area_m2,
-                      e.category,
-                      s.first.data(),
-                      s.centre.data(),
-                      s.code.data(),
-                      s.frac_next.data(),
-                      s.range.data(),
-                      s.incidence.data(),
-                      s.local_incidence.data(),
-                      s.area.data(),
-                      s.category.data()};
-  bins_pass(n, static_cast<float>(c.near_m), static_cast<float>(c.inv_dr), bins, lut.any_category(),
-            io, t);
-  if (!lut.empty()) {
-    power_pass(n, c.k_radar, c.gain2->uniform(), c.gain2->at(0.0), c.gain2->data(),
-               c.gain2_pairs.data(), lut.data(), c.sigma0_pairs.data(), lut.offsets(),
-               s.range.data(), s.incidence.data(), s.local_incidence.data(), s.area.data(),
-               s.category.data(), s.frac_next.data(), s.sigma0.data(), s.g2.data(), s.power.data(),
-               s.lo.data(), s.hi.data());
-  } else {
+  // Passes 1-3 a chunk of elements at a time, so that what one pass writes
+  // is still in the L1 cache when the next reads it (a whole line's
+  // per-element arrays are ~200 KB).
+  const bool tabulated = !lut.empty();
+  if (!tabulated) {
     // Nothing tabulated: nothing is visible (a visible element's category
     // is checked to be tabulated).
     for (auto* v : {&s.power, &s.lo, &s.hi}) std::fill(v->begin(), v->end(), 0.0);
   }
-  scatter_pass(n, e.first_index, s);
+  constexpr int kChunk = 256;
+  for (int j0 = 0; j0 < n; j0 += kChunk) {
+    const int m = std::min(kChunk, n - j0);
+    const auto o = static_cast<std::size_t>(j0);
+    const BinsPassIo io{e.flags + o,
+                        e.slant_range_m + o,
+                        e.near_end_m + o,
+                        e.far_end_m + o,
+                        (e.incidence_rad ? e.incidence_rad : e.local_incidence_rad) + o,
+                        e.local_incidence_rad + o,
+                        e.area_m2 + o,
+                        e.category + o,
+                        s.first.data() + o,
+                        s.centre.data() + o,
+                        s.code.data() + o,
+                        s.frac_next.data() + o,
+                        s.range.data() + o,
+                        s.incidence.data() + o,
+                        s.local_incidence.data() + o,
+                        s.area.data() + o,
+                        s.category.data() + o};
+    bins_pass(m, static_cast<float>(c.near_m), static_cast<float>(c.inv_dr), bins,
+              lut.any_category(), io, t);
+    if (tabulated) {
+      power_pass(m, c.k_radar, c.gain2->uniform(), c.gain2->at(0.0), c.gain2->data(),
+                 c.gain2_pairs.data(), lut.data(), c.sigma0_pairs.data(), lut.offsets(),
+                 s.range.data() + o, s.incidence.data() + o, s.local_incidence.data() + o,
+                 s.area.data() + o, s.category.data() + o, s.frac_next.data() + o,
+                 s.sigma0.data() + o, s.g2.data() + o, s.power.data() + o, s.lo.data() + 2 * o,
+                 s.hi.data() + 2 * o);
+    }
+    scatter_pass(j0, m, e.first_index, s);
+  }
 
   // Pass 4: the elements spanning more than two bins or the swath's edge,
   // into copy 0 by spread(), in element order.
