@@ -18,12 +18,16 @@ constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
 namespace {
 
 // look_line's loops, with restrict-qualified parameters: the arrays never
-// alias, which lets them vectorise without run-time overlap checks.
-RIS_VECTOR_CLONES void look_kernel(int n, float H, float lx, float ly, float element,
-                                   const float* __restrict u_m, const float* __restrict height,
-                                   const float* __restrict gx, const float* __restrict gy,
-                                   float* __restrict range, float* __restrict local,
-                                   float* __restrict area, float* __restrict dh_du) {
+// alias, which lets them vectorise without run-time overlap checks. With
+// kIncidence the same loop also gives the look angle from nadir atan2(u, D)
+// = atan(u / D) (D > 0: terrain below the sensor is checked before), which
+// reuses its loads and D rather than a pass of its own.
+template <bool kIncidence>
+__attribute__((always_inline)) inline void look_loop(
+    int n, float H, float lx, float ly, float element, const float* __restrict u_m,
+    const float* __restrict height, const float* __restrict gx, const float* __restrict gy,
+    float* __restrict range, float* __restrict local, float* __restrict area,
+    float* __restrict dh_du, float* __restrict inc) {
   for (int j = 0; j < n; ++j) {
     const float u = u_m[j];
     const float D = H - height[j];
@@ -46,34 +50,54 @@ RIS_VECTOR_CLONES void look_kernel(int n, float H, float lx, float ly, float ele
     local[j] = dot < 0.0f ? kPiF - a : a;
     area[j] = element * n_len;
     dh_du[j] = dh;
+    if constexpr (kIncidence) inc[j] = fast_atan(u / D);
   }
 }
 
-// Back-facing where n . l <= 0 (look_kernel's expression, so the same float).
-void back_facing_kernel(int n, float H, const float* __restrict u_m, const float* __restrict height,
-                        const float* __restrict dh_du, std::uint8_t* __restrict flags) {
+RIS_VECTOR_CLONES void look_kernel(int n, float H, float lx, float ly, float element,
+                                   const float* __restrict u_m, const float* __restrict height,
+                                   const float* __restrict gx, const float* __restrict gy,
+                                   float* __restrict range, float* __restrict local,
+                                   float* __restrict area, float* __restrict dh_du) {
+  look_loop<false>(n, H, lx, ly, element, u_m, height, gx, gy, range, local, area, dh_du, nullptr);
+}
+
+RIS_VECTOR_CLONES void look_incidence_kernel(int n, float H, float lx, float ly, float element,
+                                             const float* __restrict u_m,
+                                             const float* __restrict height,
+                                             const float* __restrict gx, const float* __restrict gy,
+                                             float* __restrict range, float* __restrict local,
+                                             float* __restrict area, float* __restrict dh_du,
+                                             float* __restrict inc) {
+  look_loop<true>(n, H, lx, ly, element, u_m, height, gx, gy, range, local, area, dh_du, inc);
+}
+
+// Back-facing where n . l <= 0 (look_loop's expression, so the same float).
+RIS_VECTOR_CLONES void back_facing_kernel(int n, float H, const float* __restrict u_m,
+                                          const float* __restrict height,
+                                          const float* __restrict dh_du,
+                                          std::uint8_t* __restrict flags) {
   for (int j = 0; j < n; ++j) {
     const float dot = u_m[j] * dh_du[j] + (H - height[j]);
     flags[j] = static_cast<std::uint8_t>(flags[j] | (dot <= 0.0f ? sample_flag::kBackFacing : 0));
   }
 }
 
-// The look angle from nadir atan2(u, D) = atan(u / D): D > 0 (terrain below
-// the sensor is checked before).
-RIS_VECTOR_CLONES void incidence_kernel(int n, float H, const float* __restrict u_m,
-                                        const float* __restrict height, float* __restrict inc) {
-  for (int j = 0; j < n; ++j) inc[j] = fast_atan(u_m[j] / (H - height[j]));
-}
-
 }  // namespace
 
 void look_line(const LineTerrain& in, const LineLookFrame& fr, const LineLook& out) {
   const float H = static_cast<float>(fr.altitude_m);
-  look_kernel(in.samples, H, static_cast<float>(fr.look_x), static_cast<float>(fr.look_y),
-              static_cast<float>(fr.element_m2), in.u_m, in.height_m, in.dz_dx, in.dz_dy,
-              out.slant_range_m, out.local_incidence_rad, out.area_m2, out.dh_du);
+  const float lx = static_cast<float>(fr.look_x), ly = static_cast<float>(fr.look_y);
+  const float element = static_cast<float>(fr.element_m2);
+  if (out.incidence_rad) {
+    look_incidence_kernel(in.samples, H, lx, ly, element, in.u_m, in.height_m, in.dz_dx, in.dz_dy,
+                          out.slant_range_m, out.local_incidence_rad, out.area_m2, out.dh_du,
+                          out.incidence_rad);
+  } else {
+    look_kernel(in.samples, H, lx, ly, element, in.u_m, in.height_m, in.dz_dx, in.dz_dy,
+                out.slant_range_m, out.local_incidence_rad, out.area_m2, out.dh_du);
+  }
   back_facing_kernel(in.samples, H, in.u_m, in.height_m, out.dh_du, out.flags);
-  if (out.incidence_rad) incidence_kernel(in.samples, H, in.u_m, in.height_m, out.incidence_rad);
 }
 
 namespace {
