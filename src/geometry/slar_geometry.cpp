@@ -161,8 +161,6 @@ void check_terrain_below_sensor(const Scene& scene, double altitude_m, const std
   const std::uint8_t* valid = scene.valid.data();
   const float* h = scene.elevation_m.data();
   int reaches = 0;
-  // Split over the threads: a serial step of every run otherwise.
-#pragma omp parallel for schedule(static) reduction(| : reaches)
   for (std::size_t i = 0; i < n; ++i) reaches |= (valid[i] != 0) & (double(h[i]) >= altitude_m);
   if (!reaches) return;
   std::size_t worst = scene.size();

@@ -2,29 +2,30 @@
 
 #include "ris/image/thermal_noise.h"
 #include "ris/sensor/elevation_gain.h"
+#include "ris/util/thread_ranges.h"
 
 namespace ris {
 
 namespace {
 
-// Categories of the cells with data, sorted.
+// Marks mark[c] for the category c of each cell in [i0, i1) with data, and
+// mark[65536] for cells without (a select, not a branch).
+void mark_categories(const std::uint8_t* valid, const std::uint16_t* category, std::size_t i0,
+                     std::size_t i1, std::uint8_t* mark) {
+  for (std::size_t i = i0; i < i1; ++i) mark[valid[i] ? std::size_t{category[i]} : 65536u] = 1;
+}
+
+// Categories of the cells with data, sorted. Each thread marks a range of
+// cells in its own table (ris/util/thread_ranges.h; the scan was a serial
+// step of every run), the tables merged after.
 std::vector<std::uint16_t> used_categories(const Scene& scene) {
-  // Branch-free: a cell without data marks slot 65536, which is not read.
-  // Each thread marks its own table (the scan was a serial step of every
-  // run), merged after.
   std::vector<std::uint8_t> seen(65537, 0);
-  const auto n = static_cast<std::int64_t>(scene.size());
-  const std::uint8_t* valid = scene.valid.data();
-  const std::uint16_t* category = scene.category.data();
-#pragma omp parallel
-  {
+  for_thread_ranges(scene.size(), [&](std::size_t i0, std::size_t i1) {
     std::vector<std::uint8_t> local(65537, 0);
-    std::uint8_t* mark = local.data();
-#pragma omp for schedule(static) nowait
-    for (std::int64_t i = 0; i < n; ++i) mark[valid[i] ? std::size_t{category[i]} : 65536u] = 1;
+    mark_categories(scene.valid.data(), scene.category.data(), i0, i1, local.data());
 #pragma omp critical(ris_used_categories)
     for (std::size_t c = 0; c < 65536; ++c) seen[c] |= local[c];
-  }
+  });
   std::vector<std::uint16_t> out;
   for (std::size_t c = 0; c < 65536; ++c)
     if (seen[c]) out.push_back(static_cast<std::uint16_t>(c));

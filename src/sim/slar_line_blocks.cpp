@@ -10,6 +10,7 @@
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_sample.h"
 #include "ris/util/error.h"
+#include "ris/util/thread_ranges.h"
 #include "ris/util/units.h"
 #include "ris/util/vector_clones.h"
 #include "sim/slar_line_kernels.h"
@@ -439,11 +440,14 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
   g.back_facing_samples = counts.back_facing;
   g.layover_samples = counts.layover;
   // Counted by the threads (a serial count over the scene was a serial step).
-  const std::uint8_t* const valid = scene.valid.data();
-  const auto n_cells = static_cast<std::int64_t>(scene.size());
   std::int64_t nodata_cells = 0;
-#pragma omp parallel for schedule(static) reduction(+ : nodata_cells)
-  for (std::int64_t i = 0; i < n_cells; ++i) nodata_cells += valid[i] == 0 ? 1 : 0;
+  for_thread_ranges(scene.size(), [&](std::size_t i0, std::size_t i1) {
+    const auto part = static_cast<std::int64_t>(
+        std::count(scene.valid.begin() + static_cast<std::ptrdiff_t>(i0),
+                   scene.valid.begin() + static_cast<std::ptrdiff_t>(i1), std::uint8_t{0}));
+#pragma omp atomic
+    nodata_cells += part;
+  });
   g.nodata_cells = nodata_cells;
   if (prof.samples_in_swath == 0) {
     throw InputError(radar_file, "sweep_delay",
