@@ -73,17 +73,18 @@ inline void chunk_keys(const float* __restrict v, std::size_t i0, std::size_t n,
 // For each chunk of keys, in parallel (schedule static over chunks; each
 // thread counts into its own table, the tables summed after, so the result
 // does not depend on the thread count): count(keys, n, table) adds a chunk
-// to a thread's table of `copies` x `buckets` counts, whose copies are summed
-// into one before the threads' tables are. Returns the summed table.
-template <typename Keep, typename Count>
-std::vector<std::uint64_t> count_chunks(std::span<const float> v, Keep keep, std::size_t buckets,
-                                        std::size_t copies, Count count) {
+// to a thread's table of `copies` x `buckets` counts of type Counter, whose
+// copies are summed into one before the threads' tables are. Returns the
+// summed table.
+template <typename Counter, typename Keep, typename Count>
+std::vector<std::uint64_t> count_chunks_as(std::span<const float> v, Keep keep, std::size_t buckets,
+                                           std::size_t copies, Count count) {
   std::vector<std::uint64_t> total(buckets, 0);
   const std::size_t size = v.size();
   const auto chunks = static_cast<std::int64_t>((size + kKeyChunk - 1) / kKeyChunk);
 #pragma omp parallel
   {
-    std::vector<std::uint64_t> local(copies * buckets, 0);
+    std::vector<Counter> local(copies * buckets, 0);
     std::uint32_t keys[kKeyChunk];
 #pragma omp for schedule(static) nowait
     for (std::int64_t c = 0; c < chunks; ++c) {
@@ -100,6 +101,17 @@ std::vector<std::uint64_t> count_chunks(std::span<const float> v, Keep keep, std
   return total;
 }
 
+// 32-bit counts per thread (half the table to clear and merge: a fixed cost
+// of every call, which matters for small images) unless a thread could see
+// 2^32 values.
+template <typename Keep, typename Count>
+std::vector<std::uint64_t> count_chunks(std::span<const float> v, Keep keep, std::size_t buckets,
+                                        std::size_t copies, Count count) {
+  if (v.size() <= 0xffffffffu)
+    return count_chunks_as<std::uint32_t>(v, keep, buckets, copies, count);
+  return count_chunks_as<std::uint64_t>(v, keep, buckets, copies, count);
+}
+
 // Pass 1: the top 16 bits of the kept values' keys, 65536 buckets. Value j
 // of a chunk counts into copy j % 4 of the table: neighbouring values (a
 // terrain's neighbouring cells) usually share a bucket, and in one table
@@ -108,19 +120,19 @@ template <typename Keep>
 std::vector<std::uint64_t> count_top_buckets(std::span<const float> v, Keep keep) {
   constexpr std::size_t kB = 65536, kCopies = 4;
   static_assert(kKeyChunk % kCopies == 0);
-  auto counts = count_chunks(v, keep, kB, kCopies,
-                             [](const std::uint32_t* keys, std::size_t n, std::uint64_t* c) {
-                               // Unconditional: rejected values land in bucket 0xffff, cleared
-                               // below.
-                               std::size_t j = 0;
-                               for (; j + kCopies <= n; j += kCopies) {
-                                 ++c[keys[j] >> 16];
-                                 ++c[kB + (keys[j + 1] >> 16)];
-                                 ++c[2 * kB + (keys[j + 2] >> 16)];
-                                 ++c[3 * kB + (keys[j + 3] >> 16)];
-                               }
-                               for (; j < n; ++j) ++c[keys[j] >> 16];
-                             });
+  auto counts =
+      count_chunks(v, keep, kB, kCopies, [](const std::uint32_t* keys, std::size_t n, auto* c) {
+        // Unconditional: rejected values land in bucket 0xffff, cleared
+        // below.
+        std::size_t j = 0;
+        for (; j + kCopies <= n; j += kCopies) {
+          ++c[keys[j] >> 16];
+          ++c[kB + (keys[j + 1] >> 16)];
+          ++c[2 * kB + (keys[j + 2] >> 16)];
+          ++c[3 * kB + (keys[j + 3] >> 16)];
+        }
+        for (; j < n; ++j) ++c[keys[j] >> 16];
+      });
   counts[kRejectedKey >> 16] = 0;
   return counts;
 }
@@ -131,14 +143,14 @@ template <typename Keep>
 std::pair<std::vector<std::uint64_t>, std::vector<std::uint64_t>> count_low_buckets(
     std::span<const float> v, Keep keep, std::uint32_t top_a, std::uint32_t top_b) {
   const bool two = top_b != top_a;
-  const auto add = [=](const std::uint32_t* keys, std::size_t n, std::uint64_t* c) {
+  const auto add = [=](const std::uint32_t* keys, std::size_t n, auto* c) {
     for (std::size_t j = 0; j < n; ++j) {
       const std::uint32_t top = keys[j] >> 16, low = keys[j] & 0xffffu;
       if (top == top_a) ++c[low];
       if (two && top == top_b) ++c[65536 + low];
     }
   };
-  const auto count = [=](const std::uint32_t* keys, std::size_t n, std::uint64_t* c) {
+  const auto count = [=](const std::uint32_t* keys, std::size_t n, auto* c) {
     // Few keys fall in either bucket (a median's bucket is a small part of
     // the range), though most chunks of a terrain hold some: groups of 32
     // keys without one are skipped by a vectorised test (a fixed-length
