@@ -106,6 +106,14 @@ __attribute__((target("avx2"))) std::uint64_t fade_quads_avx2(
 }
 #endif
 
+// Whether any of the n pixels has a positive, finite power (the pixels
+// apply_line fades; it leaves the others as they are).
+bool any_to_fade(const float* row, int n) {
+  bool any = false;
+  for (int i = 0; i < n; ++i) any |= (row[i] > 0.0f) & (row[i] < HUGE_VALF);
+  return any;
+}
+
 }  // namespace
 
 void FadingField::apply_line(float* row, int line) const {
@@ -119,6 +127,11 @@ void FadingField::apply_line(float* row, int line) const {
   alignas(32) std::uint32_t w[4][kChunk];
   for (int b0 = 0; b0 < bins; b0 += kChunk) {
     const int n = std::min(kChunk, bins - b0);
+    // A chunk with nothing to fade (no data or no power: an oblique track's
+    // image is about half such pixels, outside the rotated scene) draws
+    // nothing; every pixel has its own stream, so the others' bytes are the
+    // same.
+    if (!any_to_fade(row + b0, n)) continue;
     philox_first_blocks(seed_, static_cast<std::uint32_t>(b0), line_key, CounterRng::kFadingStream,
                         static_cast<std::size_t>(n), {w[0], w[1], w[2], w[3]});
     const ZigguratTables& zig = *zig_;

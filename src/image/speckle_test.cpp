@@ -159,6 +159,28 @@ TEST(Speckle, NoDataAndShadowAreLeftAlone) {
   EXPECT_EQ(img[3], -1.0f);
 }
 
+// A pixel's factor does not depend on its neighbours having data: whole
+// chunks of no-data pixels (an oblique track's image outside the scene) are
+// skipped, and a lone pixel with power among them is still faded.
+TEST(Speckle, PixelsAmongNoDataGetTheirOwnFactor) {
+  constexpr int kBins = 200;
+  const std::vector<double> n(kBins, 3.0);
+  std::vector<float> all(kBins, 1.0f);
+  apply_fading(all, 1, kBins, n, FadingLaw::exact_gamma, 5);
+  std::vector<float> sparse(kBins, NAN);
+  for (int b : {5, 70, 71, 199}) sparse[static_cast<size_t>(b)] = 1.0f;
+  apply_fading(sparse, 1, kBins, n, FadingLaw::exact_gamma, 5);
+  for (int b = 0; b < kBins; ++b) {
+    const auto i = static_cast<size_t>(b);
+    if (b == 5 || b == 70 || b == 71 || b == 199) {
+      EXPECT_EQ(sparse[i], all[i]) << b;
+      EXPECT_NE(sparse[i], 1.0f) << b;
+    } else {
+      EXPECT_TRUE(std::isnan(sparse[i])) << b;
+    }
+  }
+}
+
 // N varies along range: each bin gets its own law.
 TEST(Speckle, LooksPerBin) {
   constexpr int kLines = 20000, kBins = 2;
