@@ -342,8 +342,13 @@ void scatter_pass(int j0, int n, int first_index, LineElementScratch& s) {
     add(acc + 2 * b, lo + 2 * jj);
     add(acc + 2 * b + 2, hi + 2 * jj);
     const std::int32_t c = code[jj];
-    touch[b] |= static_cast<std::uint8_t>(c & 0xff);
-    touch[b + 1] |= static_cast<std::uint8_t>((c >> kCodeNextShift) & 0xff);
+    // The two bins' touch bits as one 16-bit OR (little-endian: the first
+    // bin's in the low byte, as code holds them).
+    static_assert(std::endian::native == std::endian::little);
+    std::uint16_t t2;
+    std::memcpy(&t2, touch + b, 2);
+    t2 = static_cast<std::uint16_t>(t2 | (c & 0xffff));
+    std::memcpy(touch + b, &t2, 2);
     const std::size_t k = q * stride + static_cast<std::size_t>(centre[jj]);
     counts[k] += (c & kCodeSeen) ? kSeenOne : 1;
   };
