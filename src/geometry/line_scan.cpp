@@ -11,17 +11,6 @@
 
 namespace ris {
 
-// The look loops (GCC vectorises them by itself) also get an AVX-512 clone:
-// twice the lanes per instruction, the fused along-axis benchmark ~4%
-// faster on this EPYC (the other loops here gained nothing measurable). GCC's avx512f target
-// enables FMA, so this file is compiled with -ffp-contract=off (CMakeLists.txt): no multiply-add is
-// contracted and every clone gives the same bytes.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RIS_WIDE_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define RIS_WIDE_CLONES
-#endif
-
 namespace {
 constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
 }
@@ -29,7 +18,10 @@ constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
 namespace {
 
 // look_line's loops, with restrict-qualified parameters: the arrays never
-// alias, which lets them vectorise without run-time overlap checks. With
+// alias, which lets them vectorise without run-time overlap checks. They
+// have an AVX-512 clone (this file is compiled with -ffp-contract=off): the
+// fused along-axis benchmark ~4% faster on this EPYC (the other loops here
+// gained nothing measurable from it). With
 // kIncidence the same loop also gives the look angle from nadir atan2(u, D)
 // = atan(u / D) (D > 0: terrain below the sensor is checked before), which
 // reuses its loads and D rather than a pass of its own.
@@ -65,21 +57,19 @@ __attribute__((always_inline)) inline void look_loop(
   }
 }
 
-RIS_WIDE_CLONES void look_kernel(int n, float H, float lx, float ly, float element,
-                                 const float* __restrict u_m, const float* __restrict height,
-                                 const float* __restrict gx, const float* __restrict gy,
-                                 float* __restrict range, float* __restrict local,
-                                 float* __restrict area, float* __restrict dh_du) {
+RIS_WIDE_VECTOR_CLONES void look_kernel(int n, float H, float lx, float ly, float element,
+                                        const float* __restrict u_m, const float* __restrict height,
+                                        const float* __restrict gx, const float* __restrict gy,
+                                        float* __restrict range, float* __restrict local,
+                                        float* __restrict area, float* __restrict dh_du) {
   look_loop<false>(n, H, lx, ly, element, u_m, height, gx, gy, range, local, area, dh_du, nullptr);
 }
 
-RIS_WIDE_CLONES void look_incidence_kernel(int n, float H, float lx, float ly, float element,
-                                           const float* __restrict u_m,
-                                           const float* __restrict height,
-                                           const float* __restrict gx, const float* __restrict gy,
-                                           float* __restrict range, float* __restrict local,
-                                           float* __restrict area, float* __restrict dh_du,
-                                           float* __restrict inc) {
+RIS_WIDE_VECTOR_CLONES void look_incidence_kernel(
+    int n, float H, float lx, float ly, float element, const float* __restrict u_m,
+    const float* __restrict height, const float* __restrict gx, const float* __restrict gy,
+    float* __restrict range, float* __restrict local, float* __restrict area,
+    float* __restrict dh_du, float* __restrict inc) {
   look_loop<true>(n, H, lx, ly, element, u_m, height, gx, gy, range, local, area, dh_du, inc);
 }
 

@@ -69,10 +69,12 @@ __attribute__((always_inline)) inline vec8::F8 slope_difference8(vec8::I8 lo_ok,
 // Rows outside the scene read `none` (no data). The interior columns eight
 // at a time in vector types (util/vec8.h; GCC does not vectorise the scalar
 // loop: its double-precision selects on byte flags), the edges and the
-// remainder by the scalar `one`, the same operations.
-RIS_VECTOR_CLONES void gather_row(const SceneWindow& in, int scene_rows, int r, double dx_m,
-                                  double dy_m, const std::uint8_t* none_valid, const float* none_z,
-                                  bool reverse, detail::LineScratch& s) {
+// remainder by the scalar `one`, the same operations. With an AVX-512
+// clone (this file is compiled with -ffp-contract=off): the eight doubles
+// in one register (~2% of the fused benchmark, as map_row's).
+RIS_WIDE_VECTOR_CLONES void gather_row(const SceneWindow& in, int scene_rows, int r, double dx_m,
+                                       double dy_m, const std::uint8_t* none_valid,
+                                       const float* none_z, bool reverse, detail::LineScratch& s) {
   const int cols = in.cols;
   const std::size_t base = in.index(r, in.col0);
   const float* __restrict z = in.elevation_m + base;
@@ -174,11 +176,12 @@ RIS_VECTOR_CLONES void gather_row(const SceneWindow& in, int scene_rows, int r, 
 // scene_map_cell (which takes the remainder), so the same bytes; a scalar
 // loop over cells was a fifth of the fused stage (a double division per
 // cell for the degrees, and branches).
-RIS_VECTOR_CLONES void map_row(int n, bool reverse, double near_m, double far_m,
-                               const std::uint8_t* __restrict flags, const float* __restrict range,
-                               const float* __restrict local_incidence,
-                               const std::uint8_t* __restrict valid, std::uint8_t* __restrict mask,
-                               float* __restrict deg) {
+RIS_WIDE_VECTOR_CLONES void map_row(int n, bool reverse, double near_m, double far_m,
+                                    const std::uint8_t* __restrict flags,
+                                    const float* __restrict range,
+                                    const float* __restrict local_incidence,
+                                    const std::uint8_t* __restrict valid,
+                                    std::uint8_t* __restrict mask, float* __restrict deg) {
   using namespace vec8;
   // double(R) >= near_m <=> R >= near_f, the smallest float whose double is
   // >= near_m (likewise far_m): the comparisons in single precision.
