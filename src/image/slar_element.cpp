@@ -31,8 +31,13 @@ SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainT
       out[2 * k + 1] = k + 1 < size ? t[k + 1] - t[k] : 0;
     }
   };
-  pairs(gain2.data(), std::size_t{TwoWayGainTable::kSteps} + 1, ctx.gain2_pairs);
+  // The gain's pairs from the table rounded to float (value and difference
+  // both in single precision, as the power).
+  const std::vector<float> gain2_f(gain2.data(), gain2.data() + TwoWayGainTable::kSteps + 1);
+  pairs(gain2_f.data(), gain2_f.size(), ctx.gain2_pairs);
   pairs(lut.data(), lut.size(), ctx.sigma0_pairs);
+  ctx.g2_uniform = static_cast<float>(gain2.at(0.0));
+  ctx.power_scale = ctx.k_radar * kElementPowerScale;
   return ctx;
 }
 
@@ -219,19 +224,15 @@ RIS_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
 }
 
 // Pass 2's table lookups on eight elements, the same operations as
-// Sigma0Lut::interpolate and TwoWayGainTable::interpolate (so the same
-// values) with the tables as (value, difference) pairs (SlarElementContext):
-// one 8- or 16-byte load per element where GCC's vectorised scalar loop
-// emulated two gathers.
-using D2 = double __attribute__((vector_size(16)));
-using D4 = double __attribute__((vector_size(32)));
-using F4 = float __attribute__((vector_size(16)));
-using I4 = std::int32_t __attribute__((vector_size(16)));
-
-__attribute__((always_inline)) inline F8 sigma0_block(const float* __restrict pairs, I8 offset,
-                                                      F8 incidence_rad) {
-  constexpr int kSteps = Sigma0Lut::kSteps;
-  F8 pos = incidence_rad * Sigma0Lut::kInvStep;
+// Sigma0Lut::interpolate (so the same values) with the tables as (value,
+// difference) pairs of floats (SlarElementContext): one 8-byte load per
+// element where GCC's vectorised scalar loop emulated two gathers. The
+// gain's lookup is the same on its own table (offset 0); pair_lookup is
+// one lane of it, for the elements after the last block (the same bits).
+template <int kSteps>
+__attribute__((always_inline)) inline F8 pair_block(const float* __restrict pairs, I8 offset, F8 x,
+                                                    float inv_step) {
+  F8 pos = x * inv_step;
   pos = pos < 0.0f ? splat(0.0f) : pos;
   pos = pos > static_cast<float>(kSteps) ? splat(static_cast<float>(kSteps)) : pos;
   I8 i = __builtin_convertvector(pos, I8);
@@ -239,6 +240,7 @@ __attribute__((always_inline)) inline F8 sigma0_block(const float* __restrict pa
   const F8 f = pos - __builtin_convertvector(i, F8);
   const I8 k = offset + i;
   // A pair of floats is 8 bytes: loaded as one double each.
+  using D4 = double __attribute__((vector_size(32)));
   D4 a, b;
   for (int l = 0; l < 4; ++l) {
     a[l] = load<double>(pairs + 2 * k[l]);
@@ -250,43 +252,42 @@ __attribute__((always_inline)) inline F8 sigma0_block(const float* __restrict pa
   return t + f * d;
 }
 
-__attribute__((always_inline)) inline D4 gain2_block(const double* __restrict pairs, F4 beta_rad) {
-  constexpr int kSteps = TwoWayGainTable::kSteps;
-  D4 pos = __builtin_convertvector(beta_rad, D4) * TwoWayGainTable::kInvStepRad;
-  pos = pos < 0.0 ? D4{} : pos;
-  pos = pos > double(kSteps) ? D4{} + double(kSteps) : pos;
-  I4 i = __builtin_convertvector(pos, I4);
-  i = i < kSteps - 1 ? i : I4{} + (kSteps - 1);
-  const D4 f = pos - __builtin_convertvector(i, D4);
-  const D2 p0 = load<D2>(pairs + 2 * i[0]), p1 = load<D2>(pairs + 2 * i[1]);
-  const D2 p2 = load<D2>(pairs + 2 * i[2]), p3 = load<D2>(pairs + 2 * i[3]);
-  const D4 a = __builtin_shufflevector(p0, p1, 0, 2, 1, 3);  // t0 t1 d0 d1
-  const D4 b = __builtin_shufflevector(p2, p3, 0, 2, 1, 3);  // t2 t3 d2 d3
-  const D4 t = __builtin_shufflevector(a, b, 0, 1, 4, 5);
-  const D4 d = __builtin_shufflevector(a, b, 2, 3, 6, 7);
-  return t + f * d;
+template <int kSteps>
+inline float pair_lookup(const float* pairs, float x, float inv_step) {
+  float pos = x * inv_step;
+  pos = pos < 0.0f ? 0.0f : pos;
+  pos = pos > static_cast<float>(kSteps) ? static_cast<float>(kSteps) : pos;
+  int i = static_cast<int>(pos);
+  i = i < kSteps - 1 ? i : kSteps - 1;
+  const float f = pos - static_cast<float>(i);
+  const auto k = 2 * static_cast<std::size_t>(i);
+  return pairs[k] + f * pairs[k + 1];
 }
+
+constexpr float kGainInvStep = static_cast<float>(TwoWayGainTable::kInvStepRad);
 
 // Pass 2: each element's power P_i (0 where not visible: its area is 0) and
 // its split between b0 and b0 + 1. The table lookups first (eight elements
 // at a time, the rest one by one), then the arithmetic in a loop of its
-// own, which vectorises.
+// own, which vectorises (element_power_ratio in single precision, then
+// P_i and its split in double).
 RIS_VECTOR_CLONES void power_pass(
-    int n, double k_radar, bool uniform, double g2_uniform, const double* __restrict gain2,
-    const double* __restrict gain2_pairs, const float* __restrict curves,
-    const float* __restrict sigma0_pairs, const std::int32_t* __restrict curve_offset,
-    const float* __restrict range, const float* __restrict incidence,
-    const float* __restrict local_incidence, const float* __restrict area,
-    const std::int32_t* __restrict category, const float* __restrict frac_next,
-    float* __restrict sigma0, double* __restrict g2, double* __restrict power,
-    double* __restrict lo, double* __restrict hi) {
+    int n, double power_scale, bool uniform, float g2_uniform, const float* __restrict gain2_pairs,
+    const float* __restrict curves, const float* __restrict sigma0_pairs,
+    const std::int32_t* __restrict curve_offset, const float* __restrict range,
+    const float* __restrict incidence, const float* __restrict local_incidence,
+    const float* __restrict area, const std::int32_t* __restrict category,
+    const float* __restrict frac_next, float* __restrict sigma0, float* __restrict g2,
+    double* __restrict power, double* __restrict lo, double* __restrict hi) {
   const int full = n / kLanes * kLanes;
   for (int j = 0; j < full; j += kLanes) {
     const auto jj = static_cast<std::size_t>(j);
     I8 offset;
     for (int l = 0; l < kLanes; ++l)
       offset[l] = curve_offset[category[jj + static_cast<std::size_t>(l)]];
-    store(sigma0 + jj, sigma0_block(sigma0_pairs, offset, load<F8>(local_incidence + jj)));
+    store(sigma0 + jj,
+          pair_block<Sigma0Lut::kSteps>(sigma0_pairs, offset, load<F8>(local_incidence + jj),
+                                        Sigma0Lut::kInvStep));
   }
   for (int j = full; j < n; ++j) {
     sigma0[j] = Sigma0Lut::interpolate(curves, curve_offset[category[j]], local_incidence[j]);
@@ -296,15 +297,15 @@ RIS_VECTOR_CLONES void power_pass(
   } else {
     for (int j = 0; j < full; j += kLanes) {
       const auto jj = static_cast<std::size_t>(j);
-      store(g2 + jj, gain2_block(gain2_pairs, load<F4>(incidence + jj)));
-      store(g2 + jj + 4, gain2_block(gain2_pairs, load<F4>(incidence + jj + 4)));
+      store(g2 + jj, pair_block<TwoWayGainTable::kSteps>(gain2_pairs, splat(0),
+                                                         load<F8>(incidence + jj), kGainInvStep));
     }
     for (int j = full; j < n; ++j) {
-      g2[j] = TwoWayGainTable::interpolate(gain2, double(incidence[j]));
+      g2[j] = pair_lookup<TwoWayGainTable::kSteps>(gain2_pairs, incidence[j], kGainInvStep);
     }
   }
   for (int j = 0; j < n; ++j) {
-    const double p = radar_power_w(k_radar, g2[j], sigma0[j], area[j], double(range[j]));
+    const double p = double(element_power_ratio(g2[j], sigma0[j], area[j], range[j])) * power_scale;
     power[j] = p;
     const double frac = frac_next[j];
     const double ph = p * frac, ah = double(area[j]) * frac;
@@ -322,6 +323,7 @@ RIS_VECTOR_CLONES void power_pass(
 // for the previous one's store). Elements without a bin add to the spare
 // bin `bins`.
 void scatter_pass(int j0, int n, int first_index, LineElementScratch& s) {
+  using D2 = double __attribute__((vector_size(16)));
   const std::size_t stride = s.stride();
   const std::int32_t* __restrict first = s.first.data();
   const std::int32_t* __restrict centre = s.centre.data();
@@ -444,12 +446,11 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     bins_pass(m, static_cast<float>(c.near_m), static_cast<float>(c.inv_dr), bins,
               lut.any_category(), io, t);
     if (tabulated) {
-      power_pass(m, c.k_radar, c.gain2->uniform(), c.gain2->at(0.0), c.gain2->data(),
-                 c.gain2_pairs.data(), lut.data(), c.sigma0_pairs.data(), lut.offsets(),
-                 s.range.data() + o, s.incidence.data() + o, s.local_incidence.data() + o,
-                 s.area.data() + o, s.category.data() + o, s.frac_next.data() + o,
-                 s.sigma0.data() + o, s.g2.data() + o, s.power.data() + o, s.lo.data() + 2 * o,
-                 s.hi.data() + 2 * o);
+      power_pass(m, c.power_scale, c.gain2->uniform(), c.g2_uniform, c.gain2_pairs.data(),
+                 lut.data(), c.sigma0_pairs.data(), lut.offsets(), s.range.data() + o,
+                 s.incidence.data() + o, s.local_incidence.data() + o, s.area.data() + o,
+                 s.category.data() + o, s.frac_next.data() + o, s.sigma0.data() + o,
+                 s.g2.data() + o, s.power.data() + o, s.lo.data() + 2 * o, s.hi.data() + 2 * o);
     }
     scatter_pass(j0, m, e.first_index, s);
   }

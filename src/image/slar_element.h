@@ -10,11 +10,11 @@
 // rather than element by element: branch-free passes (vectorised) compute
 // each element's first bin and the fraction of it in the next bin (almost
 // every element lies within two bins; bin coordinates in single precision)
-// and its power (double), a scatter pass adds them into
-// four interleaved copies of the profile (consecutive elements usually fall
-// in the same bin; one copy would chain every add through memory), the rare
-// element spanning more bins (or the swath's edge) goes through spread(),
-// and a last pass sums the copies into the profile.
+// and its power (element_power_ratio: single precision, then double), a
+// scatter pass adds them into four interleaved copies of the profile (consecutive elements usually
+// fall in the same bin; one copy would chain every add through memory), the rare element spanning
+// more bins (or the swath's edge) goes through spread(), and a last pass sums the copies into the
+// profile.
 //
 // Example (one line of n elements, a profile of `bins` bins):
 //   const ris::detail::SlarElementContext ctx = ris::detail::element_context(p, gain2, lut, bins);
@@ -78,10 +78,13 @@ struct SlarElementContext {
   const Sigma0Lut* lut = nullptr;
   // The two tables as (value, next value - value) pairs, entry k at [2k]:
   // the power pass's lookups load one pair per element instead of two
-  // values (the same differences as interpolate() computes, so the same
-  // results).
-  std::vector<double> gain2_pairs;
+  // values (sigma0: the same differences as Sigma0Lut::interpolate()
+  // computes, so the same results). The gain in single precision, as the
+  // per-element power (element_power_ratio).
+  std::vector<float> gain2_pairs;
   std::vector<float> sigma0_pairs;
+  float g2_uniform = 0.0f;   // the gain when the table is uniform
+  double power_scale = 0.0;  // k_radar 2^-40: element_power_ratio's scale
 };
 
 SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainTable& gain2,
@@ -94,6 +97,25 @@ inline double radar_power_w(double k_radar, double gain2, float sigma0, float ar
   const double r2 = slant_range_m * slant_range_m;
   return k_radar * gain2 * double(sigma0) * double(area_m2) / (r2 * r2);
 }
+
+// The per-element power's variable part in single precision: G^2 sigma0 A /
+// (R 2^-10)^4, so that P_i = double(ratio) * k_radar 2^-40
+// (SlarElementContext::power_scale; the radar equation as radar_power_w).
+// Why float: eight elements per instruction and one single-precision
+// division instead of two double ones; the inputs are floats already and
+// the result's relative error (< 1e-6, five roundings) is far below
+// anything the image resolves; accumulation stays in double. Why 2^-10
+// (exact): R^4 in metres reaches 1e20 and small sigma0 x gain products
+// would bring the ratio near float's smallest normal values; in units of
+// 1024 m, R^4 stays within ~1e-12 (R = 1 m) to 1e16 (R = 10^7 m) and the
+// ratio well inside float's range. The order of the operations is part of
+// the definition (vectorised and scalar lanes give the same bits).
+inline float element_power_ratio(float gain2, float sigma0, float area_m2, float slant_range_m) {
+  const float r = slant_range_m * 0x1p-10f;
+  const float r2 = r * r;
+  return gain2 * sigma0 * area_m2 / (r2 * r2);
+}
+inline constexpr double kElementPowerScale = 0x1p-40;
 
 // One line's elements, `samples` values each (the geometry's per-sample
 // arrays at the line's start, or a fused pipeline's line scratch).
@@ -146,8 +168,8 @@ struct LineElementScratch {
   // (form_line_profile's kCode*), the power pass's inputs (neutral values
   // where not visible) and outputs; the elements left to spread().
   std::vector<std::int32_t> first, centre, code, category;
-  std::vector<float> frac_next, range, incidence, local_incidence, area, sigma0;
-  std::vector<double> g2, power;
+  std::vector<float> frac_next, range, incidence, local_incidence, area, sigma0, g2;
+  std::vector<double> power;
   // Per element, what it adds to its first bin and to the next: (power,
   // area) pairs, interleaved as the profile copies' (2 values an element).
   std::vector<double> lo, hi;

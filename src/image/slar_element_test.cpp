@@ -193,7 +193,17 @@ TEST(SlarElement, LineProfileMatchesElementByElementReference) {
     EXPECT_EQ(t.layover, ref.tally.layover);
     EXPECT_EQ(t.r_min_m, ref.tally.r_min_m);
     EXPECT_EQ(t.r_max_m, ref.tally.r_max_m);
-    EXPECT_EQ(element_power, ref.element_power) << "seed " << seed;
+    // The element power in single precision (element_power_ratio: the
+    // float gain table, five roundings) against the double reference: a few
+    // float ulps (measured <= 7.3e-7 relative); 0 exactly where not visible.
+    for (std::size_t j = 0; j < element_power.size(); ++j) {
+      const float r = ref.element_power[j];
+      if (r == 0.0f) {
+        EXPECT_EQ(element_power[j], 0.0f) << "seed " << seed << " element " << j;
+      } else {
+        EXPECT_NEAR(element_power[j] / r, 1.0f, 2e-6f) << "seed " << seed << " element " << j;
+      }
+    }
     EXPECT_EQ(touch, ref.touch) << "seed " << seed;
     EXPECT_EQ(mapped, ref.mapped) << "seed " << seed;
     EXPECT_EQ(visible, ref.visible) << "seed " << seed;
