@@ -2,8 +2,10 @@
 // tracks and radars that suit the small test scenes.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <set>
 #include <string>
 #include <vector>
@@ -48,6 +50,60 @@ inline Track north_track(const Scene& s, double altitude_m, double near_m) {
   spec.near_edge_ground_m = near_m;
   spec.altitude_m = altitude_m;
   return resolve_track(spec, s, "radar.toml");
+}
+
+// Any two vectors of one type (std::vector or ris::UninitVector) hold the
+// same bytes.
+template <typename Vector>
+bool same_bytes(const Vector& a, const Vector& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), a.size() * sizeof(typename Vector::value_type)) == 0;
+}
+
+// A straight track from the origin, length_m long at heading_rad (clockwise
+// from north), altitude_m high.
+inline Track endpoint_track(double heading_rad, double length_m, double altitude_m) {
+  TrackSpec spec;
+  spec.kind = TrackSpec::Kind::endpoints;
+  spec.start_x_m = 0.0;
+  spec.start_y_m = 0.0;
+  spec.end_x_m = length_m * std::sin(heading_rad);
+  spec.end_y_m = length_m * std::cos(heading_rad);
+  spec.altitude_m = altitude_m;
+  const Scene unused = Scene::flat(1, 1, 1.0, 0.0f, 0);
+  return resolve_track(spec, unused, "radar.toml");
+}
+
+// A flat north-up grid of cell_m cells (category `category`) covering the
+// track-frame rectangle s in [0, s_max_m], u in [u0_m, u1_m]; then
+// fill(scene, cell index, s, u) at each cell centre's track coordinates, so
+// that a scene built for a rotated track is the same terrain rotated.
+template <typename Fill>
+Scene track_frame_scene(const Track& t, double s_max_m, double u0_m, double u1_m, double cell_m,
+                        std::uint16_t category, Fill fill) {
+  double x_min = 1e30, x_max = -1e30, y_min = 1e30, y_max = -1e30;
+  for (double s : {0.0, s_max_m}) {
+    for (double u : {u0_m, u1_m}) {
+      const auto [x, y] = t.world_from_along_cross(s, u);
+      x_min = std::min(x_min, x);
+      x_max = std::max(x_max, x);
+      y_min = std::min(y_min, y);
+      y_max = std::max(y_max, y);
+    }
+  }
+  const int cols = static_cast<int>(std::round((x_max - x_min) / cell_m));
+  const int rows = static_cast<int>(std::round((y_max - y_min) / cell_m));
+  Scene scene = Scene::flat(rows, cols, cell_m, 0.0f, category);
+  scene.origin_x_m = x_min;
+  scene.origin_y_m = y_max;
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      const auto [x, y] = scene.cell_centre(r, c);
+      const auto [s, u] = t.along_cross(x, y);
+      fill(scene, scene.index(r, c), s, u);
+    }
+  }
+  return scene;
 }
 
 // A 60 x 90 fractal scene of 10 m cells (categories 1-10) with a no-data

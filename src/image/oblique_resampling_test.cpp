@@ -52,47 +52,14 @@ std::uint16_t patch_category(double s_m, double u_m) {
   return static_cast<std::uint16_t>(h % 6);
 }
 
-// A flat north-up grid covering track-frame s in [0, 600], u in [3900, 4900]
-// for the track, each cell taking the patch of its centre.
-Scene patch_scene(const Track& t) {
-  double x_min = 1e30, x_max = -1e30, y_min = 1e30, y_max = -1e30;
-  for (double s : {0.0, 600.0}) {
-    for (double u : {3900.0, 4900.0}) {
-      const auto [x, y] = t.world_from_along_cross(s, u);
-      x_min = std::min(x_min, x);
-      x_max = std::max(x_max, x);
-      y_min = std::min(y_min, y);
-      y_max = std::max(y_max, y);
-    }
-  }
-  const int cols = static_cast<int>(std::round((x_max - x_min) / kCell));
-  const int rows = static_cast<int>(std::round((y_max - y_min) / kCell));
-  Scene s = Scene::flat(rows, cols, kCell, 0.0f, 0);
-  s.origin_x_m = x_min;
-  s.origin_y_m = y_max;
-  for (int r = 0; r < rows; ++r) {
-    for (int c = 0; c < cols; ++c) {
-      const auto [x, y] = s.cell_centre(r, c);
-      const auto [sa, ua] = t.along_cross(x, y);
-      s.category[s.index(r, c)] = patch_category(sa, ua);
-    }
-  }
-  return s;
-}
-
-Track heading_track(double heading_deg) {
-  TrackSpec spec;
-  spec.kind = TrackSpec::Kind::endpoints;
-  spec.end_x_m = 600.0 * std::sin(deg_to_rad(heading_deg));
-  spec.end_y_m = 600.0 * std::cos(deg_to_rad(heading_deg));
-  spec.altitude_m = kH;
-  const Scene unused = Scene::flat(1, 1, 1.0, 0.0f, 0);
-  return resolve_track(spec, unused, "radar.toml");
-}
-
 SlarImage patch_image(double heading_deg) {
-  const Track t = heading_track(heading_deg);
-  const Scene s = patch_scene(t);
+  // A flat grid covering track-frame s in [0, 600], u in [3900, 4900], each
+  // cell taking the patch of its centre.
+  const Track t = test::endpoint_track(deg_to_rad(heading_deg), 600.0, kH);
+  const Scene s = test::track_frame_scene(t, 600.0, 3900.0, 4900.0, kCell, 0,
+                                          [](Scene& sc, std::size_t i, double s_m, double u_m) {
+                                            sc.category[i] = patch_category(s_m, u_m);
+                                          });
   const SlarGeometry g = compute_slar_geometry(s, t, kCell, "radar.toml");
   return form_slar_image(g, test::cosine_lut(s), imaging_params(), "radar.toml");
 }

@@ -189,41 +189,13 @@ float hill(double s_m, double u_m) {
 // A north-up grid covering the track-frame rectangle s in [0, 600],
 // u in [u0, u1] for the given track, with the hill at its track coordinates.
 Scene hill_scene(const Track& t, double u0, double u1) {
-  double x_min = 1e30, x_max = -1e30, y_min = 1e30, y_max = -1e30;
-  for (double s : {0.0, 600.0}) {
-    for (double u : {u0, u1}) {
-      const auto [x, y] = t.world_from_along_cross(s, u);
-      x_min = std::min(x_min, x);
-      x_max = std::max(x_max, x);
-      y_min = std::min(y_min, y);
-      y_max = std::max(y_max, y);
-    }
-  }
-  const int cols = static_cast<int>(std::round((x_max - x_min) / kCell));
-  const int rows = static_cast<int>(std::round((y_max - y_min) / kCell));
-  Scene s = Scene::flat(rows, cols, kCell, 0.0f, 1);
-  s.origin_x_m = x_min;
-  s.origin_y_m = y_max;
-  for (int r = 0; r < rows; ++r) {
-    for (int c = 0; c < cols; ++c) {
-      const auto [x, y] = s.cell_centre(r, c);
-      const auto [sa, ua] = t.along_cross(x, y);
-      s.elevation_m[s.index(r, c)] = hill(sa, ua);
-    }
-  }
-  return s;
+  return test::track_frame_scene(
+      t, 600.0, u0, u1, kCell, 1,
+      [](Scene& sc, std::size_t i, double s_m, double u_m) { sc.elevation_m[i] = hill(s_m, u_m); });
 }
 
 Track endpoint_track(double heading_rad) {
-  TrackSpec spec;
-  spec.kind = TrackSpec::Kind::endpoints;
-  spec.start_x_m = 0.0;
-  spec.start_y_m = 0.0;
-  spec.end_x_m = 600.0 * std::sin(heading_rad);
-  spec.end_y_m = 600.0 * std::cos(heading_rad);
-  spec.altitude_m = kH;
-  Scene unused = Scene::flat(1, 1, 1.0, 0.0f, 0);
-  return resolve_track(spec, unused, "radar.toml");
+  return test::endpoint_track(heading_rad, 600.0, kH);
 }
 
 TEST(SlarImage, SceneAndTrackRotatedTogetherBy30DegreesGiveTheSameImage) {

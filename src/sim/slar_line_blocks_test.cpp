@@ -19,12 +19,7 @@
 namespace ris {
 namespace {
 
-// Any two vectors of one type (std::vector or ris::UninitVector).
-template <typename Vector>
-bool same_bytes(const Vector& a, const Vector& b) {
-  return a.size() == b.size() &&
-         std::memcmp(a.data(), b.data(), a.size() * sizeof(typename Vector::value_type)) == 0;
-}
+using test::same_bytes;
 
 Scene test_scene() {
   return test::rugged_test_scene();

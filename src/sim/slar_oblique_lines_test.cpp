@@ -17,11 +17,7 @@
 namespace ris {
 namespace {
 
-template <typename Vector>
-bool same_bytes(const Vector& a, const Vector& b) {
-  return a.size() == b.size() &&
-         std::memcmp(a.data(), b.data(), a.size() * sizeof(typename Vector::value_type)) == 0;
-}
+using test::same_bytes;
 
 // The 900 m x 600 m rugged test scene (x in [0, 900], y in [0, 600]) under a
 // 600 m-high track from (x0, y0) to (x1, y1), a swath from 400 to 900 m of
