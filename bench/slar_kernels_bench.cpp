@@ -102,6 +102,23 @@ void BM_MedianElevation(benchmark::State& state) {
 }
 BENCHMARK(BM_MedianElevation)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The backscatter LUT of a run (ris/backscatter/sigma0_lut.h): the default
+// library's ten categories tabulated at the bench radar's band, as
+// prepare_radiometry builds it. Arg: threads.
+void BM_Sigma0Lut(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const Fixture& f = fixture();
+  const ris::RadarBand band{f.along.frequency_hz, f.along.polarisation};
+  const std::vector<std::uint16_t> categories = f.sigma0->category_ids();
+  for (auto _ : state) {
+    const ris::Sigma0Lut lut = ris::Sigma0Lut::build(*f.sigma0, band, categories, "bench");
+    benchmark::DoNotOptimize(lut.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(categories.size()) *
+                          (ris::Sigma0Lut::kSteps + 1));
+}
+BENCHMARK(BM_Sigma0Lut)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The speckle alone (ris/image/speckle.h: batched Philox blocks, the common
 // draw vectorised) over a 2000-line x 488-bin image, N = 1.05 (the
 // figure-4-5 radar's). Args: threads, law (0 exact, 1 seed).

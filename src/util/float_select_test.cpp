@@ -116,6 +116,80 @@ TEST(FloatSelect, RejectedValuesNeverCount) {
   omp_set_num_threads(saved);
 }
 
+// The one-read sampled median (Floyd-Rivest bracket): on a terrain-like
+// field and on noise with duplicates, signed zeros and masked values, its
+// bracket holds the median and it equals nth_element, 1 and 2 threads, with
+// samples of several sizes (and the data smaller than two samples: every
+// value is the sample).
+TEST(FloatSelect, SampledMedianBracketsAndMatchesNthElement) {
+  const int saved = omp_get_max_threads();
+  std::mt19937 gen(11);
+  std::normal_distribution<float> normal(0.0f, 40.0f);
+  for (int field : {0, 1}) {
+    const std::size_t n = 250007;
+    std::vector<float> v(n);
+    float walk = 300.0f;
+    for (std::size_t i = 0; i < n; ++i) {
+      walk += 0.05f * normal(gen);  // a random walk: neighbours alike, as terrain
+      v[i] = field == 0 ? walk : ((i % 4 == 0) ? std::round(normal(gen)) : normal(gen));
+      if (field == 1 && i % 53 == 2) v[i] = (i % 2) ? -0.0f : 0.0f;
+    }
+    const auto keep = [&](std::size_t i) { return (i % 13 != 6) & !std::isnan(v[i]); };
+    std::vector<std::uint32_t> ref;
+    for (std::size_t i = 0; i < n; ++i)
+      if (keep(i)) ref.push_back(detail::float_order_key(v[i]));
+    const std::size_t lo = (ref.size() - 1) / 2, hi = ref.size() / 2;
+    std::nth_element(ref.begin(), ref.begin() + static_cast<std::ptrdiff_t>(lo), ref.end());
+    const float want_lo = detail::float_from_order_key(ref[lo]);
+    std::nth_element(ref.begin(), ref.begin() + static_cast<std::ptrdiff_t>(hi), ref.end());
+    const float want_hi = detail::float_from_order_key(ref[hi]);
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      for (std::size_t sample : {std::size_t{1024}, std::size_t{16384}, n}) {
+        const detail::SampledMedian m =
+            detail::median_pair_sampled<decltype(keep)>(v, keep, sample);
+        ASSERT_TRUE(m.bracketed) << field << " sample " << sample;
+        ASSERT_TRUE(m.median.has_value());
+        // Bits, not ==: -0 and +0 are different answers.
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(m.median->first),
+                  std::bit_cast<std::uint32_t>(want_lo))
+            << field << " sample " << sample << " threads " << threads;
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(m.median->second),
+                  std::bit_cast<std::uint32_t>(want_hi))
+            << field << " sample " << sample << " threads " << threads;
+      }
+    }
+  }
+  omp_set_num_threads(saved);
+}
+
+// Data built so that the regular sample sees only its largest value: the
+// bracket misses (the sampled select says so), and median_pair_float falls
+// back to the radix select, still exact. Nothing kept gives nullopt either way.
+TEST(FloatSelect, SampledMedianMissFallsBackToRadix) {
+  const std::size_t sample = 1024, stride = 8, n = sample * stride + 5;
+  std::vector<float> v(n);
+  for (std::size_t i = 0; i < n; ++i)
+    v[i] = (i % stride == stride / 2) ? 1e6f : static_cast<float>(i % 1000);
+  const auto keep = [&](std::size_t i) { return !std::isnan(v[i]); };
+  EXPECT_FALSE(detail::median_pair_sampled<decltype(keep)>(v, keep, sample).bracketed);
+  std::vector<float> ref = v;
+  const std::size_t lo = (n - 1) / 2, hi = n / 2;
+  std::sort(ref.begin(), ref.end());
+  const auto radix = detail::median_pair_radix<decltype(keep)>(v, keep);
+  ASSERT_TRUE(radix.has_value());
+  EXPECT_EQ(radix->first, ref[lo]);
+  EXPECT_EQ(radix->second, ref[hi]);
+  const auto m = median_pair_float(v, keep);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_EQ(m->first, ref[lo]);
+  EXPECT_EQ(m->second, ref[hi]);
+  const auto none = [](std::size_t) { return false; };
+  const detail::SampledMedian empty = detail::median_pair_sampled<decltype(none)>(v, none, sample);
+  EXPECT_FALSE(empty.bracketed && empty.median.has_value());
+  EXPECT_FALSE(median_pair_float(v, none).has_value());
+}
+
 TEST(FloatSelect, OrderKeysSortAsTheFloats) {
   const std::vector<float> sorted = {-std::numeric_limits<float>::infinity(),
                                      -1e30f,
