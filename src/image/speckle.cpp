@@ -114,6 +114,21 @@ bool any_to_fade(const float* row, int n) {
   return any;
 }
 
+#ifdef RIS_SPECKLE_AVX2
+// any_to_fade eight pixels at a time, stopping at the first block with one
+// (GCC left the loop above scalar: 13% of apply_line's samples).
+__attribute__((target("avx2"))) bool any_to_fade_avx2(const float* row, int n) {
+  int i = 0;
+  for (; i + 8 <= n; i += 8) {
+    const __m256 p = _mm256_loadu_ps(row + i);
+    const __m256 fade = _mm256_and_ps(_mm256_cmp_ps(p, _mm256_setzero_ps(), _CMP_GT_OQ),
+                                      _mm256_cmp_ps(p, _mm256_set1_ps(HUGE_VALF), _CMP_LT_OQ));
+    if (_mm256_movemask_ps(fade) != 0) return true;
+  }
+  return any_to_fade(row + i, n - i);
+}
+#endif
+
 }  // namespace
 
 void FadingField::apply_line(float* row, int line) const {
@@ -131,7 +146,12 @@ void FadingField::apply_line(float* row, int line) const {
     // image is about half such pixels, outside the rotated scene) draws
     // nothing; every pixel has its own stream, so the others' bytes are the
     // same.
+#ifdef RIS_SPECKLE_AVX2
+    static const bool avx2_any = __builtin_cpu_supports("avx2");
+    if (avx2_any ? !any_to_fade_avx2(row + b0, n) : !any_to_fade(row + b0, n)) continue;
+#else
     if (!any_to_fade(row + b0, n)) continue;
+#endif
     philox_first_blocks(seed_, static_cast<std::uint32_t>(b0), line_key, CounterRng::kFadingStream,
                         static_cast<std::size_t>(n), {w[0], w[1], w[2], w[3]});
     const ZigguratTables& zig = *zig_;

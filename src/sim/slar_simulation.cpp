@@ -211,16 +211,33 @@ SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed,
         speckled[b] = (mask[b] & pixel_flag::kNoData) ? kNaN : mean[b];
       if (fading) fading->apply_line(speckled, line);
     }
-    greytone_line(map, speckled, mask, pixel_flag::kNoData, b_count, pic.slant_grey.data() + at);
+    // The line's bins from its first to its last number: outside them every
+    // pixel is NaN, whose greytone is the no-data one whatever the mask, and
+    // so are the ground pixels whose two bins lie outside (an oblique track's
+    // lines are about half no data at their ends). Steps below skip them:
+    // the same bytes.
+    std::size_t first = 0, end = b_count;
+    while (first < end && std::isnan(speckled[first])) ++first;
+    while (end > first && std::isnan(speckled[end - 1])) --end;
+    std::uint8_t* slant_grey = pic.slant_grey.data() + at;
+    std::fill(slant_grey, slant_grey + first, std::uint8_t{0});
+    greytone_line(map, speckled + first, mask + first, pixel_flag::kNoData, end - first,
+                  slant_grey + first);
+    std::fill(slant_grey + end, slant_grey + b_count, std::uint8_t{0});
     // Ground range: the speckled power resampled, the mask's nearest bin,
     // then the same greytone map.
     const std::size_t g_at = static_cast<std::size_t>(line) * cols;
     float* ground_power = pic.ground_power_w.data() + g_at;
     std::uint8_t* ground_mask = pic.ground_mask.data() + g_at;
-    ground.resample_line(speckled, ground_power);
+    std::uint8_t* ground_grey = pic.ground_grey.data() + g_at;
+    const GroundRangeResampler::Columns run =
+        ground.columns_within(static_cast<int>(first), static_cast<int>(end));
+    ground.resample_line(speckled, ground_power, run);
     ground.nearest_line(mask, ground_mask, pixel_flag::kNoData);
-    greytone_line(map, ground_power, ground_mask, pixel_flag::kNoData, cols,
-                  pic.ground_grey.data() + g_at);
+    std::fill(ground_grey, ground_grey + run.begin, std::uint8_t{0});
+    greytone_line(map, ground_power + run.begin, ground_mask + run.begin, pixel_flag::kNoData,
+                  run.end - run.begin, ground_grey + run.begin);
+    std::fill(ground_grey + run.end, ground_grey + cols, std::uint8_t{0});
   }
   return pic;
 }

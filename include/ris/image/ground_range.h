@@ -12,6 +12,7 @@
 //   std::vector<float> ground = ris::to_ground_range(img.mean_power_w, img.lines, img.range, grid);
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -45,6 +46,20 @@ class GroundRangeResampler {
   // slant: one line of bins.count floats; out: columns() floats (NaN beyond
   // the swath; NaN bins stay NaN).
   void resample_line(const float* slant, float* out) const;
+  // A run of columns [begin, end).
+  struct Columns {
+    std::size_t begin = 0, end = 0;
+  };
+  // The columns whose two bins both lie in [first_bin, end_bin): one run,
+  // since the bins grow with the column. When a line's bins outside that
+  // range are NaN, these are the only columns resample_line can give a
+  // number (a + f (b - a) is NaN when a or b is).
+  Columns columns_within(int first_bin, int end_bin) const;
+  // resample_line with the columns outside `cols` (a run columns_within
+  // gave) set to NaN without reading the line: the same bytes as
+  // resample_line when the line's bins outside the range are NaN. Used by the
+  // render to skip an oblique track's no-data ends.
+  void resample_line(const float* slant, float* out, Columns cols) const;
   // The same for bytes, nearest bin; `fill` beyond the swath.
   void nearest_line(const std::uint8_t* slant, std::uint8_t* out, std::uint8_t fill) const;
 
@@ -57,6 +72,7 @@ class GroundRangeResampler {
   std::vector<std::uint8_t> inside_;
   // The runs of columns inside the swath and with a nearest bin.
   std::size_t inside_begin_ = 0, inside_end_ = 0, nearest_begin_ = 0, nearest_end_ = 0;
+  int bins_ = 0;  // a line's bins (the vector kernels' loads stay inside it)
 };
 
 // Resamples a lines x bins float raster (power) to lines x grid.count; NaN
