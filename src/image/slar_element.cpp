@@ -46,14 +46,9 @@ LineElementScratch::LineElementScratch(int samples, int bins_)
       first(static_cast<std::size_t>(samples)),
       centre(first.size()),
       code(first.size()),
-      category(first.size()),
       frac_next(first.size()),
-      range(first.size()),
-      incidence(first.size()),
-      local_incidence(first.size()),
+      ratio(first.size()),
       area(first.size()),
-      sigma0(first.size()),
-      g2(first.size()),
       power(first.size()),
       lo(2 * first.size()),
       hi(2 * first.size()),
@@ -104,15 +99,53 @@ inline F8 beyond(F8 x0, F8 x1, F8 t) {
   return w > zero ? f : point;
 }
 
+// Pass 1's table lookups on eight elements, the same operations as
+// Sigma0Lut::interpolate (so the same values) with the tables as (value,
+// difference) pairs of floats (SlarElementContext): one 8-byte load per
+// element where GCC's vectorised scalar loop emulated two gathers. The
+// gain's lookup is the same on its own table (offset 0).
+template <int kSteps>
+__attribute__((always_inline)) inline F8 pair_block(const float* __restrict pairs, I8 offset, F8 x,
+                                                    float inv_step) {
+  F8 pos = x * inv_step;
+  pos = pos < 0.0f ? splat(0.0f) : pos;
+  pos = pos > static_cast<float>(kSteps) ? splat(static_cast<float>(kSteps)) : pos;
+  I8 i = __builtin_convertvector(pos, I8);
+  i = i < kSteps - 1 ? i : splat(kSteps - 1);
+  const F8 f = pos - __builtin_convertvector(i, F8);
+  const I8 k = offset + i;
+  // A pair of floats is 8 bytes: loaded as one double each.
+  using D4 = double __attribute__((vector_size(32)));
+  D4 a, b;
+  for (int l = 0; l < 4; ++l) {
+    a[l] = load<double>(pairs + 2 * k[l]);
+    b[l] = load<double>(pairs + 2 * k[l + 4]);
+  }
+  const F8 fa = F8(a), fb = F8(b);
+  const F8 t = __builtin_shuffle(fa, fb, I8{0, 2, 4, 6, 8, 10, 12, 14});
+  const F8 d = __builtin_shuffle(fa, fb, I8{1, 3, 5, 7, 9, 11, 13, 15});
+  return t + f * d;
+}
+
+constexpr float kGainInvStep = static_cast<float>(TwoWayGainTable::kInvStepRad);
+
 // Pass 1's inputs and outputs, at element j (one block of kLanes elements).
 struct BinsPassIo {
   const std::uint8_t* flags;
   const float *range, *near_end, *far_end, *incidence, *local_incidence, *area;
   const std::uint16_t* category;
   std::int32_t *first, *centre, *code;
-  float* frac_next;
-  float *range_out, *incidence_out, *local_out, *area_out;
-  std::int32_t* category_out;
+  float *frac_next, *ratio_out, *area_out;
+};
+
+// Pass 1's tables for the power (SlarElementContext); no lookups when
+// nothing is tabulated (then nothing is visible).
+struct PowerTables {
+  bool tabulated, uniform;
+  float g2_uniform;
+  const float *gain2_pairs, *sigma0_pairs;
+  const std::int32_t* curve_offset;
+  std::int32_t any_category;
 };
 
 // Pass 1, branch-free: each element's bins. An element whose slant span lies
@@ -121,8 +154,10 @@ struct BinsPassIo {
 // the centre, half from the centre to the far end, as spread() would) and
 // its touch bits; any other element that touches the swath is marked for
 // spread(). Also the centre's bin for the counts, and the power pass's
-// inputs with neutral values where the element is not visible (range 1,
-// area 0, a tabulated category, angles 0), so that pass needs no conditions.
+// element_power_ratio (the table lookups and the float arithmetic, in the
+// same pass: no per-element arrays between them) with neutral inputs where
+// the element is not visible (range 1, area 0, a tabulated category, angles
+// 0: ratio 0), and the area (0 where not visible).
 // Per-lane tallies of pass 1 (LineElementTally); `valid` masks the padding.
 struct BinsTally {
   I8 in_swath{}, nodata{}, shadow{}, back_facing{}, layover{}, general{};
@@ -132,7 +167,7 @@ struct BinsTally {
 
 __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std::size_t j,
                                                       float near_m, float inv_dr, int bins,
-                                                      std::int32_t any_category, I8 valid,
+                                                      const PowerTables& pt, I8 valid,
                                                       BinsTally& t) {
   const F8 nb = splat(static_cast<float>(bins)), zero = splat(0.0f);
   const I8 f = vec8::widen_u8(load<U8x8>(io.flags + j));
@@ -168,48 +203,57 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
   const F8 edge = __builtin_convertvector(b0 + 1, F8);
   const F8 frac = 0.5f * (beyond(xa, pos, edge) + beyond(pos, xb, edge));
   store(io.frac_next + j, fast ? frac : zero);
-  store(io.range_out + j, vis ? r : splat(1.0f));
-  store(io.incidence_out + j, vis ? load<F8>(io.incidence + j) : zero);
-  store(io.local_out + j, vis ? load<F8>(io.local_incidence + j) : zero);
-  store(io.area_out + j, vis ? load<F8>(io.area + j) : zero);
-  const I8 cat = __builtin_convertvector(load<U16x8>(io.category + j), I8);
-  store(io.category_out + j, vis ? cat : splat(any_category));
+  const F8 area = vis ? load<F8>(io.area + j) : zero;
+  store(io.area_out + j, area);
+  F8 ratio = zero;
+  if (pt.tabulated) {
+    const I8 cat = __builtin_convertvector(load<U16x8>(io.category + j), I8);
+    const I8 c = vis ? cat : splat(pt.any_category);
+    I8 offset;
+    for (int l = 0; l < kLanes; ++l) offset[l] = pt.curve_offset[c[l]];
+    const F8 sigma0 = pair_block<Sigma0Lut::kSteps>(pt.sigma0_pairs, offset,
+                                                    vis ? load<F8>(io.local_incidence + j) : zero,
+                                                    Sigma0Lut::kInvStep);
+    const F8 g2 = pt.uniform ? splat(pt.g2_uniform)
+                             : pair_block<TwoWayGainTable::kSteps>(
+                                   pt.gain2_pairs, splat(0),
+                                   vis ? load<F8>(io.incidence + j) : zero, kGainInvStep);
+    ratio = element_power_ratio(g2, sigma0, area, vis ? r : splat(1.0f));
+  }
+  store(io.ratio_out + j, ratio);
 }
 
 // Pass 1 over the line; the last partial block through a padded copy (its
 // padding: no-data elements).
-RIS_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
-                                 std::int32_t any_category, const BinsPassIo& io,
-                                 LineElementTally& tally) {
+RIS_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins, const PowerTables& pt,
+                                 const BinsPassIo& io, LineElementTally& tally) {
   BinsTally t;
   const std::size_t full = static_cast<std::size_t>(n / kLanes) * kLanes;
   for (std::size_t j = 0; j < full; j += kLanes) {
-    bins_block(io, j, near_m, inv_dr, bins, any_category, splat(-1), t);
+    bins_block(io, j, near_m, inv_dr, bins, pt, splat(-1), t);
   }
   const std::size_t rest = static_cast<std::size_t>(n) - full;
   if (rest > 0) {
     std::uint8_t flags[kLanes];
     float in[6][kLanes] = {};
     std::uint16_t category[kLanes] = {};
-    std::int32_t out_i[4][kLanes];
-    float out_f[5][kLanes];
+    std::int32_t out_i[3][kLanes];
+    float out_f[3][kLanes];
     std::fill(flags, flags + kLanes, sample_flag::kNoData);
     std::copy_n(io.flags + full, rest, flags);
     const float* const src[6] = {io.range,     io.near_end,        io.far_end,
                                  io.incidence, io.local_incidence, io.area};
     for (int k = 0; k < 6; ++k) std::copy_n(src[k] + full, rest, in[k]);
     std::copy_n(io.category + full, rest, category);
-    const BinsPassIo pad{flags,    in[0],    in[1],    in[2],    in[3],    in[4],
-                         in[5],    category, out_i[0], out_i[1], out_i[2], out_f[0],
-                         out_f[1], out_f[2], out_f[3], out_f[4], out_i[3]};
+    const BinsPassIo pad{flags,    in[0],    in[1],    in[2],    in[3],    in[4],    in[5],
+                         category, out_i[0], out_i[1], out_i[2], out_f[0], out_f[1], out_f[2]};
     I8 valid{};
     for (std::size_t l = 0; l < rest; ++l) valid[l] = -1;
-    bins_block(pad, 0, near_m, inv_dr, bins, any_category, valid, t);
-    std::int32_t* const dst_i[4] = {io.first, io.centre, io.code, io.category_out};
-    float* const dst_f[5] = {io.frac_next, io.range_out, io.incidence_out, io.local_out,
-                             io.area_out};
-    for (int k = 0; k < 4; ++k) std::copy_n(out_i[k], rest, dst_i[k] + full);
-    for (int k = 0; k < 5; ++k) std::copy_n(out_f[k], rest, dst_f[k] + full);
+    bins_block(pad, 0, near_m, inv_dr, bins, pt, valid, t);
+    std::int32_t* const dst_i[3] = {io.first, io.centre, io.code};
+    float* const dst_f[3] = {io.frac_next, io.ratio_out, io.area_out};
+    for (int k = 0; k < 3; ++k) std::copy_n(out_i[k], rest, dst_i[k] + full);
+    for (int k = 0; k < 3; ++k) std::copy_n(out_f[k], rest, dst_f[k] + full);
   }
   for (int l = 0; l < kLanes; ++l) {
     tally.in_swath += t.in_swath[l];
@@ -223,89 +267,15 @@ RIS_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
   }
 }
 
-// Pass 2's table lookups on eight elements, the same operations as
-// Sigma0Lut::interpolate (so the same values) with the tables as (value,
-// difference) pairs of floats (SlarElementContext): one 8-byte load per
-// element where GCC's vectorised scalar loop emulated two gathers. The
-// gain's lookup is the same on its own table (offset 0); pair_lookup is
-// one lane of it, for the elements after the last block (the same bits).
-template <int kSteps>
-__attribute__((always_inline)) inline F8 pair_block(const float* __restrict pairs, I8 offset, F8 x,
-                                                    float inv_step) {
-  F8 pos = x * inv_step;
-  pos = pos < 0.0f ? splat(0.0f) : pos;
-  pos = pos > static_cast<float>(kSteps) ? splat(static_cast<float>(kSteps)) : pos;
-  I8 i = __builtin_convertvector(pos, I8);
-  i = i < kSteps - 1 ? i : splat(kSteps - 1);
-  const F8 f = pos - __builtin_convertvector(i, F8);
-  const I8 k = offset + i;
-  // A pair of floats is 8 bytes: loaded as one double each.
-  using D4 = double __attribute__((vector_size(32)));
-  D4 a, b;
-  for (int l = 0; l < 4; ++l) {
-    a[l] = load<double>(pairs + 2 * k[l]);
-    b[l] = load<double>(pairs + 2 * k[l + 4]);
-  }
-  const F8 fa = F8(a), fb = F8(b);
-  const F8 t = __builtin_shuffle(fa, fb, I8{0, 2, 4, 6, 8, 10, 12, 14});
-  const F8 d = __builtin_shuffle(fa, fb, I8{1, 3, 5, 7, 9, 11, 13, 15});
-  return t + f * d;
-}
-
-template <int kSteps>
-inline float pair_lookup(const float* pairs, float x, float inv_step) {
-  float pos = x * inv_step;
-  pos = pos < 0.0f ? 0.0f : pos;
-  pos = pos > static_cast<float>(kSteps) ? static_cast<float>(kSteps) : pos;
-  int i = static_cast<int>(pos);
-  i = i < kSteps - 1 ? i : kSteps - 1;
-  const float f = pos - static_cast<float>(i);
-  const auto k = 2 * static_cast<std::size_t>(i);
-  return pairs[k] + f * pairs[k + 1];
-}
-
-constexpr float kGainInvStep = static_cast<float>(TwoWayGainTable::kInvStepRad);
-
-// Pass 2: each element's power P_i (0 where not visible: its area is 0) and
-// its split between b0 and b0 + 1. The table lookups first (eight elements
-// at a time, the rest one by one), then the arithmetic in a loop of its
-// own, which vectorises (element_power_ratio in single precision, then
-// P_i and its split in double).
-RIS_VECTOR_CLONES void power_pass(
-    int n, double power_scale, bool uniform, float g2_uniform, const float* __restrict gain2_pairs,
-    const float* __restrict curves, const float* __restrict sigma0_pairs,
-    const std::int32_t* __restrict curve_offset, const float* __restrict range,
-    const float* __restrict incidence, const float* __restrict local_incidence,
-    const float* __restrict area, const std::int32_t* __restrict category,
-    const float* __restrict frac_next, float* __restrict sigma0, float* __restrict g2,
-    double* __restrict power, double* __restrict lo, double* __restrict hi) {
-  const int full = n / kLanes * kLanes;
-  for (int j = 0; j < full; j += kLanes) {
-    const auto jj = static_cast<std::size_t>(j);
-    I8 offset;
-    for (int l = 0; l < kLanes; ++l)
-      offset[l] = curve_offset[category[jj + static_cast<std::size_t>(l)]];
-    store(sigma0 + jj,
-          pair_block<Sigma0Lut::kSteps>(sigma0_pairs, offset, load<F8>(local_incidence + jj),
-                                        Sigma0Lut::kInvStep));
-  }
-  for (int j = full; j < n; ++j) {
-    sigma0[j] = Sigma0Lut::interpolate(curves, curve_offset[category[j]], local_incidence[j]);
-  }
-  if (uniform) {
-    for (int j = 0; j < n; ++j) g2[j] = g2_uniform;
-  } else {
-    for (int j = 0; j < full; j += kLanes) {
-      const auto jj = static_cast<std::size_t>(j);
-      store(g2 + jj, pair_block<TwoWayGainTable::kSteps>(gain2_pairs, splat(0),
-                                                         load<F8>(incidence + jj), kGainInvStep));
-    }
-    for (int j = full; j < n; ++j) {
-      g2[j] = pair_lookup<TwoWayGainTable::kSteps>(gain2_pairs, incidence[j], kGainInvStep);
-    }
-  }
+// Pass 2: each element's power P_i = ratio k_radar 2^-40 (0 where not
+// visible: its ratio is 0) and its (power, area) split between b0 and
+// b0 + 1, in double (a loop GCC vectorises).
+RIS_VECTOR_CLONES void power_pass(int n, double power_scale, const float* __restrict ratio,
+                                  const float* __restrict area, const float* __restrict frac_next,
+                                  double* __restrict power, double* __restrict lo,
+                                  double* __restrict hi) {
   for (int j = 0; j < n; ++j) {
-    const double p = double(element_power_ratio(g2[j], sigma0[j], area[j], range[j])) * power_scale;
+    const double p = double(ratio[j]) * power_scale;
     power[j] = p;
     const double frac = frac_next[j];
     const double ph = p * frac, ah = double(area[j]) * frac;
@@ -416,12 +386,9 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   // Passes 1-3 a chunk of elements at a time, so that what one pass writes
   // is still in the L1 cache when the next reads it (a whole line's
   // per-element arrays are ~200 KB).
-  const bool tabulated = !lut.empty();
-  if (!tabulated) {
-    // Nothing tabulated: nothing is visible (a visible element's category
-    // is checked to be tabulated).
-    for (auto* v : {&s.power, &s.lo, &s.hi}) std::fill(v->begin(), v->end(), 0.0);
-  }
+  const PowerTables pt{!lut.empty(),         c.gain2->uniform(),    c.g2_uniform,
+                       c.gain2_pairs.data(), c.sigma0_pairs.data(), lut.offsets(),
+                       lut.any_category()};
   constexpr int kChunk = 256;
   for (int j0 = 0; j0 < n; j0 += kChunk) {
     const int m = std::min(kChunk, n - j0);
@@ -438,20 +405,11 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
                         s.centre.data() + o,
                         s.code.data() + o,
                         s.frac_next.data() + o,
-                        s.range.data() + o,
-                        s.incidence.data() + o,
-                        s.local_incidence.data() + o,
-                        s.area.data() + o,
-                        s.category.data() + o};
-    bins_pass(m, static_cast<float>(c.near_m), static_cast<float>(c.inv_dr), bins,
-              lut.any_category(), io, t);
-    if (tabulated) {
-      power_pass(m, c.power_scale, c.gain2->uniform(), c.g2_uniform, c.gain2_pairs.data(),
-                 lut.data(), c.sigma0_pairs.data(), lut.offsets(), s.range.data() + o,
-                 s.incidence.data() + o, s.local_incidence.data() + o, s.area.data() + o,
-                 s.category.data() + o, s.frac_next.data() + o, s.sigma0.data() + o,
-                 s.g2.data() + o, s.power.data() + o, s.lo.data() + 2 * o, s.hi.data() + 2 * o);
-    }
+                        s.ratio.data() + o,
+                        s.area.data() + o};
+    bins_pass(m, static_cast<float>(c.near_m), static_cast<float>(c.inv_dr), bins, pt, io, t);
+    power_pass(m, c.power_scale, s.ratio.data() + o, s.area.data() + o, s.frac_next.data() + o,
+               s.power.data() + o, s.lo.data() + 2 * o, s.hi.data() + 2 * o);
     scatter_pass(j0, m, e.first_index, s);
   }
 

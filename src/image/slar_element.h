@@ -110,9 +110,16 @@ inline double radar_power_w(double k_radar, double gain2, float sigma0, float ar
 // 1024 m, R^4 stays within ~1e-12 (R = 1 m) to 1e16 (R = 10^7 m) and the
 // ratio well inside float's range. The order of the operations is part of
 // the definition (vectorised and scalar lanes give the same bits).
-inline float element_power_ratio(float gain2, float sigma0, float area_m2, float slant_range_m) {
-  const float r = slant_range_m * 0x1p-10f;
-  const float r2 = r * r;
+// F: float, or a GCC vector of floats (the power pass's eight lanes; as in
+// util/vec8.h, the ABI note for vectors passed by value (-Wpsabi) is moot for
+// an always-inlined function, and reported at the end of the file, hence
+// not popped).
+#pragma GCC diagnostic ignored "-Wpsabi"
+template <typename F>
+__attribute__((always_inline)) inline F element_power_ratio(F gain2, F sigma0, F area_m2,
+                                                            F slant_range_m) {
+  const F r = slant_range_m * 0x1p-10f;
+  const F r2 = r * r;
   return gain2 * sigma0 * area_m2 / (r2 * r2);
 }
 inline constexpr double kElementPowerScale = 0x1p-40;
@@ -165,10 +172,10 @@ struct LineElementScratch {
   // Per element: the first bin touched (`bins`, a spare, for an element the
   // scatter pass skips), the centre's bin (`bins` when outside), the
   // fraction of the power in the next bin, the touch bits and counts
-  // (form_line_profile's kCode*), the power pass's inputs (neutral values
-  // where not visible) and outputs; the elements left to spread().
-  std::vector<std::int32_t> first, centre, code, category;
-  std::vector<float> frac_next, range, incidence, local_incidence, area, sigma0, g2;
+  // (form_line_profile's kCode*), element_power_ratio and the area (0 where
+  // not visible), the power P_i; the elements left to spread().
+  std::vector<std::int32_t> first, centre, code;
+  std::vector<float> frac_next, ratio, area;
   std::vector<double> power;
   // Per element, what it adds to its first bin and to the next: (power,
   // area) pairs, interleaved as the profile copies' (2 values an element).
