@@ -101,6 +101,13 @@ class GreytoneMap {
   // bucket_[b]: the greytone of the smallest positive float whose top 16 bits
   // are b (b up to +inf's 0x7f80).
   std::vector<std::uint8_t> bucket_;
+  // bucket_step_[b] (the AVX2 kernel's one gather when max_steps_ == 1):
+  // bucket_[b] << 17 | the low 17 bits of (the bucket's threshold's bits -
+  // (b << 16)), 0x10000 when no threshold lies in the bucket after its first
+  // float. A power in bucket b then has greytone bucket_[b] + 1 exactly when
+  // its bits reach (b << 16) + those 17 bits (positive floats order as
+  // their bits).
+  std::vector<std::uint32_t> bucket_step_;
 };
 
 // Median of the valid pixels of `power_w` (see above); NaN when none is valid.
