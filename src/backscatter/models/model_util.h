@@ -61,5 +61,9 @@ struct Fresnel {
   double gv;
 };
 Fresnel fresnel_reflectivity(std::complex<double> eps, double incidence_rad);
+// The same from the incidence's cosine and sine, for a caller that needs the
+// cosine too (one sincos per angle in a LUT build, not a sincos and a cos).
+Fresnel fresnel_reflectivity_cs(std::complex<double> eps, double cos_incidence,
+                                double sin_incidence);
 
 }  // namespace ris::detail

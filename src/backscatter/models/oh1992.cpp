@@ -90,10 +90,12 @@ Oh1992BandTerms oh1992_band_terms(std::complex<double> eps, double ks, Polarisat
 }
 
 double oh1992_sigma0_at(const Oh1992BandTerms& b, double theta) {
-  const Fresnel f = fresnel_reflectivity(b.eps, theta);
+  // One sincos for the Fresnel terms and cos^3 (glibc's sincos gives
+  // cos's bits).
+  const double c = std::cos(theta);
+  const Fresnel f = fresnel_reflectivity_cs(b.eps, c, std::sin(theta));
   const double t = 1.0 - std::pow(2.0 * theta / kPi, b.g0_exponent) * b.e;
   const double p = t * t;
-  const double c = std::cos(theta);
   const double vv = b.g * c * c * c * (f.gv + f.gh) / std::sqrt(p);
   switch (b.pol) {
     case Polarisation::VV:
