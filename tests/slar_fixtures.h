@@ -12,6 +12,7 @@
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/backscatter/sigma0_source.h"
+#include "ris/image/slar_image.h"
 #include "ris/perf/bench_setup.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/track.h"
@@ -104,6 +105,30 @@ Scene track_frame_scene(const Track& t, double s_max_m, double u0_m, double u1_m
     }
   }
   return scene;
+}
+
+// How two images of the same size agree, over their lines but the first and
+// last margin_lines: the ratio of total powers (b / a), the sum of
+// |a - b| relative to a's total (the pixel-wise error), and the fraction
+// of pixels with the same mask.
+struct ImageAgreement {
+  double relative_total = 0.0, pixel_error = 0.0, same_mask = 0.0;
+};
+
+inline ImageAgreement image_agreement(const SlarImage& a, const SlarImage& b, int margin_lines) {
+  double sum_a = 0, sum_b = 0, abs_diff = 0;
+  int mask_same = 0, n = 0;
+  for (int line = margin_lines; line < a.lines - margin_lines; ++line) {
+    for (int bin = 0; bin < a.bins; ++bin) {
+      const std::size_t i = a.index(line, bin);
+      sum_a += a.mean_power_w[i];
+      sum_b += b.mean_power_w[i];
+      abs_diff += std::abs(double(a.mean_power_w[i]) - double(b.mean_power_w[i]));
+      mask_same += a.mask[i] == b.mask[i] ? 1 : 0;
+      ++n;
+    }
+  }
+  return {sum_b / sum_a, abs_diff / sum_a, double(mask_same) / n};
 }
 
 // A 60 x 90 fractal scene of 10 m cells (categories 1-10) with a no-data

@@ -212,23 +212,12 @@ TEST(SlarImage, SceneAndTrackRotatedTogetherBy30DegreesGiveTheSameImage) {
   const SlarImage a = form_slar_image(g0, test::cosine_lut(s0), p, "radar.toml");
   const SlarImage b = form_slar_image(g30, test::cosine_lut(s30), p, "radar.toml");
   ASSERT_EQ(a.lines, b.lines);
-  double sum_a = 0, sum_b = 0, abs_diff = 0;
-  int mask_same = 0, n = 0;
-  for (int line = 10; line < a.lines - 10; ++line) {
-    for (int bin = 0; bin < a.bins; ++bin) {
-      const std::size_t i = a.index(line, bin);
-      sum_a += a.mean_power_w[i];
-      sum_b += b.mean_power_w[i];
-      abs_diff += std::abs(double(a.mean_power_w[i]) - double(b.mean_power_w[i]));
-      mask_same += a.mask[i] == b.mask[i] ? 1 : 0;
-      ++n;
-    }
-  }
-  EXPECT_NEAR(sum_b / sum_a, 1.0, 0.002);
-  EXPECT_LT(abs_diff / sum_a, 0.01);  // pixel-wise resampling error, relative to the total
-  EXPECT_GT(double(mask_same) / n, 0.97);
-  RecordProperty("relative_total", std::to_string(sum_b / sum_a));
-  RecordProperty("pixel_error", std::to_string(abs_diff / sum_a));
+  const test::ImageAgreement d = test::image_agreement(a, b, 10);
+  EXPECT_NEAR(d.relative_total, 1.0, 0.002);
+  EXPECT_LT(d.pixel_error, 0.01);  // pixel-wise resampling error, relative to the total
+  EXPECT_GT(d.same_mask, 0.97);
+  RecordProperty("relative_total", std::to_string(d.relative_total));
+  RecordProperty("pixel_error", std::to_string(d.pixel_error));
 }
 
 TEST(SlarImage, SwathMissingTheSceneIsAnInputError) {

@@ -83,6 +83,23 @@ RIS_VECTOR_CLONES inline void chunk_keys(const float* __restrict v, std::size_t 
   }
 }
 
+// Called by every thread of a parallel region: this thread's share of the
+// chunks of v (schedule static, no barrier at the end), each keyed and passed
+// to f(keys, n).
+template <typename Keep, typename F>
+void for_each_key_chunk(std::span<const float> v, Keep keep, F f) {
+  const std::size_t size = v.size();
+  const auto chunks = static_cast<std::int64_t>((size + kKeyChunk - 1) / kKeyChunk);
+  std::uint32_t keys[kKeyChunk];
+#pragma omp for schedule(static) nowait
+  for (std::int64_t c = 0; c < chunks; ++c) {
+    const std::size_t i0 = static_cast<std::size_t>(c) * kKeyChunk;
+    const std::size_t n = std::min(kKeyChunk, size - i0);
+    chunk_keys(v.data(), i0, n, keep, keys);
+    f(keys, n);
+  }
+}
+
 // For each chunk of keys, in parallel (schedule static over chunks; each
 // thread counts into its own table, the tables summed after, so the result
 // does not depend on the thread count): count(keys, n, table) adds a chunk
@@ -93,19 +110,11 @@ template <typename Counter, typename Keep, typename Count>
 std::vector<std::uint64_t> count_chunks_as(std::span<const float> v, Keep keep, std::size_t buckets,
                                            std::size_t copies, Count count) {
   std::vector<std::uint64_t> total(buckets, 0);
-  const std::size_t size = v.size();
-  const auto chunks = static_cast<std::int64_t>((size + kKeyChunk - 1) / kKeyChunk);
 #pragma omp parallel
   {
     std::vector<Counter> local(copies * buckets, 0);
-    std::uint32_t keys[kKeyChunk];
-#pragma omp for schedule(static) nowait
-    for (std::int64_t c = 0; c < chunks; ++c) {
-      const std::size_t i0 = static_cast<std::size_t>(c) * kKeyChunk;
-      const std::size_t n = std::min(kKeyChunk, size - i0);
-      chunk_keys(v.data(), i0, n, keep, keys);
-      count(keys, n, local.data());
-    }
+    for_each_key_chunk(
+        v, keep, [&](const std::uint32_t* keys, std::size_t n) { count(keys, n, local.data()); });
     for (std::size_t k = 1; k < copies; ++k)
       for (std::size_t b = 0; b < buckets; ++b) local[b] += local[k * buckets + b];
 #pragma omp critical(ris_float_select)
@@ -350,21 +359,15 @@ SampledMedian median_pair_sampled(std::span<const float> v, Keep keep, std::size
   // merged after: the keys inside are the same set whatever the threads).
   BracketCount total;
   const std::size_t size = v.size();
-  const auto chunks = static_cast<std::int64_t>((size + kKeyChunk - 1) / kKeyChunk);
 #pragma omp parallel
   {
     BracketCount local;
     local.inside.reserve(static_cast<std::size_t>(4.0 * static_cast<double>(size) /
                                                   std::sqrt(static_cast<double>(s))) /
                          static_cast<std::size_t>(omp_get_num_threads()));
-    std::uint32_t keys[kKeyChunk];
-#pragma omp for schedule(static) nowait
-    for (std::int64_t c = 0; c < chunks; ++c) {
-      const std::size_t i0 = static_cast<std::size_t>(c) * kKeyChunk;
-      const std::size_t n = std::min(kKeyChunk, size - i0);
-      chunk_keys(v.data(), i0, n, keep, keys);
+    for_each_key_chunk(v, keep, [&](const std::uint32_t* keys, std::size_t n) {
       count_bracket_chunk(keys, n, key_lo, key_hi, local);
-    }
+    });
 #pragma omp critical(ris_float_select)
     {
       total.kept += local.kept;
