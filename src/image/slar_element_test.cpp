@@ -76,6 +76,23 @@ struct RandomLine {
   }
 };
 
+// form_line_profile's outputs for one line: touch bits and counts zeroed,
+// power and area filled with `fill` (form_line_profile overwrites them).
+struct ProfileOut {
+  std::vector<std::uint8_t> touch;
+  std::vector<std::uint16_t> mapped, visible;
+  std::vector<double> power, area;
+  explicit ProfileOut(int bins, double fill = 0.0)
+      : touch(static_cast<std::size_t>(bins), 0),
+        mapped(touch.size(), 0),
+        visible(touch.size(), 0),
+        power(touch.size(), fill),
+        area(touch.size(), fill) {}
+  LineProfileRow row() {
+    return {touch.data(), mapped.data(), visible.data(), power.data(), area.data()};
+  }
+};
+
 // The reference: each element on its own, in order, in double precision,
 // both halves through spread() (the definition in ris/image/slar_image.h).
 struct Reference {
@@ -177,14 +194,11 @@ TEST(SlarElement, LineProfileMatchesElementByElementReference) {
   for (std::uint32_t seed = 1; seed <= 20; ++seed) {  // scratch reused line after line
     const RandomLine line(n, seed);
     const Reference ref(ctx, line);
-    std::vector<std::uint8_t> touch(bins, 0);
-    std::vector<std::uint16_t> mapped(bins, 0), visible(bins, 0);
-    std::vector<double> power(bins, -1.0), area(bins, -1.0);
+    ProfileOut out(bins, -1.0);
     std::vector<float> element_power(static_cast<std::size_t>(n), -1.0f);
     const LineElementTally t =
-        form_line_profile(ctx, line.elements(), scratch,
-                          {touch.data(), mapped.data(), visible.data(), power.data(), area.data()},
-                          element_power.data());
+        form_line_profile(ctx, line.elements(), scratch, out.row(), element_power.data());
+    const auto& [touch, mapped, visible, power, area] = out;
     general += scratch.n_general;
     EXPECT_EQ(t.in_swath, ref.tally.in_swath);
     EXPECT_EQ(t.nodata, ref.tally.nodata);
@@ -234,12 +248,8 @@ TEST(SlarElement, SpanOfALineGivesTheWholeLinesBytes) {
     for (int j = 0; j < whole.n; ++j) {
       if (j < begin || j >= end) whole.flags[static_cast<std::size_t>(j)] |= sample_flag::kUnseen;
     }
-    std::vector<std::uint8_t> touch_w(bins, 0), touch_s(bins, 0);
-    std::vector<std::uint16_t> mapped_w(bins, 0), mapped_s(bins, 0), vis_w(bins, 0), vis_s(bins, 0);
-    std::vector<double> power_w(bins), power_s(bins), area_w(bins), area_s(bins);
-    const LineElementTally tw = form_line_profile(
-        ctx, whole.elements(), scratch,
-        {touch_w.data(), mapped_w.data(), vis_w.data(), power_w.data(), area_w.data()}, nullptr);
+    ProfileOut w(bins), sp(bins);
+    const LineElementTally tw = form_line_profile(ctx, whole.elements(), scratch, w.row(), nullptr);
     LineElements span = line.elements();
     const auto shift = static_cast<std::size_t>(begin);
     span.samples = end - begin;
@@ -252,15 +262,13 @@ TEST(SlarElement, SpanOfALineGivesTheWholeLinesBytes) {
     span.area_m2 += shift;
     span.category += shift;
     span.first_index = begin;
-    const LineElementTally ts = form_line_profile(
-        ctx, span, scratch,
-        {touch_s.data(), mapped_s.data(), vis_s.data(), power_s.data(), area_s.data()}, nullptr);
+    const LineElementTally ts = form_line_profile(ctx, span, scratch, sp.row(), nullptr);
     EXPECT_EQ(ts.in_swath, tw.in_swath);
-    EXPECT_EQ(power_s, power_w) << "begin " << begin;
-    EXPECT_EQ(area_s, area_w) << "begin " << begin;
-    EXPECT_EQ(touch_s, touch_w);
-    EXPECT_EQ(mapped_s, mapped_w);
-    EXPECT_EQ(vis_s, vis_w);
+    EXPECT_EQ(sp.power, w.power) << "begin " << begin;
+    EXPECT_EQ(sp.area, w.area) << "begin " << begin;
+    EXPECT_EQ(sp.touch, w.touch);
+    EXPECT_EQ(sp.mapped, w.mapped);
+    EXPECT_EQ(sp.visible, w.visible);
   }
 }
 
@@ -272,19 +280,13 @@ TEST(SlarElement, UniformGainIgnoresTheLookAngle) {
   const SlarElementContext& ctx = setup.ctx;
   RandomLine line(100, 3);
   LineElementScratch scratch(line.n, bins);
-  std::vector<std::uint8_t> touch(bins, 0);
-  std::vector<std::uint16_t> mapped(bins, 0), visible(bins, 0);
-  std::vector<double> power(bins), area(bins);
-  form_line_profile(ctx, line.elements(), scratch,
-                    {touch.data(), mapped.data(), visible.data(), power.data(), area.data()},
-                    nullptr);
-  const std::vector<double> expected = power;
+  ProfileOut out(bins);
+  form_line_profile(ctx, line.elements(), scratch, out.row(), nullptr);
+  const std::vector<double> expected = out.power;
   std::fill(line.incidence.begin(), line.incidence.end(), std::numeric_limits<float>::quiet_NaN());
-  form_line_profile(ctx, line.elements(), scratch,
-                    {touch.data(), mapped.data(), visible.data(), power.data(), area.data()},
-                    nullptr);
-  EXPECT_EQ(power, expected);
-  EXPECT_GT(*std::max_element(power.begin(), power.end()), 0.0);
+  form_line_profile(ctx, line.elements(), scratch, out.row(), nullptr);
+  EXPECT_EQ(out.power, expected);
+  EXPECT_GT(*std::max_element(out.power.begin(), out.power.end()), 0.0);
 }
 
 }  // namespace
