@@ -179,6 +179,15 @@ struct ProfileSetup {
   }
 };
 
+// One random line of n elements under a ProfileSetup, with its scratch.
+struct LineCase {
+  ProfileSetup setup;
+  RandomLine line;
+  LineElementScratch scratch;
+  LineCase(bool pattern, int n, std::uint32_t seed)
+      : setup(pattern), line(n, seed), scratch(n, ProfileSetup::kBins) {}
+};
+
 // Bin coordinates are the ranges themselves (near 0, 1 m bins), so single
 // and double precision put every element in the same bins: touch bits and
 // counts must agree exactly, powers to float rounding.
@@ -237,11 +246,11 @@ TEST(SlarElement, LineProfileMatchesElementByElementReference) {
 // as the whole line with the samples outside it unseen (the stage path):
 // the same bytes.
 TEST(SlarElement, SpanOfALineGivesTheWholeLinesBytes) {
-  const ProfileSetup setup(true);
+  LineCase c(true, 203, 11);
   const int bins = ProfileSetup::kBins;
-  const SlarElementContext& ctx = setup.ctx;
-  RandomLine line(203, 11);
-  LineElementScratch scratch(line.n, bins);
+  const SlarElementContext& ctx = c.setup.ctx;
+  const RandomLine& line = c.line;
+  LineElementScratch& scratch = c.scratch;
   for (const int begin : {1, 2, 3, 6}) {
     const int end = line.n - begin;
     RandomLine whole = line;
@@ -275,16 +284,13 @@ TEST(SlarElement, SpanOfALineGivesTheWholeLinesBytes) {
 // A uniform elevation pattern reads no look angle (the fused path leaves it
 // unset): NaN there changes nothing.
 TEST(SlarElement, UniformGainIgnoresTheLookAngle) {
-  const ProfileSetup setup(false);
-  const int bins = ProfileSetup::kBins;
-  const SlarElementContext& ctx = setup.ctx;
-  RandomLine line(100, 3);
-  LineElementScratch scratch(line.n, bins);
-  ProfileOut out(bins);
-  form_line_profile(ctx, line.elements(), scratch, out.row(), nullptr);
+  LineCase c(false, 100, 3);
+  ProfileOut out(ProfileSetup::kBins);
+  form_line_profile(c.setup.ctx, c.line.elements(), c.scratch, out.row(), nullptr);
   const std::vector<double> expected = out.power;
-  std::fill(line.incidence.begin(), line.incidence.end(), std::numeric_limits<float>::quiet_NaN());
-  form_line_profile(ctx, line.elements(), scratch, out.row(), nullptr);
+  std::fill(c.line.incidence.begin(), c.line.incidence.end(),
+            std::numeric_limits<float>::quiet_NaN());
+  form_line_profile(c.setup.ctx, c.line.elements(), c.scratch, out.row(), nullptr);
   EXPECT_EQ(out.power, expected);
   EXPECT_GT(*std::max_element(out.power.begin(), out.power.end()), 0.0);
 }
