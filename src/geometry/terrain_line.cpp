@@ -3,6 +3,9 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -216,12 +219,13 @@ namespace {
 
 // Samples [begin, end) of the line into out[j - begin], a chunk of kChunk
 // samples at a time in two passes:
-//  1. where: bilinear_cells over the chunk (selects only, so GCC vectorises
-//     it), keeping each sample's first corner, nearest cell and weights;
-//  2. what: per sample, its four corner texels as 4-float vectors (height,
-//     dz/dx, dz/dy, category: one 16-byte load each, no gathers) weighted by
-//     the broadcast weight, the same float operations in the same corner
-//     order as bilinear_terrain_sample lane by lane.
+//  1. where (chunk_cells): bilinear_cells over the chunk (selects only, so
+//     GCC vectorises it), keeping each sample's first corner, nearest cell
+//     and weights;
+//  2. what (weigh_texels): per sample, its four corner texels as 4-float
+//     vectors (height, dz/dx, dz/dy, category: one 16-byte load each, no
+//     gathers) weighted by the broadcast weight, the same float operations
+//     in the same corner order as bilinear_terrain_sample lane by lane.
 // Pass 2 replaced 13 AVX2 gathers a sample (13 lanes each of a different
 // texel load, ~8 cycles a gather on this EPYC) by 4 vector loads.
 constexpr int kChunk = 128;
@@ -235,81 +239,273 @@ inline Float4 load_texel(const float* p) {
   return v;
 }
 
+// Pass 1's output for one chunk: texel k of a sample's first corner is
+// tex[first + k], its nearest cell's category tex[nearest].
 template <typename Index>
-[[gnu::always_inline]] inline void sample_span(const float* __restrict tex, int rows, int cols,
-                                               GridLine line, int begin, int end,
-                                               float* __restrict height, float* __restrict dz_dx,
-                                               float* __restrict dz_dy,
-                                               std::uint16_t* __restrict category,
-                                               std::uint8_t* __restrict flags) {
-  // Texel k of cell i is tex[4 i + k]; the corners' offsets from the first
-  // are the same for every sample (bilinear_cells' steps).
-  const BilinearCells<Index> steps = bilinear_cells<Index>(rows, cols, 0.5, 0.5);
-  const Index d1 = 4 * steps.step_col, d2 = 4 * steps.step_row, d3 = d2 + d1;
-  alignas(32) Index first[kChunk], nearest[kChunk];
-  alignas(32) float w0[kChunk], w1[kChunk], w2[kChunk], w3[kChunk];
-  for (int j0 = begin; j0 < end; j0 += kChunk) {
-    const int n = std::min(kChunk, end - j0);
-    for (int k = 0; k < n; ++k) {
-      const BilinearCells<Index> b =
-          bilinear_cells<Index>(rows, cols, line.col(j0 + k), line.row(j0 + k));
-      first[k] = 4 * b.cell00;
-      nearest[k] = 4 * b.nearest + 3;
-      w0[k] = b.weight[0];
-      w1[k] = b.weight[1];
-      w2[k] = b.weight[2];
-      w3[k] = b.weight[3];
-    }
-    const int o0 = j0 - begin;
-    for (int k = 0; k < n; ++k) {
-      const float* const t = tex + first[k];
-      // Sum of weight x value over the corners with a weight above 0, in
-      // corner order (as bilinear_terrain_sample): a no-data corner's NaN
-      // makes the sample no data. The product comes before the select
-      // (0 x NaN is NaN).
-      Float4 acc = {0.0f, 0.0f, 0.0f, 0.0f};
-      const auto add = [&acc](float w, const float* p) {
-        const Float4 wv = {w, w, w, w};  // a broadcast (Float4{} + w is an add)
-        const Float4 product = wv * load_texel(p);
-        const Int4 keep = wv > Float4{};
-        acc += keep ? product : Float4{};
-      };
-      add(w0[k], t);
-      add(w1[k], t + d1);
-      add(w2[k], t + d2);
-      add(w3[k], t + d3);
-      const float h = acc[0];
-      const bool no_data = h != h;  // NaN
-      const int o = o0 + k;
-      height[o] = h;
-      dz_dx[o] = acc[1];
-      dz_dy[o] = acc[2];
-      category[o] = no_data ? std::uint16_t{0}
-                            : static_cast<std::uint16_t>(static_cast<int>(tex[nearest[k]]));
-      flags[o] = no_data ? sample_flag::kNoData : std::uint8_t{0};
-    }
+struct ChunkCells {
+  alignas(64) Index first[kChunk];
+  alignas(64) Index nearest[kChunk];
+  alignas(64) float w0[kChunk];
+  alignas(64) float w1[kChunk];
+  alignas(64) float w2[kChunk];
+  alignas(64) float w3[kChunk];
+};
+
+// Pass 1 for chunk samples [k_begin, k_end), sample j0 + k of the line.
+template <typename Index>
+[[gnu::always_inline]] inline void chunk_cells(int rows, int cols, const GridLine& line, int j0,
+                                               int k_begin, int k_end, ChunkCells<Index>& c) {
+  for (int k = k_begin; k < k_end; ++k) {
+    const BilinearCells<Index> b =
+        bilinear_cells<Index>(rows, cols, line.col(j0 + k), line.row(j0 + k));
+    c.first[k] = 4 * b.cell00;
+    c.nearest[k] = 4 * b.nearest + 3;
+    c.w0[k] = b.weight[0];
+    c.w1[k] = b.weight[1];
+    c.w2[k] = b.weight[2];
+    c.w3[k] = b.weight[3];
   }
 }
 
-// The sampler's clones: AVX-512 beside RIS_VECTOR_CLONES' AVX2 and SSE2
-// (pass 1's double-precision positions take 8 lanes instead of 4: ~1.3x the
-// samples per second on this EPYC). GCC's avx512f target enables FMA, so
-// this file is compiled with -ffp-contract=off (CMakeLists.txt): no
-// multiply-add is contracted and every clone gives the same bytes.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RIS_SAMPLER_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define RIS_SAMPLER_CLONES
-#endif
+// The corners' offsets (in floats) from the first corner, the same for every
+// sample (bilinear_cells' steps): to (r0, c1), (r1, c0), (r1, c1).
+template <typename Index>
+struct CornerSteps {
+  Index d1, d2, d3;
+};
 
-RIS_SAMPLER_CLONES void sample_span_i32(const float* __restrict tex, int rows, int cols,
-                                        GridLine line, int begin, int end, float* __restrict height,
-                                        float* __restrict dz_dx, float* __restrict dz_dy,
-                                        std::uint16_t* __restrict category,
-                                        std::uint8_t* __restrict flags) {
-  sample_span<std::int32_t>(tex, rows, cols, line, begin, end, height, dz_dx, dz_dy, category,
-                            flags);
+template <typename Index>
+CornerSteps<Index> corner_steps(int rows, int cols) {
+  const BilinearCells<Index> steps = bilinear_cells<Index>(rows, cols, 0.5, 0.5);
+  const Index d1 = 4 * steps.step_col, d2 = 4 * steps.step_row;
+  return {d1, d2, d2 + d1};
 }
+
+// Pass 2 for chunk samples [k_begin, k_end), sample k into out[o0 + k].
+template <typename Index>
+[[gnu::always_inline]] inline void weigh_texels(const float* __restrict tex,
+                                                const ChunkCells<Index>& c, CornerSteps<Index> d,
+                                                int k_begin, int k_end, int o0,
+                                                const SampledTerrain& out) {
+  float* __restrict height = out.height_m;
+  float* __restrict dz_dx = out.dz_dx;
+  float* __restrict dz_dy = out.dz_dy;
+  std::uint16_t* __restrict category = out.category;
+  std::uint8_t* __restrict flags = out.flags;
+  for (int k = k_begin; k < k_end; ++k) {
+    const float* const t = tex + c.first[k];
+    // Sum of weight x value over the corners with a weight above 0, in
+    // corner order (as bilinear_terrain_sample): a no-data corner's NaN
+    // makes the sample no data. The product comes before the select
+    // (0 x NaN is NaN).
+    Float4 acc = {0.0f, 0.0f, 0.0f, 0.0f};
+    const auto add = [&acc](float w, const float* p) {
+      const Float4 wv = {w, w, w, w};  // a broadcast (Float4{} + w is an add)
+      const Float4 product = wv * load_texel(p);
+      const Int4 keep = wv > Float4{};
+      acc += keep ? product : Float4{};
+    };
+    add(c.w0[k], t);
+    add(c.w1[k], t + d.d1);
+    add(c.w2[k], t + d.d2);
+    add(c.w3[k], t + d.d3);
+    const float h = acc[0];
+    const bool no_data = h != h;  // NaN
+    const int o = o0 + k;
+    height[o] = h;
+    dz_dx[o] = acc[1];
+    dz_dy[o] = acc[2];
+    category[o] = no_data ? std::uint16_t{0}
+                          : static_cast<std::uint16_t>(static_cast<int>(tex[c.nearest[k]]));
+    flags[o] = no_data ? sample_flag::kNoData : std::uint8_t{0};
+  }
+}
+
+template <typename Index>
+[[gnu::always_inline]] inline void sample_span(const float* __restrict tex, int rows, int cols,
+                                               const GridLine& line, int begin, int end,
+                                               const SampledTerrain& out) {
+  const CornerSteps<Index> d = corner_steps<Index>(rows, cols);
+  ChunkCells<Index> c;
+  for (int j0 = begin; j0 < end; j0 += kChunk) {
+    const int n = std::min(kChunk, end - j0);
+    chunk_cells(rows, cols, line, j0, 0, n, c);
+    weigh_texels(tex, c, d, 0, n, j0 - begin, out);
+  }
+}
+
+// The sampler's portable clones: AVX2 beside SSE2 (ris/util/vector_clones.h;
+// on a CPU with AVX-512, sample_span_avx512 runs instead).
+RIS_VECTOR_CLONES void sample_span_i32(const float* __restrict tex, int rows, int cols,
+                                       const GridLine& line, int begin, int end,
+                                       const SampledTerrain& out) {
+  sample_span<std::int32_t>(tex, rows, cols, line, begin, end, out);
+}
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define RIS_SAMPLER_AVX512 1
+// GCC 12's plain AVX-512 intrinsics pass an undefined register as the
+// unused merge source, which -Wmaybe-uninitialized reports once inlined
+// (a false positive: every lane is written).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+// AVX-512 with the 256-bit forms (VL) and byte, word and doubleword ops (BW,
+// DQ): every AVX-512 CPU but the Xeon Phi (sample_terrain_line checks).
+#define RIS_AVX512 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq")))
+
+// One axis of bilinear_cells for eight samples (its operations lane by lane,
+// so the same bits): the lower cell index, the weight fraction and whether
+// the point lies in the upper cell. a0, da: the line's start and step on
+// this axis; j: the samples' indices; hi: the outermost centre (n - 1);
+// cell_max: the largest lower cell (n - 2, or 0).
+struct AxisCells8 {
+  __m256i cell;
+  __m256 fraction;
+  __mmask8 upper;
+};
+
+RIS_AVX512 inline AxisCells8 axis_cells8(__m512d a0, __m512d da, __m512d j, __m512d hi,
+                                         __m256i cell_max) {
+  const __m512d zero = _mm512_setzero_pd(), half = _mm512_set1_pd(0.5);
+  const __m512d a = _mm512_add_pd(a0, _mm512_mul_pd(j, da));  // GridLine::col / row
+  // clamp(a - 1/2, 0, hi): maxpd / minpd return their second operand on a
+  // tie, so the value itself as bilinear_cells' selects keep it.
+  const __m512d p = _mm512_min_pd(hi, _mm512_max_pd(zero, _mm512_sub_pd(a, half)));
+  const __m256i cell = _mm256_min_epi32(_mm512_cvttpd_epi32(p), cell_max);
+  const __m512d f = _mm512_sub_pd(p, _mm512_cvtepi32_pd(cell));
+  return {cell, _mm512_cvtpd_ps(f), _mm512_cmp_pd_mask(f, half, _CMP_GE_OQ)};
+}
+
+// Pass 1 (chunk_cells) eight samples at a time: GCC's own vectorisation of
+// it mixes eight-lane doubles with sixteen-lane indices and spends a third
+// of its instructions moving masks and halves. Returns the samples done (a
+// multiple of 8).
+RIS_AVX512 int chunk_cells_avx512(int rows, int cols, const GridLine& line, int j0, int n,
+                                  ChunkCells<std::int32_t>& c) {
+  const BilinearCells<std::int32_t> steps = bilinear_cells<std::int32_t>(rows, cols, 0.5, 0.5);
+  const __m512d col0 = _mm512_set1_pd(line.col0), dcol = _mm512_set1_pd(line.dcol);
+  const __m512d row0 = _mm512_set1_pd(line.row0), drow = _mm512_set1_pd(line.drow);
+  const __m512d col_hi = _mm512_set1_pd(double(cols - 1)),
+                row_hi = _mm512_set1_pd(double(rows - 1));
+  const __m256i col_max = _mm256_set1_epi32(cols > 2 ? cols - 2 : 0);
+  const __m256i row_max = _mm256_set1_epi32(rows > 2 ? rows - 2 : 0);
+  const __m256i n_cols = _mm256_set1_epi32(cols);
+  const __m256i step_col = _mm256_set1_epi32(steps.step_col);
+  const __m256i step_row = _mm256_set1_epi32(steps.step_row);
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  const __m256 one = _mm256_set1_ps(1.0f);
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    const __m512d j = _mm512_cvtepi32_pd(_mm256_add_epi32(_mm256_set1_epi32(j0 + k), lane));
+    const AxisCells8 x = axis_cells8(col0, dcol, j, col_hi, col_max);
+    const AxisCells8 y = axis_cells8(row0, drow, j, row_hi, row_max);
+    const __m256i cell00 = _mm256_add_epi32(_mm256_mullo_epi32(y.cell, n_cols), x.cell);
+    __m256i nearest = _mm256_mask_add_epi32(cell00, x.upper, cell00, step_col);
+    nearest = _mm256_mask_add_epi32(nearest, y.upper, nearest, step_row);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(c.first + k), _mm256_slli_epi32(cell00, 2));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(c.nearest + k),
+                       _mm256_add_epi32(_mm256_slli_epi32(nearest, 2), _mm256_set1_epi32(3)));
+    const __m256 ox = _mm256_sub_ps(one, x.fraction), oy = _mm256_sub_ps(one, y.fraction);
+    _mm256_store_ps(c.w0 + k, _mm256_mul_ps(ox, oy));
+    _mm256_store_ps(c.w1 + k, _mm256_mul_ps(x.fraction, oy));
+    _mm256_store_ps(c.w2 + k, _mm256_mul_ps(ox, y.fraction));
+    _mm256_store_ps(c.w3 + k, _mm256_mul_ps(x.fraction, y.fraction));
+  }
+  return k;
+}
+
+// Pass 2 sixteen samples at a time with AVX-512 (weigh_texels' operations
+// lane by lane, so the same bytes): each 512-bit register holds four
+// samples' texels (one 128-bit lane each) and their weights broadcast per
+// lane; a weight above 0 masks the add (acc + 0 where the scalar pass
+// selects 0: acc is never -0, as it starts at +0 and a sum that is zero
+// rounds to +0, so both leave acc as it was). Four registers of sums are
+// then transposed into height, dz/dx and dz/dy; the nearest cell's category
+// is one masked gather (none where the sample has no data). Against the
+// 128-bit pass (a broadcast, a multiply, a compare, an and and an add per
+// corner and sample, then three lane extracts): about a third of the
+// instructions. Returns the samples done (a multiple of 16).
+RIS_AVX512 int weigh_texels_avx512(const float* __restrict tex, const ChunkCells<std::int32_t>& c,
+                                   CornerSteps<std::int32_t> d, int n, int o0,
+                                   const SampledTerrain& out) {
+  // Four samples' weights, each broadcast over its 128-bit lane.
+  const __m512i quad[4] = {
+      _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3),
+      _mm512_setr_epi32(4, 4, 4, 4, 5, 5, 5, 5, 6, 6, 6, 6, 7, 7, 7, 7),
+      _mm512_setr_epi32(8, 8, 8, 8, 9, 9, 9, 9, 10, 10, 10, 10, 11, 11, 11, 11),
+      _mm512_setr_epi32(12, 12, 12, 12, 13, 13, 13, 13, 14, 14, 14, 14, 15, 15, 15, 15)};
+  // Transpose: sums of samples 0-3 (a) and 4-7 (b) -> their heights, then
+  // their dz/dx; -> their dz/dy (upper half unused); two such halves ->
+  // sixteen samples' values.
+  const __m512i h_gx = _mm512_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28, 1, 5, 9, 13, 17, 21, 25, 29);
+  const __m512i gy = _mm512_setr_epi32(2, 6, 10, 14, 18, 22, 26, 30, 2, 6, 10, 14, 18, 22, 26, 30);
+  const __m512i low_halves =
+      _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23);
+  const __m512i high_halves =
+      _mm512_setr_epi32(8, 9, 10, 11, 12, 13, 14, 15, 24, 25, 26, 27, 28, 29, 30, 31);
+  const __m512 zero = _mm512_setzero_ps();
+  const std::int32_t offset[4] = {0, d.d1, d.d2, d.d3};
+  const float* const weight[4] = {c.w0, c.w1, c.w2, c.w3};
+  int k = 0;
+  for (; k + 16 <= n; k += 16) {
+    __m512 acc[4] = {zero, zero, zero, zero};
+#pragma GCC unroll 4
+    for (int corner = 0; corner < 4; ++corner) {
+      const __m512 w16 = _mm512_load_ps(weight[corner] + k);
+      const std::int32_t off = offset[corner];
+#pragma GCC unroll 4
+      for (int g = 0; g < 4; ++g) {
+        const std::int32_t* const f = c.first + k + 4 * g;
+        __m512 t = _mm512_castps128_ps512(_mm_loadu_ps(tex + f[0] + off));
+        t = _mm512_insertf32x4(t, _mm_loadu_ps(tex + f[1] + off), 1);
+        t = _mm512_insertf32x4(t, _mm_loadu_ps(tex + f[2] + off), 2);
+        t = _mm512_insertf32x4(t, _mm_loadu_ps(tex + f[3] + off), 3);
+        const __m512 w = _mm512_permutexvar_ps(quad[g], w16);
+        const __mmask16 keep = _mm512_cmp_ps_mask(w, zero, _CMP_GT_OQ);
+        acc[g] = _mm512_mask_add_ps(acc[g], keep, acc[g], _mm512_mul_ps(w, t));
+      }
+    }
+    const __m512 hg01 = _mm512_permutex2var_ps(acc[0], h_gx, acc[1]);
+    const __m512 hg23 = _mm512_permutex2var_ps(acc[2], h_gx, acc[3]);
+    const __m512 y01 = _mm512_permutex2var_ps(acc[0], gy, acc[1]);
+    const __m512 y23 = _mm512_permutex2var_ps(acc[2], gy, acc[3]);
+    const __m512 h = _mm512_permutex2var_ps(hg01, low_halves, hg23);
+    const int o = o0 + k;
+    _mm512_storeu_ps(out.height_m + o, h);
+    _mm512_storeu_ps(out.dz_dx + o, _mm512_permutex2var_ps(hg01, high_halves, hg23));
+    _mm512_storeu_ps(out.dz_dy + o, _mm512_permutex2var_ps(y01, low_halves, y23));
+    const __mmask16 no_data = _mm512_cmp_ps_mask(h, h, _CMP_UNORD_Q);
+    // The nearest cells' categories by scalar loads (an AVX-512 gather is
+    // slower on this EPYC), zero where no data.
+    alignas(64) float nearest_category[16];
+    for (int i = 0; i < 16; ++i) nearest_category[i] = tex[c.nearest[k + i]];
+    const __m512i cat = _mm512_maskz_cvttps_epi32(static_cast<__mmask16>(~no_data),
+                                                  _mm512_load_ps(nearest_category));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.category + o), _mm512_cvtepi32_epi16(cat));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out.flags + o),
+                     _mm512_cvtepi32_epi8(_mm512_maskz_set1_epi32(no_data, sample_flag::kNoData)));
+  }
+  return k;
+}
+
+// The sampler with pass 2 in AVX-512 (pass 1 vectorised by GCC for it:
+// eight double positions a register), the last samples of each chunk by
+// the scalar pass.
+RIS_AVX512 void sample_span_avx512(const float* __restrict tex, int rows, int cols,
+                                   const GridLine& line, int begin, int end,
+                                   const SampledTerrain& out) {
+  const CornerSteps<std::int32_t> d = corner_steps<std::int32_t>(rows, cols);
+  ChunkCells<std::int32_t> c;
+  for (int j0 = begin; j0 < end; j0 += kChunk) {
+    const int n = std::min(kChunk, end - j0);
+    const int cells_done = chunk_cells_avx512(rows, cols, line, j0, n, c);
+    chunk_cells(rows, cols, line, j0, cells_done, n, c);
+    const int done = weigh_texels_avx512(tex, c, d, n, j0 - begin, out);
+    weigh_texels(tex, c, d, done, n, j0 - begin, out);
+  }
+}
+#pragma GCC diagnostic pop
+#endif
 
 }  // namespace
 
@@ -320,11 +516,18 @@ void sample_terrain_line(const TerrainTexels& tex, const GridLine& line, int beg
   // 32-bit float indices (4 per cell) where they fit: every scene that
   // fits in memory with its texels up to 2^29 cells.
   if (tex.size() < (std::size_t{1} << 29)) {
-    sample_span_i32(t, tex.rows, tex.cols, line, begin, end, out.height_m, out.dz_dx, out.dz_dy,
-                    out.category, out.flags);
+#ifdef RIS_SAMPLER_AVX512
+    static const bool avx512 =
+        __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+        __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq");
+    if (avx512) {
+      sample_span_avx512(t, tex.rows, tex.cols, line, begin, end, out);
+      return;
+    }
+#endif
+    sample_span_i32(t, tex.rows, tex.cols, line, begin, end, out);
   } else {
-    sample_span<std::int64_t>(t, tex.rows, tex.cols, line, begin, end, out.height_m, out.dz_dx,
-                              out.dz_dy, out.category, out.flags);
+    sample_span<std::int64_t>(t, tex.rows, tex.cols, line, begin, end, out);
   }
 }
 

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "ris/geometry/surface_gradient.h"
@@ -177,6 +180,105 @@ TEST(TerrainLine, NoDataOnlyWhereANoDataCellIsWeighted) {
     EXPECT_EQ(std::isnan(b.gx[o]), touches) << col;
     EXPECT_EQ(b.cat[o], touches ? 0 : 3) << col;
   }
+}
+
+// A rough surface on 41 x 57 cells of 1.5 m, categories 1-9, and a patch and
+// a few single cells without data.
+Scene rough_scene() {
+  Scene s = Scene::flat(41, 57, 1.5, 0.0f, 1);
+  for (int r = 0; r < s.rows; ++r)
+    for (int c = 0; c < s.cols; ++c) {
+      const std::size_t i = s.index(r, c);
+      s.elevation_m[i] = static_cast<float>(50.0 + 7.0 * std::sin(0.37 * r + 0.11 * c * c) -
+                                            3.0 * std::cos(0.21 * r * c) + 0.05 * (c - r));
+      s.category[i] = static_cast<std::uint16_t>(1 + (r * 13 + c * 5) % 9);
+      const bool patch = r >= 17 && r < 21 && c >= 30 && c < 35;
+      if (patch || (r * 31 + c * 17) % 97 == 0) {
+        s.valid[i] = 0;
+        s.elevation_m[i] = std::nanf("");
+      }
+    }
+  return s;
+}
+
+// One sample by the rule written out: bilinear_cells' corners and weights,
+// then the weighted texels summed in float in corner order over the corners
+// weighted above 0; no data (NaN, category 0) when a weighted corner has
+// none.
+void reference_sample(const TerrainTexels& tex, const GridLine& line, int j, float out[3],
+                      std::uint16_t& category, std::uint8_t& flags) {
+  const auto b = bilinear_cells<std::size_t>(tex.rows, tex.cols, line.col(j), line.row(j));
+  const std::size_t corner[4] = {b.cell00, b.cell00 + b.step_col, b.cell00 + b.step_row,
+                                 b.cell00 + b.step_row + b.step_col};
+  float acc[3] = {0.0f, 0.0f, 0.0f};
+  for (int k = 0; k < 4; ++k) {
+    const TerrainTexel& t = tex.texel[corner[k]];
+    const float w = b.weight[k];
+    const float value[3] = {t.height_m, t.dz_dx, t.dz_dy};
+    for (int v = 0; v < 3; ++v) acc[v] += w > 0.0f ? w * value[v] : 0.0f;
+  }
+  const bool no_data = std::isnan(acc[0]);
+  for (int v = 0; v < 3; ++v) out[v] = acc[v];
+  category = no_data ? 0 : static_cast<std::uint16_t>(tex.texel[b.nearest].category);
+  flags = no_data ? sample_flag::kNoData : 0;
+}
+
+std::uint32_t bits(float f) {
+  std::uint32_t u;
+  std::memcpy(&u, &f, sizeof u);
+  return u;
+}
+
+// The line sampler (whichever of its vector kernels this CPU runs: AVX-512,
+// AVX2 or SSE2; the chunks' vector bodies and their scalar ends) gives the
+// rule's bits exactly on every sample: lines at 40 headings, with steps of a
+// half and a third of a cell and lengths that end anywhere in a chunk, lines
+// through cell centres and edges, no-data cells.
+TEST(TerrainLine, SamplerGivesThePerSampleRuleBitForBit) {
+  const Scene s = rough_scene();
+  const TerrainTexels tex = terrain_texels(s);
+  int compared = 0, no_data = 0;
+  const auto check = [&](const GridLine& line, int samples) {
+    const auto [begin, end] = inside_samples(line, s.rows, s.cols, samples);
+    Sampled out(std::max(end - begin, 1));
+    sample_terrain_line(tex, line, begin, end, out.out());
+    for (int j = begin; j < end; ++j) {
+      const auto o = static_cast<std::size_t>(j - begin);
+      float want[3];
+      std::uint16_t cat = 0;
+      std::uint8_t flags = 0;
+      reference_sample(tex, line, j, want, cat, flags);
+      ASSERT_EQ(bits(out.h[o]), bits(want[0])) << j;
+      ASSERT_EQ(bits(out.gx[o]), bits(want[1])) << j;
+      ASSERT_EQ(bits(out.gy[o]), bits(want[2])) << j;
+      ASSERT_EQ(out.cat[o], cat) << j;
+      ASSERT_EQ(out.flags[o], flags) << j;
+      ++compared;
+      no_data += flags != 0;
+    }
+  };
+  for (int h = 0; h < 40; ++h) {
+    const double heading = deg_to_rad(9.0 * h + 0.3);
+    const double dx = std::sin(heading), dy = std::cos(heading);
+    for (double step_m : {0.75, 0.5}) {
+      // From west of the scene's centre, backwards first: the line crosses
+      // the whole scene; its length varies with the heading.
+      const GridLine line = grid_line(s, 40.0, 30.0, dx, dy, -60.0 - h, step_m);
+      check(line, 240 + 7 * h);
+    }
+  }
+  // Along cell centres and cell edges (weights of exactly 0 and 1/2, samples
+  // on the edge between two cells), east and south.
+  for (double r : {0.5, 3.0, 17.5, 19.0}) {
+    const auto [x0, y0] = s.world_from_grid(0.0, r);
+    check(grid_line(s, x0, y0, 1.0, 0.0, 0.0, 0.75), 200);
+  }
+  for (double c : {1.0, 31.5, 56.0}) {
+    const auto [x0, y0] = s.world_from_grid(c, 0.0);
+    check(grid_line(s, x0, y0, 0.0, -1.0, 0.0, 0.375), 200);
+  }
+  EXPECT_GT(compared, 10000);
+  EXPECT_GT(no_data, 100);
 }
 
 }  // namespace
