@@ -102,10 +102,12 @@ inline F8 beyond(F8 x0, F8 x1, F8 t) {
 // Pass 1's table lookups on eight elements, the same operations as
 // Sigma0Lut::interpolate (so the same values) with the tables as (value,
 // difference) pairs of floats (SlarElementContext): one 8-byte load per
-// element where GCC's vectorised scalar loop emulated two gathers. The
-// gain's lookup is the same on its own table (offset 0).
+// element where GCC's vectorised scalar loop emulated two gathers. Element l
+// reads entry curve[l] + i of its table (curve: null for offset 0; the
+// sigma0 curves of the lanes' categories).
 template <int kSteps>
-__attribute__((always_inline)) inline F8 pair_block(const float* __restrict pairs, I8 offset, F8 x,
+__attribute__((always_inline)) inline F8 pair_block(const float* __restrict pairs,
+                                                    const std::int32_t* curve, F8 x,
                                                     float inv_step) {
   F8 pos = x * inv_step;
   pos = pos < 0.0f ? splat(0.0f) : pos;
@@ -113,13 +115,21 @@ __attribute__((always_inline)) inline F8 pair_block(const float* __restrict pair
   I8 i = __builtin_convertvector(pos, I8);
   i = i < kSteps - 1 ? i : splat(kSteps - 1);
   const F8 f = pos - __builtin_convertvector(i, F8);
-  const I8 k = offset + i;
+  // The entries' indices through memory: GCC would move each lane to a
+  // general register (vmovd / vpextrd, two micro-ops each on this CPU);
+  // eight scalar loads from a stored vector are cheaper. The empty asm
+  // stops GCC from forwarding the stored lanes through registers.
+  alignas(32) std::int32_t ii[kLanes];
+  store(ii, i);
+  asm("" : "+m"(ii));
   // A pair of floats is 8 bytes: loaded as one double each.
   using D4 = double __attribute__((vector_size(32)));
   D4 a, b;
   for (int l = 0; l < 4; ++l) {
-    a[l] = load<double>(pairs + 2 * k[l]);
-    b[l] = load<double>(pairs + 2 * k[l + 4]);
+    const std::int32_t ka = curve ? curve[l] + ii[l] : ii[l];
+    const std::int32_t kb = curve ? curve[l + 4] + ii[l + 4] : ii[l + 4];
+    a[l] = load<double>(pairs + 2 * static_cast<std::ptrdiff_t>(ka));
+    b[l] = load<double>(pairs + 2 * static_cast<std::ptrdiff_t>(kb));
   }
   const F8 fa = F8(a), fb = F8(b);
   const F8 t = __builtin_shuffle(fa, fb, I8{0, 2, 4, 6, 8, 10, 12, 14});
@@ -209,15 +219,18 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
   if (pt.tabulated) {
     const I8 cat = __builtin_convertvector(load<U16x8>(io.category + j), I8);
     const I8 c = vis ? cat : splat(pt.any_category);
-    I8 offset;
-    for (int l = 0; l < kLanes; ++l) offset[l] = pt.curve_offset[c[l]];
-    const F8 sigma0 = pair_block<Sigma0Lut::kSteps>(pt.sigma0_pairs, offset,
-                                                    vis ? load<F8>(io.local_incidence + j) : zero,
-                                                    Sigma0Lut::kInvStep);
+    // Each lane's sigma0 curve (the category's offset), through memory as
+    // the table entries in pair_block.
+    alignas(32) std::int32_t cc[kLanes], curve[kLanes];
+    store(cc, c);
+    asm("" : "+m"(cc));
+    for (int l = 0; l < kLanes; ++l) curve[l] = pt.curve_offset[cc[l]];
+    const F8 sigma0 = pair_block<Sigma0Lut::kSteps>(
+        pt.sigma0_pairs, curve, vis ? load<F8>(io.local_incidence + j) : zero, Sigma0Lut::kInvStep);
     const F8 g2 = pt.uniform ? splat(pt.g2_uniform)
                              : pair_block<TwoWayGainTable::kSteps>(
-                                   pt.gain2_pairs, splat(0),
-                                   vis ? load<F8>(io.incidence + j) : zero, kGainInvStep);
+                                   pt.gain2_pairs, nullptr, vis ? load<F8>(io.incidence + j) : zero,
+                                   kGainInvStep);
     ratio = element_power_ratio(g2, sigma0, area, vis ? r : splat(1.0f));
   }
   store(io.ratio_out + j, ratio);
@@ -225,8 +238,11 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
 
 // Pass 1 over the line; the last partial block through a padded copy (its
 // padding: no-data elements).
-RIS_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins, const PowerTables& pt,
-                                 const BinsPassIo& io, LineElementTally& tally) {
+// Its x86-64-v4 clone: the block's state fits AVX-512VL's 32 registers
+// (AVX2's 16 spilled a fifth of it to the stack).
+RIS_V4_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
+                                    const PowerTables& pt, const BinsPassIo& io,
+                                    LineElementTally& tally) {
   BinsTally t;
   const std::size_t full = static_cast<std::size_t>(n / kLanes) * kLanes;
   for (std::size_t j = 0; j < full; j += kLanes) {
