@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "ris/util/error.h"
+#include "ris/util/vector_clones.h"
 
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -36,6 +38,7 @@ SlarAzimuthIntegrator::SlarAzimuthIntegrator(const SlarImagingParams& p, double 
   }
   // A footprint longer than the image reaches every line anyway.
   margin_ = static_cast<int>(std::min(std::ceil(half_max), double(lines))) + 2;
+  extent_.resize(static_cast<std::size_t>(lines));
   // Running-sum row 0: nothing summed yet.
   const std::size_t n = static_cast<std::size_t>(bins);
   cum_.assign(n, 0.0);
@@ -45,9 +48,99 @@ SlarAzimuthIntegrator::SlarAzimuthIntegrator(const SlarImagingParams& p, double 
   cum_layover_.assign(n, 0);
 }
 
+std::pair<int, int> SlarAzimuthIntegrator::active_bins(int k) const {
+  // Pixel k reads the running sums of lines within ceil(half) + 1 < M of it
+  // (emit_pixel: the integral's rows and the mask's strips); every one of
+  // those lines is pushed when k is emitted (lines_ready).
+  const int j0 = std::max(0, k - margin_), j1 = std::min(pushed_ - 1, k + margin_);
+  int lo = bins_, hi = 0;
+  for (int j = j0; j <= j1; ++j) {
+    const auto [l, h] = extent_[static_cast<std::size_t>(j)];
+    if (l < h) {
+      lo = std::min(lo, l);
+      hi = std::max(hi, h);
+    }
+  }
+  return lo < hi ? std::pair{lo, hi} : std::pair{0, 0};
+}
+
 std::size_t SlarAzimuthIntegrator::row(int cum_index) const {
   return static_cast<std::size_t>(cum_index - base_) * static_cast<std::size_t>(bins_);
 }
+
+namespace {
+
+// One running-sum row of push(): its five arrays.
+struct CumRow {
+  double* power;
+  double* area;
+  int* data;
+  int* visible;
+  int* layover;
+};
+
+// Running-sum row j + 1 = row j + line j's profile, over n bins. A function
+// of its own with restrict-qualified arrays so that it vectorises (the
+// member loop did not: the byte loads may alias the rows); the same
+// additions, so the same bytes.
+RIS_VECTOR_CLONES void push_row_kernel(
+    int n, const std::uint8_t* __restrict touch, const float* __restrict power,
+    const float* __restrict area, const double* __restrict p_power, const double* __restrict p_area,
+    const int* __restrict p_data, const int* __restrict p_visible, const int* __restrict p_layover,
+    double* __restrict n_power, double* __restrict n_area, int* __restrict n_data,
+    int* __restrict n_visible, int* __restrict n_layover) {
+  for (int b = 0; b < n; ++b) {
+    const int t = touch[b];
+    n_power[b] = p_power[b] + double(power[b]);
+    n_area[b] = p_area[b] + double(area[b]);
+    n_data[b] = p_data[b] + ((t & slar_touch::kData) != 0);
+    n_visible[b] = p_visible[b] + ((t & slar_touch::kVisible) != 0);
+    n_layover[b] = p_layover[b] + ((t & slar_touch::kLayover) != 0);
+  }
+}
+
+// The bins [lo, hi) of a profile row outside which its touch, power and
+// area bits are all zero ({0, 0} when all are): from both ends eight bins
+// at a time as 64-bit words (a loop over every bin with min / max
+// reductions did not vectorise); the row is in L1 after push_row_kernel.
+std::pair<int, int> row_extent(int n, const std::uint8_t* touch, const float* power,
+                               const float* area) {
+  const auto word = [](const void* at) {
+    std::uint64_t w = 0;
+    std::memcpy(&w, at, sizeof w);
+    return w;
+  };
+  const auto zero8 = [&](int b) {
+    const float* p = power + b;
+    const float* a = area + b;
+    return (word(touch + b) | word(p) | word(p + 2) | word(p + 4) | word(p + 6) | word(a) |
+            word(a + 2) | word(a + 4) | word(a + 6)) == 0;
+  };
+  const auto zero1 = [&](int b) {
+    std::uint32_t p = 0, a = 0;
+    std::memcpy(&p, power + b, sizeof p);
+    std::memcpy(&a, area + b, sizeof a);
+    return (touch[b] | p | a) == 0;
+  };
+  int lo = 0;
+  while (lo + 8 <= n && zero8(lo)) lo += 8;
+  while (lo < n && zero1(lo)) ++lo;
+  if (lo == n) return {0, 0};
+  int hi = n;
+  while (hi - 8 >= lo && zero8(hi - 8)) hi -= 8;
+  while (zero1(hi - 1)) --hi;  // stops at lo + 1 at the latest
+  return {lo, hi};
+}
+
+// push_row_kernel on a row of running sums; returns row_extent.
+inline std::pair<int, int> push_row(int n, const std::uint8_t* touch, const float* power,
+                                    const float* area, const CumRow& prev, const CumRow& next) {
+  push_row_kernel(n, touch, power, area, prev.power, prev.area, prev.data, prev.visible,
+                  prev.layover, next.power, next.area, next.data, next.visible, next.layover);
+  return row_extent(n, touch, power, area);
+}
+
+}  // namespace
 
 void SlarAzimuthIntegrator::push(const SlarLineProfiles& prof, int count) {
   RIS_CHECK(prof.bins >= bin0_ + bins_ && count >= 0 && pushed_ + count <= lines_);
@@ -62,27 +155,42 @@ void SlarAzimuthIntegrator::push(const SlarLineProfiles& prof, int count) {
   cum_visible_.resize(n);
   cum_layover_.resize(n);
   // Each thread sums its own bins over the lines, in line order (the
-  // arithmetic of a pixel does not depend on the thread count).
+  // arithmetic of a pixel does not depend on the thread count), and finds
+  // each line's extent within them; the extents are merged after.
+  const int max_threads = threaded_ ? omp_get_max_threads() : 1;
+  part_extent_.assign(static_cast<std::size_t>(max_threads) * static_cast<std::size_t>(count),
+                      {bins_, 0});
 #pragma omp parallel if (threaded_)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
     const int b0 = static_cast<int>(std::int64_t(bins_) * t / nt);
     const int b1 = static_cast<int>(std::int64_t(bins_) * (t + 1) / nt);
     for (int j = pushed_; j < pushed_ + count; ++j) {
-      const std::size_t in = prof.index(j, bin0_), prev = row(j), next = row(j + 1);
-      for (int b = b0; b < b1; ++b) {
-        const std::size_t bb = static_cast<std::size_t>(b);
-        const std::size_t k = in + bb;
-        const std::uint8_t touch = prof.touch[k];
-        cum_[next + bb] = cum_[prev + bb] + double(prof.power_w[k]);
-        cum_area_[next + bb] = cum_area_[prev + bb] + double(prof.area_m2[k]);
-        cum_data_[next + bb] = cum_data_[prev + bb] + ((touch & slar_touch::kData) ? 1 : 0);
-        cum_visible_[next + bb] =
-            cum_visible_[prev + bb] + ((touch & slar_touch::kVisible) ? 1 : 0);
-        cum_layover_[next + bb] =
-            cum_layover_[prev + bb] + ((touch & slar_touch::kLayover) ? 1 : 0);
+      const std::size_t in = prof.index(j, bin0_) + static_cast<std::size_t>(b0);
+      const std::size_t prev = row(j) + static_cast<std::size_t>(b0);
+      const std::size_t next = row(j + 1) + static_cast<std::size_t>(b0);
+      const auto [lo, hi] = push_row(
+          b1 - b0, prof.touch.data() + in, prof.power_w.data() + in, prof.area_m2.data() + in,
+          {cum_.data() + prev, cum_area_.data() + prev, cum_data_.data() + prev,
+           cum_visible_.data() + prev, cum_layover_.data() + prev},
+          {cum_.data() + next, cum_area_.data() + next, cum_data_.data() + next,
+           cum_visible_.data() + next, cum_layover_.data() + next});
+      if (lo < hi) {
+        part_extent_[static_cast<std::size_t>(t) * static_cast<std::size_t>(count) +
+                     static_cast<std::size_t>(j - pushed_)] = {b0 + lo, b0 + hi};
       }
     }
+  }
+  for (int k = 0; k < count; ++k) {
+    int lo = bins_, hi = 0;
+    for (int t = 0; t < max_threads; ++t) {
+      const auto [l, h] =
+          part_extent_[static_cast<std::size_t>(t) * static_cast<std::size_t>(count) +
+                       static_cast<std::size_t>(k)];
+      lo = std::min(lo, l);
+      hi = std::max(hi, h);
+    }
+    extent_[static_cast<std::size_t>(pushed_ + k)] = lo < hi ? std::pair{lo, hi} : std::pair{0, 0};
   }
   pushed_ += count;
 }
@@ -170,17 +278,18 @@ __attribute__((target("avx2"))) inline __m128i count4(const int* c, std::size_t 
 // the running sums (the same i at both window ends and the same line
 // strips): those take contiguous vector loads; the arithmetic is the scalar
 // rule's, in double with separate multiplies and adds, so the same bytes.
-// A block whose rows differ takes emit_pixel bin by bin. Returns the first
-// bin not done (the last bins % 4 are left to the caller).
-__attribute__((target("avx2"))) int emit_line_avx2(const EmitRows& r, int k, float* power,
-                                                   float* area, std::uint8_t* mask) {
+// A block whose rows differ takes emit_pixel bin by bin. Bins [begin, end);
+// returns the first bin not done (the last (end - begin) % 4 are left to the
+// caller).
+__attribute__((target("avx2"))) int emit_line_avx2(const EmitRows& r, int k, int begin, int end,
+                                                   float* power, float* area, std::uint8_t* mask) {
   const __m256d zero = _mm256_setzero_pd(), half_line = _mm256_set1_pd(0.5);
   const __m256d lines_d = _mm256_set1_pd(double(r.lines));
   const __m128i last = _mm_set1_epi32(r.lines - 1);
   const __m256d kd = _mm256_set1_pd(double(k));
   const std::size_t stride = static_cast<std::size_t>(r.bins);
-  int b = 0;
-  for (; b + 4 <= r.bins; b += 4) {
+  int b = begin;
+  for (; b + 4 <= end; b += 4) {
     const __m256d half = _mm256_loadu_pd(r.half + b);
     const __m256d a = _mm256_sub_pd(kd, half), e = _mm256_add_pd(kd, half);
     // std::clamp(x + 1/2, 0, n): max(0, .) keeps -0 as clamp does, then min(n, .).
@@ -254,12 +363,27 @@ void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2,
 #pragma omp parallel for schedule(dynamic, 16) if (threaded_)
   for (int k = first; k < first + count; ++k) {
     const std::size_t out = static_cast<std::size_t>(k - first) * stride;
-    int b0 = 0;
+    float* const power = mean_power_w + out;
+    float* const area = area_m2 + out;
+    std::uint8_t* const m = mask + out;
+    // Outside the data extents of the lines within M of line k the
+    // footprint holds no data (see active_bins): the pixel's rule gives
+    // +0 W, +0 m^2 and kNoData there, written directly. The bins computed
+    // start and end on a multiple of four, as the vector blocks.
+    const auto [lo, hi] = active_bins(k);
+    const int begin = lo / 4 * 4;
+    const int end = std::min(bins, (hi + 3) / 4 * 4);
+    std::fill(power, power + begin, 0.0f);
+    std::fill(area, area + begin, 0.0f);
+    std::fill(m, m + begin, pixel_flag::kNoData);
+    int b0 = begin;
 #ifdef RIS_AZIMUTH_AVX2
-    if (avx2) b0 = emit_line_avx2(rows, k, mean_power_w + out, area_m2 + out, mask + out);
+    if (avx2) b0 = emit_line_avx2(rows, k, begin, end, power, area, m);
 #endif
-    for (int b = b0; b < bins; ++b)
-      emit_pixel(rows, k, b, mean_power_w + out, area_m2 + out, mask + out);
+    for (int b = b0; b < end; ++b) emit_pixel(rows, k, b, power, area, m);
+    std::fill(power + end, power + bins, 0.0f);
+    std::fill(area + end, area + bins, 0.0f);
+    std::fill(m + end, m + bins, pixel_flag::kNoData);
   }
   emitted_ += count;
   // Drop the running sums no later line needs (indices below emitted_ - M).

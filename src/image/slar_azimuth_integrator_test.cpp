@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <vector>
 
 #include "ris/image/slar_image.h"
@@ -13,30 +15,15 @@
 namespace ris {
 namespace {
 
-// The azimuth step (vectorised four bins at a time where the running-sum rows
-// agree) against its rule written out pixel by pixel from whole-image running
-// sums, bit for bit: a footprint that grows fast across the swath (blocks of
-// four bins whose rows differ), a constant SAR window, zero-power and
-// no-data lines, bins % 4 != 0, 1, 2 and 3 threads (integrate_slar_azimuth
+// integrate_slar_azimuth against its rule written out pixel by pixel from
+// whole-image running sums, bit for bit, for SLAR footprints (window_lines
+// 0) and constant windows, with 1, 2 and 3 threads (integrate_slar_azimuth
 // gives each thread a range of bins).
-TEST(SlarAzimuthIntegrator, EqualsThePerPixelRuleFromWholeImageSums) {
-  const int lines = 301, bins = 150;
-  SlarLineProfiles prof;
-  prof.allocate(lines, bins);
-  for (int l = 0; l < lines; ++l) {
-    for (int b = 0; b < bins; ++b) {
-      const std::size_t i = prof.index(l, b);
-      const bool none = (l / 7 + b) % 11 == 0;
-      prof.power_w[i] = none ? 0.0f : static_cast<float>(1e-9 * (1.5 + std::sin(0.37 * double(i))));
-      prof.area_m2[i] = none ? 0.0f : static_cast<float>(40.0 + 3.0 * std::cos(0.11 * double(i)));
-      prof.touch[i] = none ? 0
-                           : static_cast<std::uint8_t>(slar_touch::kData |
-                                                       ((i % 5 != 0) ? slar_touch::kVisible : 0) |
-                                                       ((i % 13 == 0) ? slar_touch::kLayover : 0));
-    }
-  }
+void expect_the_per_pixel_rule(const SlarLineProfiles& prof,
+                               std::initializer_list<double> windows_lines) {
+  const int lines = prof.lines, bins = prof.bins;
   const int saved = omp_get_max_threads();
-  for (const double window_lines : {0.0, 6.5}) {
+  for (const double window_lines : windows_lines) {
     SlarImagingParams p;
     p.range = SlantRangeBins{1000.0, 250.0, bins};  // the footprint grows 34x across the swath
     p.azimuth_beamwidth_rad = 0.02;
@@ -103,6 +90,59 @@ TEST(SlarAzimuthIntegrator, EqualsThePerPixelRuleFromWholeImageSums) {
     }
   }
   omp_set_num_threads(saved);
+}
+
+// The azimuth step (vectorised four bins at a time where the running-sum rows
+// agree) against its rule: a footprint that grows fast across the swath
+// (blocks of four bins whose rows differ), a constant SAR window, zero-power
+// and no-data lines, bins % 4 != 0.
+TEST(SlarAzimuthIntegrator, EqualsThePerPixelRuleFromWholeImageSums) {
+  const int lines = 301, bins = 150;
+  SlarLineProfiles prof;
+  prof.allocate(lines, bins);
+  for (int l = 0; l < lines; ++l) {
+    for (int b = 0; b < bins; ++b) {
+      const std::size_t i = prof.index(l, b);
+      const bool none = (l / 7 + b) % 11 == 0;
+      prof.power_w[i] = none ? 0.0f : static_cast<float>(1e-9 * (1.5 + std::sin(0.37 * double(i))));
+      prof.area_m2[i] = none ? 0.0f : static_cast<float>(40.0 + 3.0 * std::cos(0.11 * double(i)));
+      prof.touch[i] = none ? 0
+                           : static_cast<std::uint8_t>(slar_touch::kData |
+                                                       ((i % 5 != 0) ? slar_touch::kVisible : 0) |
+                                                       ((i % 13 == 0) ? slar_touch::kLayover : 0));
+    }
+  }
+  expect_the_per_pixel_rule(prof, {0.0, 6.5});
+}
+
+// emit() writes the no-data pixel directly outside the union of the lines'
+// data extents over a footprint: the same bytes as the rule, with an
+// oblique track's wedges of empty bins (extents that grow and shrink by
+// more than a footprint per line), whole empty lines, a lone bin of power
+// without touch bits (a SAR range window's spill), area alone, touch alone,
+// and -0 W (a zero of either sign adds nothing).
+TEST(SlarAzimuthIntegrator, SkipsNoDataBinsWithTheRulesBytes) {
+  const int lines = 203, bins = 150;
+  SlarLineProfiles prof;
+  prof.allocate(lines, bins);
+  for (int l = 0; l < lines; ++l) {
+    const int lo = std::abs(l - 100) * 3 / 2 - 20, hi = 160 - std::abs(l - 90) * 2;
+    for (int b = 0; b < bins; ++b) {
+      const std::size_t i = prof.index(l, b);
+      const bool data = b >= lo && b < hi && l % 37 != 5;
+      prof.power_w[i] = data ? static_cast<float>(1e-9 * (1.5 + std::sin(0.37 * double(i)))) : 0.0f;
+      prof.area_m2[i] = data ? static_cast<float>(40.0 + 3.0 * std::cos(0.11 * double(i))) : 0.0f;
+      prof.touch[i] = data ? static_cast<std::uint8_t>(slar_touch::kData |
+                                                       ((i % 5 != 0) ? slar_touch::kVisible : 0))
+                           : 0;
+    }
+  }
+  prof.power_w[prof.index(3, 140)] = 2e-9f;             // power alone, far from any data
+  prof.area_m2[prof.index(150, 2)] = 5.0f;              // area alone
+  prof.touch[prof.index(20, 147)] = slar_touch::kData;  // touch alone, the last quad
+  prof.power_w[prof.index(60, 1)] = -0.0f;
+  prof.power_w[prof.index(61, 149)] = -0.0f;
+  expect_the_per_pixel_rule(prof, {0.0, 6.5, 31.0});
 }
 
 }  // namespace

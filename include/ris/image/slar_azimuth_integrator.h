@@ -28,6 +28,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "ris/image/slar_image.h"
@@ -61,6 +62,9 @@ class SlarAzimuthIntegrator {
 
  private:
   std::size_t row(int cum_index) const;  // offset of a running-sum row
+  // The bins [lo, hi) of those held that line k's footprint may see data
+  // in: the union of the data extents of the lines within M of k.
+  std::pair<int, int> active_bins(int k) const;
 
   int lines_ = 0;
   int bin0_ = 0, bins_ = 0;   // the bins held: [bin0_, bin0_ + bins_)
@@ -75,6 +79,12 @@ class SlarAzimuthIntegrator {
   using Rows = std::vector<T, DefaultInitAllocator<T>>;
   Rows<double> cum_, cum_area_;
   Rows<int> cum_data_, cum_visible_, cum_layover_;
+  // Per line pushed, the bins [lo, hi) (of those held) outside which its
+  // profile is zero (power, area and touch bits): beyond the union of these
+  // over a footprint, emit() writes the no-data pixel without reading the
+  // running sums (about half of an oblique track's image).
+  std::vector<std::pair<int, int>> extent_;
+  std::vector<std::pair<int, int>> part_extent_;  // push(): per thread and line
 };
 
 }  // namespace ris
