@@ -128,8 +128,13 @@ struct LineSamples {
 // terrain is shared by the two cells beside it.
 void line_element_ends(const LineSamples& line);
 
+// Which code the scans run: the widest the CPU has (AVX-512 sixteen samples
+// at a time, where it has it), or the portable eight-sample one whatever the
+// CPU (for tests: both give the same flags).
+enum class ScanKernel { best, portable };
+
 // Cast shadow and layover along the line (MODEL.md section 2). Samples not
 // skipped (kNoData, kUnseen) must be in front of the sensor, u > 0.
-void mark_shadow_and_layover(const LineSamples& line);
+void mark_shadow_and_layover(const LineSamples& line, ScanKernel kernel = ScanKernel::best);
 
 }  // namespace ris
