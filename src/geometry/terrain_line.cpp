@@ -3,9 +3,6 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +16,7 @@
 
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_sample.h"
+#include "ris/util/avx512.h"
 #include "ris/util/vector_clones.h"
 
 namespace ris {
@@ -28,18 +26,18 @@ namespace {
 // Hot loops: an AVX2 clone beside the SSE2 default, the same bytes on any
 // CPU (ris/util/vector_clones.h).
 
-// One row's texels: the interior columns [1, cols - 1) in one pass of
-// selects (slope_difference, no branches) that vectorises; the edge columns
-// by cell_slope, the same rule with the bounds checked. zs, vs / zn, vn: the
-// rows south (r + 1) and north (r - 1), or a row without data beyond the
-// scene's edge.
-RIS_VECTOR_CLONES void texel_row_interior(
-    int cols, double dx_m, double dy_m, const float* __restrict z, const std::uint8_t* __restrict v,
-    const std::uint16_t* __restrict cat, const float* __restrict zs,
-    const std::uint8_t* __restrict vs, const float* __restrict zn,
+// One row's texels: the interior columns [c_begin, c_end) (within [1, cols -
+// 1)) in one pass of selects (slope_difference, no branches) that
+// vectorises; the edge columns by cell_slope, the same rule with the bounds
+// checked. zs, vs / zn, vn: the rows south (r + 1) and north (r - 1), or a
+// row without data beyond the scene's edge.
+[[gnu::always_inline]] inline void texel_cells(
+    int c_begin, int c_end, double dx_m, double dy_m, const float* __restrict z,
+    const std::uint8_t* __restrict v, const std::uint16_t* __restrict cat,
+    const float* __restrict zs, const std::uint8_t* __restrict vs, const float* __restrict zn,
     const std::uint8_t* __restrict vn, TerrainTexel* __restrict out) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (int c = 1; c < cols - 1; ++c) {
+  for (int c = c_begin; c < c_end; ++c) {
     const bool ok = v[c] != 0;
     const float gx = slope_difference(v[c - 1] != 0, z[c - 1], v[c + 1] != 0, z[c + 1], z[c], dx_m);
     const float gy = slope_difference(vs[c] != 0, zs[c], vn[c] != 0, zn[c], z[c], dy_m);
@@ -48,6 +46,102 @@ RIS_VECTOR_CLONES void texel_row_interior(
     out[c].dz_dy = ok ? gy : nan;
     out[c].category = static_cast<float>(cat[c]);
   }
+}
+
+RIS_VECTOR_CLONES void texel_row_interior(
+    int cols, double dx_m, double dy_m, const float* __restrict z, const std::uint8_t* __restrict v,
+    const std::uint16_t* __restrict cat, const float* __restrict zs,
+    const std::uint8_t* __restrict vs, const float* __restrict zn,
+    const std::uint8_t* __restrict vn, TerrainTexel* __restrict out) {
+  texel_cells(1, cols - 1, dx_m, dy_m, z, v, cat, zs, vs, zn, vn, out);
+}
+
+#ifdef RIS_HAVE_AVX512_KERNELS
+// GCC 12's plain AVX-512 intrinsics pass an undefined register as the
+// unused merge source, which -Wmaybe-uninitialized reports once inlined
+// (a false positive: every lane is written).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+// Eight cells' valid flags as mask bits.
+RIS_AVX512_KERNEL inline __mmask8 valid8(const std::uint8_t* v) {
+  const __m128i b = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(v));
+  return static_cast<__mmask8>(_mm_test_epi8_mask(b, b));
+}
+
+// Eight heights in double.
+RIS_AVX512_KERNEL inline __m512d height8(const float* z) {
+  return _mm512_cvtps_pd(_mm256_loadu_ps(z));
+}
+
+// slope_difference for eight cells, its operations lane by lane.
+RIS_AVX512_KERNEL inline __m256 slope8(__mmask8 lo_ok, __m512d z_lo, __mmask8 hi_ok, __m512d z_hi,
+                                       __m512d z_c, __m512d step, __m512d two_steps) {
+  const __m512d a = _mm512_mask_blend_pd(hi_ok, z_c, z_hi);
+  const __m512d b = _mm512_mask_blend_pd(lo_ok, z_c, z_lo);
+  const __m512d num = _mm512_maskz_sub_pd(static_cast<__mmask8>(lo_ok | hi_ok), a, b);
+  const __m512d den = _mm512_mask_blend_pd(static_cast<__mmask8>(lo_ok & hi_ok), step, two_steps);
+  return _mm512_cvtpd_ps(_mm512_div_pd(num, den));
+}
+
+// texel_cells eight cells at a time from column 1 (GCC's vectorisation of it
+// runs out of registers and spills): slopes in eight double lanes, then the
+// four fields interleaved into texels by a 4 x 4 transpose of each half.
+// Returns the first column not done.
+RIS_AVX512_KERNEL int texel_row_avx512(
+    int cols, double dx_m, double dy_m, const float* __restrict z, const std::uint8_t* __restrict v,
+    const std::uint16_t* __restrict cat, const float* __restrict zs,
+    const std::uint8_t* __restrict vs, const float* __restrict zn,
+    const std::uint8_t* __restrict vn, TerrainTexel* __restrict out) {
+  const __m512d sx = _mm512_set1_pd(dx_m), sx2 = _mm512_set1_pd(2.0 * dx_m);
+  const __m512d sy = _mm512_set1_pd(dy_m), sy2 = _mm512_set1_pd(2.0 * dy_m);
+  const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());
+  int c = 1;
+  for (; c + 8 <= cols - 1; c += 8) {
+    const __m512d zc = height8(z + c);
+    const __mmask8 ok = valid8(v + c);
+    const __m256 gx = slope8(valid8(v + c - 1), height8(z + c - 1), valid8(v + c + 1),
+                             height8(z + c + 1), zc, sx, sx2);
+    const __m256 gy =
+        slope8(valid8(vs + c), height8(zs + c), valid8(vn + c), height8(zn + c), zc, sy, sy2);
+    const __m256 h = _mm256_mask_blend_ps(ok, nan, _mm256_loadu_ps(z + c));
+    const __m256 hx = _mm256_mask_blend_ps(ok, nan, gx);
+    const __m256 hy = _mm256_mask_blend_ps(ok, nan, gy);
+    const __m256 k = _mm256_cvtepi32_ps(
+        _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(cat + c))));
+    // Lanes (i, i + 4) of t* hold cells i and i + 4 of the eight.
+    const __m256d t0 = _mm256_castps_pd(_mm256_unpacklo_ps(h, hx));
+    const __m256d t1 = _mm256_castps_pd(_mm256_unpackhi_ps(h, hx));
+    const __m256d t2 = _mm256_castps_pd(_mm256_unpacklo_ps(hy, k));
+    const __m256d t3 = _mm256_castps_pd(_mm256_unpackhi_ps(hy, k));
+    const __m256 u0 = _mm256_castpd_ps(_mm256_unpacklo_pd(t0, t2));  // cells 0 | 4
+    const __m256 u1 = _mm256_castpd_ps(_mm256_unpackhi_pd(t0, t2));  // 1 | 5
+    const __m256 u2 = _mm256_castpd_ps(_mm256_unpacklo_pd(t1, t3));  // 2 | 6
+    const __m256 u3 = _mm256_castpd_ps(_mm256_unpackhi_pd(t1, t3));  // 3 | 7
+    float* const o = &out[c].height_m;
+    _mm256_storeu_ps(o, _mm256_permute2f128_ps(u0, u1, 0x20));
+    _mm256_storeu_ps(o + 8, _mm256_permute2f128_ps(u2, u3, 0x20));
+    _mm256_storeu_ps(o + 16, _mm256_permute2f128_ps(u0, u1, 0x31));
+    _mm256_storeu_ps(o + 24, _mm256_permute2f128_ps(u2, u3, 0x31));
+  }
+  return c;
+}
+#pragma GCC diagnostic pop
+#endif
+
+// One row's interior texels, by the AVX-512 kernel where the CPU has it
+// (then its last columns by texel_cells), else by the clones.
+void texel_row(int cols, double dx_m, double dy_m, const float* z, const std::uint8_t* v,
+               const std::uint16_t* cat, const float* zs, const std::uint8_t* vs, const float* zn,
+               const std::uint8_t* vn, TerrainTexel* out) {
+#ifdef RIS_HAVE_AVX512_KERNELS
+  if (cpu_has_avx512()) {
+    const int done = texel_row_avx512(cols, dx_m, dy_m, z, v, cat, zs, vs, zn, vn, out);
+    texel_cells(done, cols - 1, dx_m, dy_m, z, v, cat, zs, vs, zn, vn, out);
+    return;
+  }
+#endif
+  texel_row_interior(cols, dx_m, dy_m, z, v, cat, zs, vs, zn, vn, out);
 }
 
 }  // namespace
@@ -147,12 +241,11 @@ TerrainTexels terrain_texels(const Scene& scene) {
   for (int r = 0; r < scene.rows; ++r) {
     const std::size_t row = scene.index(r, 0);
     const bool south = r + 1 < scene.rows, north = r > 0;
-    texel_row_interior(scene.cols, scene.dx_m, scene.dy_m, &scene.elevation_m[row],
-                       &scene.valid[row], &scene.category[row],
-                       south ? &scene.elevation_m[row + cols] : no_z.data(),
-                       south ? &scene.valid[row + cols] : no_valid.data(),
-                       north ? &scene.elevation_m[row - cols] : no_z.data(),
-                       north ? &scene.valid[row - cols] : no_valid.data(), &t.texel[row]);
+    texel_row(scene.cols, scene.dx_m, scene.dy_m, &scene.elevation_m[row], &scene.valid[row],
+              &scene.category[row], south ? &scene.elevation_m[row + cols] : no_z.data(),
+              south ? &scene.valid[row + cols] : no_valid.data(),
+              north ? &scene.elevation_m[row - cols] : no_z.data(),
+              north ? &scene.valid[row - cols] : no_valid.data(), &t.texel[row]);
     edge(r, 0);
     if (scene.cols > 1) edge(r, scene.cols - 1);
   }
@@ -342,16 +435,12 @@ RIS_VECTOR_CLONES void sample_span_i32(const float* __restrict tex, int rows, in
   sample_span<std::int32_t>(tex, rows, cols, line, begin, end, out);
 }
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RIS_SAMPLER_AVX512 1
+#ifdef RIS_HAVE_AVX512_KERNELS
 // GCC 12's plain AVX-512 intrinsics pass an undefined register as the
 // unused merge source, which -Wmaybe-uninitialized reports once inlined
 // (a false positive: every lane is written).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-// AVX-512 with the 256-bit forms (VL) and byte, word and doubleword ops (BW,
-// DQ): every AVX-512 CPU but the Xeon Phi (sample_terrain_line checks).
-#define RIS_AVX512 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq")))
 
 // One axis of bilinear_cells for eight samples (its operations lane by lane,
 // so the same bits): the lower cell index, the weight fraction and whether
@@ -364,8 +453,8 @@ struct AxisCells8 {
   __mmask8 upper;
 };
 
-RIS_AVX512 inline AxisCells8 axis_cells8(__m512d a0, __m512d da, __m512d j, __m512d hi,
-                                         __m256i cell_max) {
+RIS_AVX512_KERNEL inline AxisCells8 axis_cells8(__m512d a0, __m512d da, __m512d j, __m512d hi,
+                                                __m256i cell_max) {
   const __m512d zero = _mm512_setzero_pd(), half = _mm512_set1_pd(0.5);
   const __m512d a = _mm512_add_pd(a0, _mm512_mul_pd(j, da));  // GridLine::col / row
   // clamp(a - 1/2, 0, hi): maxpd / minpd return their second operand on a
@@ -380,8 +469,8 @@ RIS_AVX512 inline AxisCells8 axis_cells8(__m512d a0, __m512d da, __m512d j, __m5
 // it mixes eight-lane doubles with sixteen-lane indices and spends a third
 // of its instructions moving masks and halves. Returns the samples done (a
 // multiple of 8).
-RIS_AVX512 int chunk_cells_avx512(int rows, int cols, const GridLine& line, int j0, int n,
-                                  ChunkCells<std::int32_t>& c) {
+RIS_AVX512_KERNEL int chunk_cells_avx512(int rows, int cols, const GridLine& line, int j0, int n,
+                                         ChunkCells<std::int32_t>& c) {
   const BilinearCells<std::int32_t> steps = bilinear_cells<std::int32_t>(rows, cols, 0.5, 0.5);
   const __m512d col0 = _mm512_set1_pd(line.col0), dcol = _mm512_set1_pd(line.dcol);
   const __m512d row0 = _mm512_set1_pd(line.row0), drow = _mm512_set1_pd(line.drow);
@@ -425,9 +514,10 @@ RIS_AVX512 int chunk_cells_avx512(int rows, int cols, const GridLine& line, int 
 // 128-bit pass (a broadcast, a multiply, a compare, an and and an add per
 // corner and sample, then three lane extracts): about a third of the
 // instructions. Returns the samples done (a multiple of 16).
-RIS_AVX512 int weigh_texels_avx512(const float* __restrict tex, const ChunkCells<std::int32_t>& c,
-                                   CornerSteps<std::int32_t> d, int n, int o0,
-                                   const SampledTerrain& out) {
+RIS_AVX512_KERNEL int weigh_texels_avx512(const float* __restrict tex,
+                                          const ChunkCells<std::int32_t>& c,
+                                          CornerSteps<std::int32_t> d, int n, int o0,
+                                          const SampledTerrain& out) {
   // Four samples' weights, each broadcast over its 128-bit lane.
   const __m512i quad[4] = {
       _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3),
@@ -491,9 +581,9 @@ RIS_AVX512 int weigh_texels_avx512(const float* __restrict tex, const ChunkCells
 // The sampler with pass 2 in AVX-512 (pass 1 vectorised by GCC for it:
 // eight double positions a register), the last samples of each chunk by
 // the scalar pass.
-RIS_AVX512 void sample_span_avx512(const float* __restrict tex, int rows, int cols,
-                                   const GridLine& line, int begin, int end,
-                                   const SampledTerrain& out) {
+RIS_AVX512_KERNEL void sample_span_avx512(const float* __restrict tex, int rows, int cols,
+                                          const GridLine& line, int begin, int end,
+                                          const SampledTerrain& out) {
   const CornerSteps<std::int32_t> d = corner_steps<std::int32_t>(rows, cols);
   ChunkCells<std::int32_t> c;
   for (int j0 = begin; j0 < end; j0 += kChunk) {
@@ -516,11 +606,8 @@ void sample_terrain_line(const TerrainTexels& tex, const GridLine& line, int beg
   // 32-bit float indices (4 per cell) where they fit: every scene that
   // fits in memory with its texels up to 2^29 cells.
   if (tex.size() < (std::size_t{1} << 29)) {
-#ifdef RIS_SAMPLER_AVX512
-    static const bool avx512 =
-        __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-        __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq");
-    if (avx512) {
+#ifdef RIS_HAVE_AVX512_KERNELS
+    if (cpu_has_avx512()) {
       sample_span_avx512(t, tex.rows, tex.cols, line, begin, end, out);
       return;
     }

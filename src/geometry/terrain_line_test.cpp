@@ -44,7 +44,7 @@ struct Sampled {
 // as surface_gradient (the vectorised interior and the edges alike) and its
 // category.
 TEST(TerrainLine, TexelsHoldHeightSlopeAndCategoryAsTheSceneAndGradient) {
-  for (int cols : {1, 2, 3, 17}) {
+  for (int cols : {1, 2, 3, 9, 10, 17, 40}) {
     Scene s = plane_scene();
     s.cols = cols;
     s.elevation_m.resize(static_cast<std::size_t>(s.rows * cols));
