@@ -174,6 +174,12 @@ void FadingField::apply_line(float* row, int line) const {
       const std::size_t b = static_cast<std::size_t>(bin);
       double y = 0.0;
       bool drawn = false;
+      // The words of the pixel's stream its first try used, when it ended
+      // without a value (rejected, or v <= 0) and N >= 1: the sampler's next
+      // try starts after them, exactly as in its own loop (a v <= 0 redraws
+      // the normal from the next word, as a new try does; nothing else is
+      // drawn in between and N >= 1 draws no boost). 0: draw the pixel anew.
+      int words_used = 0;
       // ziggurat_normal's common case: the value's word, the layer's word.
       const auto hz = static_cast<std::int32_t>(w[0][i]);
       const std::uint32_t layer = w[1][i] & 127u;
@@ -191,10 +197,12 @@ void FadingField::apply_line(float* row, int line) const {
           // d v).
           const GammaSampler& g = gamma_[b];
           double v = 1.0 + g.c() * x;
+          words_used = 2;
           if (v > 0.0) {
             v = v * v * v;
             const double u = (static_cast<double>(w[2][i]) + 0.5) * 0x1.0p-32;
             const double x2 = x * x;
+            words_used = 3;
             // The squeeze, then (as GammaSampler, with the same values) the
             // logarithmic test before any further draw.
             if (u < 1.0 - 0.0331 * x2 * x2 ||
@@ -206,9 +214,11 @@ void FadingField::apply_line(float* row, int line) const {
         }
       }
       if (!drawn) {
-        // Everything else: the pixel's whole draw again, from its stream.
+        // Everything else: the draw goes on from the pixel's stream (after
+        // the first try's words) or starts again there.
         CounterRng rng(seed_, static_cast<std::uint32_t>(bin), line_key, CounterRng::kFadingStream,
                        {w[0][i], w[1][i], w[2][i], w[3][i]});
+        for (int k = 0; k < words_used; ++k) rng.next_u32();
         if (exact) {
           y = gamma_[b](rng, zig) / looks_[b];
         } else {
