@@ -11,6 +11,10 @@
 #include "ris/util/vector_clones.h"
 
 #if defined(__x86_64__)
+// GCC 12's AVX-512 intrinsics pass _mm512_undefined_*() as the masked-off
+// source of the unmasked forms, which -Wmaybe-uninitialized reports once they
+// are inlined (GCC bug 105593, fixed in GCC 13): a false positive.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <immintrin.h>
 #endif
 
@@ -337,6 +341,82 @@ __attribute__((target("avx2"))) int emit_line_avx2(const EmitRows& r, int k, int
   }
   return b;
 }
+
+#define RIS_AVX512 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq")))
+// emit_line_avx2 eight bins at a time with AVX-512 (the same operations in
+// the same order, eight lanes; the mask bytes from mask registers): about
+// half the instructions per bin. The caller finishes with emit_line_avx2's
+// quads and emit_pixel.
+RIS_AVX512 inline bool all_lanes_equal8(__m256i v) {
+  return _mm256_cmpeq_epi32_mask(v, _mm256_permutevar8x32_epi32(v, _mm256_setzero_si256())) == 0xff;
+}
+RIS_AVX512 inline __m512d integral8(const double* c, std::size_t at, std::size_t stride,
+                                    __m512d f) {
+  const __m512d c0 = _mm512_loadu_pd(c + at), c1 = _mm512_loadu_pd(c + at + stride);
+  return _mm512_add_pd(c0, _mm512_mul_pd(f, _mm512_sub_pd(c1, c0)));
+}
+RIS_AVX512 inline __m256i count8(const int* c, std::size_t lo, std::size_t hi) {
+  return _mm256_sub_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(c + hi)),
+                          _mm256_loadu_si256(reinterpret_cast<const __m256i*>(c + lo)));
+}
+
+RIS_AVX512 int emit_line_avx512(const EmitRows& r, int k, int begin, int end, float* power,
+                                float* area, std::uint8_t* mask) {
+  const __m512d zero = _mm512_setzero_pd(), half_line = _mm512_set1_pd(0.5);
+  const __m512d lines_d = _mm512_set1_pd(double(r.lines));
+  const __m256i last = _mm256_set1_epi32(r.lines - 1);
+  const __m512d kd = _mm512_set1_pd(double(k));
+  const std::size_t stride = static_cast<std::size_t>(r.bins);
+  constexpr int kFloor = _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC;
+  constexpr int kCeil = _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC;
+  int b = begin;
+  for (; b + 8 <= end; b += 8) {
+    const __m512d half = _mm512_loadu_pd(r.half + b);
+    const __m512d a = _mm512_sub_pd(kd, half), e = _mm512_add_pd(kd, half);
+    const __m512d ya = _mm512_min_pd(lines_d, _mm512_max_pd(zero, _mm512_add_pd(a, half_line)));
+    const __m512d ye = _mm512_min_pd(lines_d, _mm512_max_pd(zero, _mm512_add_pd(e, half_line)));
+    const __m256i ia = _mm256_min_epi32(_mm512_cvttpd_epi32(ya), last);
+    const __m256i ie = _mm256_min_epi32(_mm512_cvttpd_epi32(ye), last);
+    const __m256i j_lo = _mm256_max_epi32(
+        _mm256_setzero_si256(), _mm256_add_epi32(_mm512_cvttpd_epi32(_mm512_roundscale_pd(
+                                                     _mm512_sub_pd(a, half_line), kFloor)),
+                                                 _mm256_set1_epi32(1)));
+    const __m256i j_hi = _mm256_min_epi32(
+        last, _mm256_sub_epi32(
+                  _mm512_cvttpd_epi32(_mm512_roundscale_pd(_mm512_add_pd(e, half_line), kCeil)),
+                  _mm256_set1_epi32(1)));
+    if (!(all_lanes_equal8(ia) && all_lanes_equal8(ie) && all_lanes_equal8(j_lo) &&
+          all_lanes_equal8(j_hi))) {
+      for (int bb = b; bb < b + 8; ++bb) emit_pixel(r, k, bb, power, area, mask);
+      continue;
+    }
+    const std::size_t ra = r.row(_mm256_cvtsi256_si32(ia)) + static_cast<std::size_t>(b);
+    const std::size_t re = r.row(_mm256_cvtsi256_si32(ie)) + static_cast<std::size_t>(b);
+    const __m512d fa = _mm512_sub_pd(ya, _mm512_cvtepi32_pd(ia));
+    const __m512d fe = _mm512_sub_pd(ye, _mm512_cvtepi32_pd(ie));
+    _mm256_storeu_ps(power + b, _mm512_cvtpd_ps(_mm512_sub_pd(integral8(r.cum, re, stride, fe),
+                                                              integral8(r.cum, ra, stride, fa))));
+    _mm256_storeu_ps(area + b,
+                     _mm512_cvtpd_ps(_mm512_sub_pd(integral8(r.cum_area, re, stride, fe),
+                                                   integral8(r.cum_area, ra, stride, fa))));
+    const std::size_t lo = r.row(_mm256_cvtsi256_si32(j_lo)) + static_cast<std::size_t>(b);
+    const std::size_t hi = r.row(_mm256_cvtsi256_si32(j_hi) + 1) + static_cast<std::size_t>(b);
+    const __m256i data = count8(r.cum_data, lo, hi), visible = count8(r.cum_visible, lo, hi),
+                  layover = count8(r.cum_layover, lo, hi);
+    const __m256i z = _mm256_setzero_si256();
+    const __mmask8 no_data = _mm256_cmpeq_epi32_mask(data, z);
+    const __mmask8 shadow = static_cast<__mmask8>(_mm256_cmpgt_epi32_mask(data, z) &
+                                                  _mm256_cmpeq_epi32_mask(visible, z));
+    const __mmask8 laid = _mm256_cmpgt_epi32_mask(layover, z);
+    const __m128i m = _mm_or_si128(
+        _mm_or_si128(
+            _mm_maskz_mov_epi8(no_data, _mm_set1_epi8(static_cast<char>(pixel_flag::kNoData))),
+            _mm_maskz_mov_epi8(shadow, _mm_set1_epi8(static_cast<char>(pixel_flag::kShadow)))),
+        _mm_maskz_mov_epi8(laid, _mm_set1_epi8(static_cast<char>(pixel_flag::kLayover))));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(mask + b), m);
+  }
+  return b;
+}
 #endif
 
 }  // namespace
@@ -358,6 +438,9 @@ void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2,
   const int first = emitted_;
 #ifdef RIS_AZIMUTH_AVX2
   static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx512 =
+      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+      __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq");
 #endif
   // Dynamic blocks of lines (see render_slar); each line is independent.
 #pragma omp parallel for schedule(dynamic, 16) if (threaded_)
@@ -378,7 +461,8 @@ void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2,
     std::fill(m, m + begin, pixel_flag::kNoData);
     int b0 = begin;
 #ifdef RIS_AZIMUTH_AVX2
-    if (avx2) b0 = emit_line_avx2(rows, k, begin, end, power, area, m);
+    if (avx512) b0 = emit_line_avx512(rows, k, b0, end, power, area, m);
+    if (avx2) b0 = emit_line_avx2(rows, k, b0, end, power, area, m);
 #endif
     for (int b = b0; b < end; ++b) emit_pixel(rows, k, b, power, area, m);
     std::fill(power + end, power + bins, 0.0f);
