@@ -9,11 +9,13 @@
 #include "ris/util/vector_clones.h"
 #include "util/vec8.h"
 
-#if defined(__x86_64__)
 // GCC 12's AVX-512 intrinsics pass _mm512_undefined_*() as the masked-off
 // source of the unmasked forms, which -Wmaybe-uninitialized reports once they
-// are inlined (GCC bug 105593, fixed in GCC 13): a false positive.
+// are inlined (GCC bug 105593, fixed in GCC 13): a false positive. (Before
+// the intrinsics' headers, whose lines the warning points at.)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include "ris/util/avx512.h"
+#if defined(__x86_64__)
 #include <immintrin.h>
 #endif
 
@@ -277,9 +279,7 @@ RIS_VECTOR_CLONES void backward_scan(int n, const float* __restrict range,
   }
 }
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RIS_SCAN_AVX512 1
-#define RIS_AVX512 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq")))
+#ifdef RIS_HAVE_AVX512_KERNELS
 
 // The scans sixteen samples at a time with AVX-512: the same tests as
 // forward_scan and backward_scan (and cot_look_angle's operations: one
@@ -291,21 +291,21 @@ RIS_VECTOR_CLONES void backward_scan(int n, const float* __restrict range,
 // min / max per block, off the block's own scan.
 
 // Inclusive prefix min / max and suffix min of the lanes.
-RIS_AVX512 inline __m512d prefix_min8(__m512d x) {
+RIS_AVX512_KERNEL inline __m512d prefix_min8(__m512d x) {
   const __m512i inf = _mm512_castpd_si512(_mm512_set1_pd(std::numeric_limits<double>::infinity()));
   const __m512i xi = _mm512_castpd_si512(x);
   x = _mm512_min_pd(x, _mm512_castsi512_pd(_mm512_alignr_epi64(xi, inf, 7)));
   x = _mm512_min_pd(x, _mm512_castsi512_pd(_mm512_alignr_epi64(_mm512_castpd_si512(x), inf, 6)));
   return _mm512_min_pd(x, _mm512_castsi512_pd(_mm512_alignr_epi64(_mm512_castpd_si512(x), inf, 4)));
 }
-RIS_AVX512 inline __m512 prefix_max16(__m512 x) {
+RIS_AVX512_KERNEL inline __m512 prefix_max16(__m512 x) {
   const __m512i lo = _mm512_castps_si512(_mm512_set1_ps(-std::numeric_limits<float>::infinity()));
   x = _mm512_max_ps(x, _mm512_castsi512_ps(_mm512_alignr_epi32(_mm512_castps_si512(x), lo, 15)));
   x = _mm512_max_ps(x, _mm512_castsi512_ps(_mm512_alignr_epi32(_mm512_castps_si512(x), lo, 14)));
   x = _mm512_max_ps(x, _mm512_castsi512_ps(_mm512_alignr_epi32(_mm512_castps_si512(x), lo, 12)));
   return _mm512_max_ps(x, _mm512_castsi512_ps(_mm512_alignr_epi32(_mm512_castps_si512(x), lo, 8)));
 }
-RIS_AVX512 inline __m512 suffix_min16(__m512 x) {
+RIS_AVX512_KERNEL inline __m512 suffix_min16(__m512 x) {
   const __m512i hi = _mm512_castps_si512(_mm512_set1_ps(std::numeric_limits<float>::infinity()));
   x = _mm512_min_ps(x, _mm512_castsi512_ps(_mm512_alignr_epi32(hi, _mm512_castps_si512(x), 1)));
   x = _mm512_min_ps(x, _mm512_castsi512_ps(_mm512_alignr_epi32(hi, _mm512_castps_si512(x), 2)));
@@ -315,8 +315,8 @@ RIS_AVX512 inline __m512 suffix_min16(__m512 x) {
 
 // cot psi of eight samples from j (cot_look_angle's rule), +inf where not
 // taken.
-RIS_AVX512 inline __m512d cot8(__m256 h, __m512d j, __m512d first_u, __m512d step, __m512d H,
-                               __mmask8 take) {
+RIS_AVX512_KERNEL inline __m512d cot8(__m256 h, __m512d j, __m512d first_u, __m512d step, __m512d H,
+                                      __mmask8 take) {
   const __m512d c = _mm512_div_pd(_mm512_sub_pd(H, _mm512_cvtps_pd(h)),
                                   _mm512_add_pd(first_u, _mm512_mul_pd(j, step)));
   return _mm512_mask_mov_pd(_mm512_set1_pd(std::numeric_limits<double>::infinity()), take, c);
@@ -324,9 +324,10 @@ RIS_AVX512 inline __m512d cot8(__m256 h, __m512d j, __m512d first_u, __m512d ste
 
 // forward_scan over samples [0, n), n a multiple of 16, cot psi computed
 // here.
-RIS_AVX512 void forward_scan_avx512(int n, double first_u, double step, double H,
-                                    const float* __restrict h, const float* __restrict range,
-                                    std::uint8_t* __restrict flags, double& cot_min, float& max_r) {
+RIS_AVX512_KERNEL void forward_scan_avx512(int n, double first_u, double step, double H,
+                                           const float* __restrict h, const float* __restrict range,
+                                           std::uint8_t* __restrict flags, double& cot_min,
+                                           float& max_r) {
   const __m512d first_v = _mm512_set1_pd(first_u), step_v = _mm512_set1_pd(step),
                 H_v = _mm512_set1_pd(H);
   const __m512i last_d = _mm512_set1_epi64(7), last_f = _mm512_set1_epi32(15);
@@ -368,8 +369,8 @@ RIS_AVX512 void forward_scan_avx512(int n, double first_u, double step, double H
 }
 
 // backward_scan over samples [0, n), n a multiple of 16.
-RIS_AVX512 void backward_scan_avx512(int n, const float* __restrict range,
-                                     std::uint8_t* __restrict flags, float min_r) {
+RIS_AVX512_KERNEL void backward_scan_avx512(int n, const float* __restrict range,
+                                            std::uint8_t* __restrict flags, float min_r) {
   const __m512 inf = _mm512_set1_ps(std::numeric_limits<float>::infinity());
   const __m128i skip = _mm_set1_epi8(static_cast<char>(kSkip));
   const __m128i layover_bit = _mm_set1_epi8(static_cast<char>(sample_flag::kLayover));
@@ -409,18 +410,15 @@ void mark_shadow_and_layover(const LineSamples& l, ScanKernel kernel) {
   const float* __restrict range = l.slant_range_m;
   const float* __restrict height = l.height_m;
   bool wide = false;
-#ifdef RIS_SCAN_AVX512
-  static const bool avx512 =
-      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-      __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq");
-  wide = avx512 && kernel == ScanKernel::best;
+#ifdef RIS_HAVE_AVX512_KERNELS
+  wide = cpu_has_avx512() && kernel == ScanKernel::best;
 #endif
   const int lanes = wide ? 16 : kLanes;
   const int full = l.samples / lanes * lanes;
   double cot_min = std::numeric_limits<double>::infinity();
   float max_r = -std::numeric_limits<float>::infinity();
   if (wide) {
-#ifdef RIS_SCAN_AVX512
+#ifdef RIS_HAVE_AVX512_KERNELS
     forward_scan_avx512(full, l.first_u_m, l.step_m, l.altitude_m, height, range, flags, cot_min,
                         max_r);
 #endif
@@ -455,7 +453,7 @@ void mark_shadow_and_layover(const LineSamples& l, ScanKernel kernel) {
     min_r = std::min(min_r, take ? r : min_r);
   }
   if (wide) {
-#ifdef RIS_SCAN_AVX512
+#ifdef RIS_HAVE_AVX512_KERNELS
     backward_scan_avx512(full, range, flags, min_r);
 #endif
   } else {

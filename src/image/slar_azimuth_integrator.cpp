@@ -10,11 +10,13 @@
 #include "ris/util/error.h"
 #include "ris/util/vector_clones.h"
 
-#if defined(__x86_64__)
 // GCC 12's AVX-512 intrinsics pass _mm512_undefined_*() as the masked-off
 // source of the unmasked forms, which -Wmaybe-uninitialized reports once they
-// are inlined (GCC bug 105593, fixed in GCC 13): a false positive.
+// are inlined (GCC bug 105593, fixed in GCC 13): a false positive. (Before
+// the intrinsics' headers, whose lines the warning points at.)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include "ris/util/avx512.h"
+#if defined(__x86_64__)
 #include <immintrin.h>
 #endif
 
@@ -342,26 +344,25 @@ __attribute__((target("avx2"))) int emit_line_avx2(const EmitRows& r, int k, int
   return b;
 }
 
-#define RIS_AVX512 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq")))
 // emit_line_avx2 eight bins at a time with AVX-512 (the same operations in
 // the same order, eight lanes; the mask bytes from mask registers): about
 // half the instructions per bin. The caller finishes with emit_line_avx2's
 // quads and emit_pixel.
-RIS_AVX512 inline bool all_lanes_equal8(__m256i v) {
+RIS_AVX512_KERNEL inline bool all_lanes_equal8(__m256i v) {
   return _mm256_cmpeq_epi32_mask(v, _mm256_permutevar8x32_epi32(v, _mm256_setzero_si256())) == 0xff;
 }
-RIS_AVX512 inline __m512d integral8(const double* c, std::size_t at, std::size_t stride,
-                                    __m512d f) {
+RIS_AVX512_KERNEL inline __m512d integral8(const double* c, std::size_t at, std::size_t stride,
+                                           __m512d f) {
   const __m512d c0 = _mm512_loadu_pd(c + at), c1 = _mm512_loadu_pd(c + at + stride);
   return _mm512_add_pd(c0, _mm512_mul_pd(f, _mm512_sub_pd(c1, c0)));
 }
-RIS_AVX512 inline __m256i count8(const int* c, std::size_t lo, std::size_t hi) {
+RIS_AVX512_KERNEL inline __m256i count8(const int* c, std::size_t lo, std::size_t hi) {
   return _mm256_sub_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(c + hi)),
                           _mm256_loadu_si256(reinterpret_cast<const __m256i*>(c + lo)));
 }
 
-RIS_AVX512 int emit_line_avx512(const EmitRows& r, int k, int begin, int end, float* power,
-                                float* area, std::uint8_t* mask) {
+RIS_AVX512_KERNEL int emit_line_avx512(const EmitRows& r, int k, int begin, int end, float* power,
+                                       float* area, std::uint8_t* mask) {
   const __m512d zero = _mm512_setzero_pd(), half_line = _mm512_set1_pd(0.5);
   const __m512d lines_d = _mm512_set1_pd(double(r.lines));
   const __m256i last = _mm256_set1_epi32(r.lines - 1);
@@ -438,9 +439,7 @@ void SlarAzimuthIntegrator::emit(int count, float* mean_power_w, float* area_m2,
   const int first = emitted_;
 #ifdef RIS_AZIMUTH_AVX2
   static const bool avx2 = __builtin_cpu_supports("avx2");
-  static const bool avx512 =
-      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-      __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq");
+  static const bool avx512 = cpu_has_avx512();
 #endif
   // Dynamic blocks of lines (see render_slar); each line is independent.
 #pragma omp parallel for schedule(dynamic, 16) if (threaded_)
