@@ -534,26 +534,37 @@ RIS_AVX512_KERNEL int weigh_texels_avx512(const float* __restrict tex,
   const __m512i high_halves =
       _mm512_setr_epi32(8, 9, 10, 11, 12, 13, 14, 15, 24, 25, 26, 27, 28, 29, 30, 31);
   const __m512 zero = _mm512_setzero_ps();
-  const std::int32_t offset[4] = {0, d.d1, d.d2, d.d3};
-  const float* const weight[4] = {c.w0, c.w1, c.w2, c.w3};
+  // Local copies: a store through one output would otherwise make GCC
+  // reload the others from `out`.
+  float* __restrict height = out.height_m;
+  float* __restrict dz_dx = out.dz_dx;
+  float* __restrict dz_dy = out.dz_dy;
+  std::uint16_t* __restrict category = out.category;
+  std::uint8_t* __restrict flags = out.flags;
   int k = 0;
   for (; k + 16 <= n; k += 16) {
-    __m512 acc[4] = {zero, zero, zero, zero};
+    const __m512 w16[4] = {_mm512_load_ps(c.w0 + k), _mm512_load_ps(c.w1 + k),
+                           _mm512_load_ps(c.w2 + k), _mm512_load_ps(c.w3 + k)};
+    __m512 acc[4];
+    // Group by group of four samples (four corner pointers live at a time).
 #pragma GCC unroll 4
-    for (int corner = 0; corner < 4; ++corner) {
-      const __m512 w16 = _mm512_load_ps(weight[corner] + k);
-      const std::int32_t off = offset[corner];
+    for (int g = 0; g < 4; ++g) {
+      const float* const p[4] = {tex + c.first[k + 4 * g], tex + c.first[k + 4 * g + 1],
+                                 tex + c.first[k + 4 * g + 2], tex + c.first[k + 4 * g + 3]};
+      const std::int32_t offset[4] = {0, d.d1, d.d2, d.d3};
+      __m512 a = zero;
 #pragma GCC unroll 4
-      for (int g = 0; g < 4; ++g) {
-        const std::int32_t* const f = c.first + k + 4 * g;
-        __m512 t = _mm512_castps128_ps512(_mm_loadu_ps(tex + f[0] + off));
-        t = _mm512_insertf32x4(t, _mm_loadu_ps(tex + f[1] + off), 1);
-        t = _mm512_insertf32x4(t, _mm_loadu_ps(tex + f[2] + off), 2);
-        t = _mm512_insertf32x4(t, _mm_loadu_ps(tex + f[3] + off), 3);
-        const __m512 w = _mm512_permutexvar_ps(quad[g], w16);
+      for (int corner = 0; corner < 4; ++corner) {
+        const std::int32_t off = offset[corner];
+        __m512 t = _mm512_castps128_ps512(_mm_loadu_ps(p[0] + off));
+        t = _mm512_insertf32x4(t, _mm_loadu_ps(p[1] + off), 1);
+        t = _mm512_insertf32x4(t, _mm_loadu_ps(p[2] + off), 2);
+        t = _mm512_insertf32x4(t, _mm_loadu_ps(p[3] + off), 3);
+        const __m512 w = _mm512_permutexvar_ps(quad[g], w16[corner]);
         const __mmask16 keep = _mm512_cmp_ps_mask(w, zero, _CMP_GT_OQ);
-        acc[g] = _mm512_mask_add_ps(acc[g], keep, acc[g], _mm512_mul_ps(w, t));
+        a = _mm512_mask_add_ps(a, keep, a, _mm512_mul_ps(w, t));
       }
+      acc[g] = a;
     }
     const __m512 hg01 = _mm512_permutex2var_ps(acc[0], h_gx, acc[1]);
     const __m512 hg23 = _mm512_permutex2var_ps(acc[2], h_gx, acc[3]);
@@ -561,9 +572,9 @@ RIS_AVX512_KERNEL int weigh_texels_avx512(const float* __restrict tex,
     const __m512 y23 = _mm512_permutex2var_ps(acc[2], gy, acc[3]);
     const __m512 h = _mm512_permutex2var_ps(hg01, low_halves, hg23);
     const int o = o0 + k;
-    _mm512_storeu_ps(out.height_m + o, h);
-    _mm512_storeu_ps(out.dz_dx + o, _mm512_permutex2var_ps(hg01, high_halves, hg23));
-    _mm512_storeu_ps(out.dz_dy + o, _mm512_permutex2var_ps(y01, low_halves, y23));
+    _mm512_storeu_ps(height + o, h);
+    _mm512_storeu_ps(dz_dx + o, _mm512_permutex2var_ps(hg01, high_halves, hg23));
+    _mm512_storeu_ps(dz_dy + o, _mm512_permutex2var_ps(y01, low_halves, y23));
     const __mmask16 no_data = _mm512_cmp_ps_mask(h, h, _CMP_UNORD_Q);
     // The nearest cells' categories by scalar loads (an AVX-512 gather is
     // slower on this EPYC), zero where no data.
@@ -571,8 +582,8 @@ RIS_AVX512_KERNEL int weigh_texels_avx512(const float* __restrict tex,
     for (int i = 0; i < 16; ++i) nearest_category[i] = tex[c.nearest[k + i]];
     const __m512i cat = _mm512_maskz_cvttps_epi32(static_cast<__mmask16>(~no_data),
                                                   _mm512_load_ps(nearest_category));
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.category + o), _mm512_cvtepi32_epi16(cat));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(out.flags + o),
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(category + o), _mm512_cvtepi32_epi16(cat));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(flags + o),
                      _mm512_cvtepi32_epi8(_mm512_maskz_set1_epi32(no_data, sample_flag::kNoData)));
   }
   return k;

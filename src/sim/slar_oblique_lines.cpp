@@ -31,13 +31,62 @@ std::pair<double, double> affine_range(double a0, double da, double lo, double h
   return (a0 >= lo && a0 <= hi) ? std::pair{-kAll, kAll} : std::pair{kAll, -kAll};
 }
 
-// [floor(a) - 2, ceil(b) + 2] clamped to [0, n): a candidate range whose two
-// cells of margin cover the rounding of the analytic bounds; each candidate
-// is then checked exactly.
+// [floor(a) - 1, ceil(b) + 1] clamped to [0, n): a candidate range whose
+// cell of margin covers the rounding of the analytic bounds (~1e-12 cells);
+// each candidate is then checked exactly. Empty (first == second) when b is
+// well below a.
 std::pair<int, int> candidates(std::pair<double, double> ab, int n) {
-  const double a = std::clamp(std::floor(ab.first) - 2.0, 0.0, double(n));
-  const double b = std::clamp(std::ceil(ab.second) + 3.0, 0.0, double(n));
-  return {static_cast<int>(a), static_cast<int>(b)};
+  const double a = std::clamp(std::floor(ab.first) - 1.0, 0.0, double(n));
+  const double b = std::clamp(std::ceil(ab.second) + 2.0, 0.0, double(n));
+  return {static_cast<int>(a), static_cast<int>(std::max(a, b))};
+}
+
+// Shrinks [c_begin, c_end) to the cells where `takes` holds, given that they
+// are one interval within it.
+template <typename Takes>
+void trim(int& c_begin, int& c_end, Takes takes) {
+  while (c_begin < c_end && !takes(c_begin)) ++c_begin;
+  while (c_end > c_begin && !takes(c_end - 1)) --c_end;
+}
+
+// The cells of scene row r that take a line and a sample (cell_sample): one
+// interval of columns, as both indices are monotone in the column; every
+// other cell of the row is outside the swath.
+std::pair<int, int> swath_cells(const Scene& scene, const CellSampleFrame& f, int r) {
+  const double lbase = f.line_row_base(r), sbase = f.sample_row_base(r);
+  const auto [l_lo, l_hi] = affine_range(lbase, f.line_dc, -0.5, f.lines - 0.5);
+  const auto [s_lo, s_hi] = affine_range(sbase, f.sample_dc, -0.5, f.samples - 0.5);
+  auto [c_begin, c_end] = candidates({std::max(l_lo, s_lo), std::min(l_hi, s_hi)}, scene.cols);
+  trim(c_begin, c_end, [&](int c) {
+    int line = 0, j = 0;
+    return nearest_index(f.line_f(lbase, c), f.lines, line) &&
+           nearest_index(f.sample_f(sbase, c), f.samples, j);
+  });
+  return {c_begin, c_end};
+}
+
+// Marks the cells of each row outside its swath_cells (the blocks write all
+// the others).
+void fill_outside_swath(const Scene& scene, const CellSampleFrame& f, SceneGeometryMaps& maps) {
+  // Raw pointers: a byte store may alias a vector's own data pointer, which
+  // would otherwise be reloaded per cell.
+  std::uint8_t* const mask = maps.mask.data();
+  float* const incidence = maps.local_incidence_deg.data();
+  const std::uint8_t* const valid = scene.valid.data();
+#pragma omp parallel for schedule(static)
+  for (int r = 0; r < scene.rows; ++r) {
+    const auto [c_begin, c_end] = swath_cells(scene, f, r);
+    const std::size_t row = scene.index(r, 0);
+    const auto outside = [&](int c0, int c1) {
+      for (std::size_t i = row + static_cast<std::size_t>(c0);
+           i < row + static_cast<std::size_t>(c1); ++i) {
+        mask[i] = (valid[i] ? 0 : scene_flag::kNoData) | scene_flag::kOutsideSwath;
+        incidence[i] = kNaN;
+      }
+    };
+    outside(0, c_begin);
+    outside(c_end, scene.cols);
+  }
 }
 
 // One block of lines' scene-map values, dense: row k (line line0 + k) holds
@@ -168,13 +217,11 @@ void scatter_block(const Scene& scene, const CellSampleFrame& f, const BlockMapV
     // The cells that take a line of this block and a sample (cell_sample's
     // rule): an interval of the candidates, since both indices are monotone
     // in the column; trim its ends exactly.
-    const auto takes = [&](int c) {
+    trim(c_begin, c_end, [&](int c) {
       int line = 0, j = 0;
       return nearest_index(f.line_f(lbase, c), f.lines, line) && line >= l0 && line < l1 &&
              nearest_index(f.sample_f(sbase, c), f.samples, j);
-    };
-    while (c_begin < c_end && !takes(c_begin)) ++c_begin;
-    while (c_end > c_begin && !takes(c_end - 1)) --c_end;
+    });
     if (c_begin == c_end) continue;
     const std::size_t row = scene.index(r, 0);
     scatter_run(lbase, f.line_dc, sbase, f.sample_dc, c_begin, c_end, b, scene.valid.data() + row,
@@ -202,18 +249,9 @@ void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lu
   const LineLookFrame look{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
   const bool need_incidence = !gain2.uniform();
   const double near_m = p.range.near_m, far_m = p.range.far_m();
-  // Every cell starts outside the swath; the blocks overwrite theirs. Raw
-  // pointers: a byte store may alias a vector's own data pointer, which
-  // would otherwise be reloaded per cell.
-  const auto n_cells = static_cast<std::int64_t>(scene.size());
-  std::uint8_t* const mask = maps.mask.data();
-  float* const incidence = maps.local_incidence_deg.data();
-  const std::uint8_t* const valid = scene.valid.data();
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < n_cells; ++i) {
-    mask[i] = (valid[i] ? 0 : scene_flag::kNoData) | scene_flag::kOutsideSwath;
-    incidence[i] = kNaN;
-  }
+  // Each row's cells outside the swath here, the others by the blocks
+  // (each cell by one: not written twice).
+  fill_outside_swath(scene, frame, maps);
   const int blocks = (g.lines + kBlockLines - 1) / kBlockLines;
   std::int64_t in_swath = 0;
 #pragma omp parallel reduction(+ : in_swath)
