@@ -3,9 +3,10 @@
 // 2000 scene (2000 elements over 488 range bins, rough terrain): image
 // formation of a line (form_line_profile, src/image/slar_element.h) and the
 // cast-shadow and layover scans (mark_shadow_and_layover). Items per second
-// are elements. BM_LineFormProfile/2: the same line sampled at half steps
+// are elements. BM_LineFormProfile/2/x: the same line sampled at half steps
 // (4000 elements over the 488 bins), as an oblique track samples its lines
-// (MODEL.md section 2).
+// (MODEL.md section 2); /x/1 with a gaussian elevation pattern, /x/0 with
+// a uniform one (the seed's radars, `ris bench`: no gain lookups).
 //
 //   build/bench/ris_bench_kernels --benchmark_filter=Line
 #include <benchmark/benchmark.h>
@@ -84,7 +85,9 @@ void BM_LineFormProfile(benchmark::State& state) {
   p.transmit_power_w = 1e5;
   p.wavelength_m = 0.032;
   p.peak_gain = 1000.0;
-  p.elevation_gain = [](double beta) { return std::exp(-std::pow((beta - 1.3) / 0.3, 2)); };
+  if (state.range(1) != 0) {
+    p.elevation_gain = [](double beta) { return std::exp(-std::pow((beta - 1.3) / 0.3, 2)); };
+  }
   const ris::TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, "bench");
   const ris::detail::SlarElementContext ctx = ris::detail::element_context(p, gain2, lut, kBins);
   ris::detail::LineElementScratch scratch(line.samples, kBins);
@@ -124,5 +127,5 @@ void BM_LineShadowAndLayover(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_LineFormProfile)->Arg(1)->Arg(2);
+BENCHMARK(BM_LineFormProfile)->Args({1, 1})->Args({2, 1})->Args({2, 0});
 BENCHMARK(BM_LineShadowAndLayover);

@@ -49,9 +49,6 @@ LineElementScratch::LineElementScratch(int samples, int bins_)
       frac_next(first.size()),
       ratio(first.size()),
       area(first.size()),
-      power(first.size()),
-      lo(2 * first.size()),
-      hi(2 * first.size()),
       acc(2 * kCopies * stride(), 0.0),
       counts(kCopies * stride(), 0),
       touch(counts.size(), 0) {
@@ -283,52 +280,44 @@ RIS_V4_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
   }
 }
 
-// Pass 2: each element's power P_i = ratio k_radar 2^-40 (0 where not
-// visible: its ratio is 0) and its (power, area) split between b0 and
-// b0 + 1, in double (a loop GCC vectorises).
-RIS_VECTOR_CLONES void power_pass(int n, double power_scale, const float* __restrict ratio,
-                                  const float* __restrict area, const float* __restrict frac_next,
-                                  double* __restrict power, double* __restrict lo,
-                                  double* __restrict hi) {
-  for (int j = 0; j < n; ++j) {
-    const double p = double(ratio[j]) * power_scale;
-    power[j] = p;
-    const double frac = frac_next[j];
-    const double ph = p * frac, ah = double(area[j]) * frac;
-    const auto k = 2 * static_cast<std::size_t>(j);
-    lo[k] = p - ph;
-    lo[k + 1] = double(area[j]) - ah;
-    hi[k] = ph;
-    hi[k + 1] = ah;
-  }
+// An element's power P_i = ratio k_radar 2^-40 from its
+// element_power_ratio (SlarElementContext::power_scale; 0 where not
+// visible: its ratio is 0).
+inline double element_power(double power_scale, float ratio) {
+  return double(ratio) * power_scale;
 }
 
-// Pass 3: the fast elements [j0, j0 + n) into the four copies, element j
+// Pass 2: the fast elements [j0, j0 + n) into the four copies, element j
 // into copy (first_index + j) % 4
 // (consecutive elements usually share a bin: in one copy each add would wait
 // for the previous one's store). Elements without a bin add to the spare
-// bin `bins`.
-void scatter_pass(int j0, int n, int first_index, LineElementScratch& s) {
+// bin `bins`. Each element's (power, area) split between b0 and b0 + 1 in
+// double here, as it is added (a pass of its own that stored the two
+// pairs cost more than the scatter's extra arithmetic: this loop waits on
+// its read-modify-writes).
+void scatter_pass(int j0, int n, int first_index, double power_scale, LineElementScratch& s) {
   using D2 = double __attribute__((vector_size(16)));
   const std::size_t stride = s.stride();
   const std::int32_t* __restrict first = s.first.data();
   const std::int32_t* __restrict centre = s.centre.data();
   const std::int32_t* __restrict code = s.code.data();
-  const double* __restrict lo = s.lo.data();
-  const double* __restrict hi = s.hi.data();
+  const float* __restrict ratio = s.ratio.data();
+  const float* __restrict area = s.area.data();
+  const float* __restrict frac_next = s.frac_next.data();
   double* __restrict acc = s.acc.data();
   std::uint8_t* __restrict touch = s.touch.data();
   std::uint64_t* __restrict counts = s.counts.data();
-  const auto add = [](double* a, const double* x) {
-    vec8::store(a, vec8::load<D2>(a) + vec8::load<D2>(x));
-  };
+  const auto add = [](double* a, D2 x) { vec8::store(a, vec8::load<D2>(a) + x); };
   const auto one = [&](int j, std::size_t q) {
     const std::size_t jj = static_cast<std::size_t>(j);
     const std::size_t b = q * stride + static_cast<std::size_t>(first[jj]);
-    // The (power, area) pairs: the same two additions per bin as two
-    // scalar arrays, in one instruction.
-    add(acc + 2 * b, lo + 2 * jj);
-    add(acc + 2 * b + 2, hi + 2 * jj);
+    // P_i and the (power, area) pair split by the fraction in b0 + 1; the
+    // pairs added as two scalar arrays would be, in one instruction each.
+    const D2 pa = {element_power(power_scale, ratio[jj]), double(area[jj])};
+    const D2 h = pa * double(frac_next[jj]);
+    const D2 l = pa - h;
+    add(acc + 2 * b, l);
+    add(acc + 2 * b + 2, h);
     const std::int32_t c = code[jj];
     // The two bins' touch bits as one 16-bit OR (little-endian: the first
     // bin's in the low byte, as code holds them).
@@ -355,7 +344,7 @@ void scatter_pass(int j0, int n, int first_index, LineElementScratch& s) {
   for (; j < j1; ++j) one(j, copy(j));
 }
 
-// Pass 5: the copies summed into the line's outputs, and zeroed for the next
+// Pass 4: the copies summed into the line's outputs, and zeroed for the next
 // line; one loop per type, so that each vectorises.
 RIS_VECTOR_CLONES void merge_pass(int bins, std::size_t stride, double* __restrict acc,
                                   std::uint64_t* __restrict counts, std::uint8_t* __restrict touch,
@@ -399,7 +388,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   RIS_CHECK(s.bins == bins && s.first.size() >= static_cast<std::size_t>(n));
   LineElementTally t;
   const Sigma0Lut& lut = *c.lut;
-  // Passes 1-3 a chunk of elements at a time, so that what one pass writes
+  // Passes 1-2 a chunk of elements at a time, so that what one pass writes
   // is still in the L1 cache when the next reads it (a whole line's
   // per-element arrays are ~200 KB).
   const PowerTables pt{!lut.empty(),         c.gain2->uniform(),    c.g2_uniform,
@@ -424,12 +413,10 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
                         s.ratio.data() + o,
                         s.area.data() + o};
     bins_pass(m, static_cast<float>(c.near_m), static_cast<float>(c.inv_dr), bins, pt, io, t);
-    power_pass(m, c.power_scale, s.ratio.data() + o, s.area.data() + o, s.frac_next.data() + o,
-               s.power.data() + o, s.lo.data() + 2 * o, s.hi.data() + 2 * o);
-    scatter_pass(j0, m, e.first_index, s);
+    scatter_pass(j0, m, e.first_index, c.power_scale, s);
   }
 
-  // Pass 4: the elements spanning more than two bins or the swath's edge,
+  // Pass 3: the elements spanning more than two bins or the swath's edge,
   // into copy 0 by spread(), in element order.
   // Their indices gathered branch-free (an index is written at every
   // element and kept where the count advances); most lines have none
@@ -461,7 +448,8 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     for (int b = b0; b <= b1; ++b) s.touch[static_cast<std::size_t>(b)] |= bits;
     if (!vis) continue;
     // Half the element (near end to centre, centre to far end) each.
-    const double half_power = 0.5 * s.power[jj], half_area = 0.5 * double(e.area_m2[jj]);
+    const double half_power = 0.5 * element_power(c.power_scale, s.ratio[jj]);
+    const double half_area = 0.5 * double(e.area_m2[jj]);
     spread(s.acc.data(), s.acc.data() + 1, xa, pos, half_power, half_area, bins, 2);
     spread(s.acc.data(), s.acc.data() + 1, pos, xb, half_power, half_area, bins, 2);
   }
@@ -469,7 +457,10 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   merge_pass(bins, s.stride(), s.acc.data(), s.counts.data(), s.touch.data(), out.power_w,
              out.area_m2, out.touch, out.mapped_count, out.visible_count);
   if (element_power_w) {
-    for (int j = 0; j < n; ++j) element_power_w[j] = static_cast<float>(s.power[j]);
+    for (int j = 0; j < n; ++j) {
+      element_power_w[j] =
+          static_cast<float>(element_power(c.power_scale, s.ratio[static_cast<std::size_t>(j)]));
+    }
   }
   return t;
 }

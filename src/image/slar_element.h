@@ -173,13 +173,9 @@ struct LineElementScratch {
   // scatter pass skips), the centre's bin (`bins` when outside), the
   // fraction of the power in the next bin, the touch bits and counts
   // (form_line_profile's kCode*), element_power_ratio and the area (0 where
-  // not visible), the power P_i; the elements left to spread().
+  // not visible); the elements left to spread().
   std::vector<std::int32_t> first, centre, code;
   std::vector<float> frac_next, ratio, area;
-  std::vector<double> power;
-  // Per element, what it adds to its first bin and to the next: (power,
-  // area) pairs, interleaved as the profile copies' (2 values an element).
-  std::vector<double> lo, hi;
   std::vector<std::int32_t> general;  // the first n_general are used
   int n_general = 0;
   // Per copy and bin (+ 2 spares): the (power, area) sums interleaved (2
