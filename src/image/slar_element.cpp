@@ -44,7 +44,6 @@ SlarElementContext element_context(const SlarImagingParams& p, const TwoWayGainT
 LineElementScratch::LineElementScratch(int samples, int bins_)
     : bins(bins_),
       first(static_cast<std::size_t>(samples)),
-      centre(first.size()),
       code(first.size()),
       frac_next(first.size()),
       ratio(first.size()),
@@ -63,9 +62,12 @@ constexpr std::int32_t kHidden =
 
 // LineElementScratch::code: the touch bits of the first bin (bits 0-7) and
 // of the next one (8-15); whether the centre is in a bin and the element
-// visible (the visible count); whether it is left to spread().
+// visible (the visible count); whether the centre is in the next bin (for an
+// element the scatter pass adds; else in the first); whether it is left to
+// spread().
 constexpr int kCodeNextShift = 8;
 constexpr std::int32_t kCodeSeen = 1 << 16;
+constexpr int kCodeCentreShift = 17;
 constexpr std::int32_t kCodeGeneral = 1 << 24;
 // One visible centre in LineElementScratch::counts (both halves).
 constexpr std::uint64_t kSeenOne = (std::uint64_t{1} << 32) | 1;
@@ -141,7 +143,7 @@ struct BinsPassIo {
   const std::uint8_t* flags;
   const float *range, *near_end, *far_end, *incidence, *local_incidence, *area;
   const std::uint16_t* category;
-  std::int32_t *first, *centre, *code;
+  std::int32_t *first, *code;
   float *frac_next, *ratio_out, *area_out;
 };
 
@@ -159,8 +161,9 @@ struct PowerTables {
 // in [0, bins) within two bins b0, b0 + 1 ("fast": almost all) gets b0, the
 // fraction of its power in b0 + 1 (half of it spread from the near end to
 // the centre, half from the centre to the far end, as spread() would) and
-// its touch bits; any other element that touches the swath is marked for
-// spread(). Also the centre's bin for the counts, and the power pass's
+// its touch bits and whether its centre is in b0 + 1 (the counts; the
+// scatter pass adds them at b0 or b0 + 1, pass 3 those of the others); any
+// other element that touches the swath is marked for spread(). Also the
 // element_power_ratio (the table lookups and the float arithmetic, in the
 // same pass: no per-element arrays between them) with neutral inputs where
 // the element is not visible (range 1, area 0, a tabulated category, angles
@@ -194,7 +197,6 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
   t.layover -= lay & valid;
   t.r_min = vmin(t.r_min, (has & valid) ? r : t.r_min);
   t.r_max = vmax(t.r_max, (has & valid) ? r : t.r_max);
-  store(io.centre + j, __builtin_convertvector(in_swath ? pos : nb, I8));
   const F8 lo = vmin(vmin(xa, xb), pos), hi = vmax(vmax(xa, xb), pos);
   const I8 touch = has & (hi >= zero) & (lo < nb);
   // first_bin and last_bin (truncation of values clamped to [0, bins - 1]).
@@ -204,8 +206,12 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
   t.general -= touch & ~fast;  // padding lanes have no data: never touch
   const I8 bits =
       slar_touch::kData | (vis & slar_touch::kVisible) | (vis & lay & slar_touch::kLayover);
+  // The centre's bin (in the swath where fast): b0 or b0 + 1.
+  const I8 centre_next = __builtin_convertvector(pos, I8) > b0;
   store(io.code + j, (fast & bits) | (fast & (b1 > b0) & (bits << kCodeNextShift)) |
-                         (in_swath & vis & kCodeSeen) | (touch & ~fast & kCodeGeneral));
+                         (in_swath & vis & kCodeSeen) |
+                         (fast & centre_next & (1 << kCodeCentreShift)) |
+                         (touch & ~fast & kCodeGeneral));
   store(io.first + j, fast ? b0 : splat(bins));
   const F8 edge = __builtin_convertvector(b0 + 1, F8);
   const F8 frac = 0.5f * (beyond(xa, pos, edge) + beyond(pos, xb, edge));
@@ -250,7 +256,7 @@ RIS_V4_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
     std::uint8_t flags[kLanes];
     float in[6][kLanes] = {};
     std::uint16_t category[kLanes] = {};
-    std::int32_t out_i[3][kLanes];
+    std::int32_t out_i[2][kLanes];
     float out_f[3][kLanes];
     std::fill(flags, flags + kLanes, sample_flag::kNoData);
     std::copy_n(io.flags + full, rest, flags);
@@ -258,14 +264,14 @@ RIS_V4_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
                                  io.incidence, io.local_incidence, io.area};
     for (int k = 0; k < 6; ++k) std::copy_n(src[k] + full, rest, in[k]);
     std::copy_n(io.category + full, rest, category);
-    const BinsPassIo pad{flags,    in[0],    in[1],    in[2],    in[3],    in[4],    in[5],
-                         category, out_i[0], out_i[1], out_i[2], out_f[0], out_f[1], out_f[2]};
+    const BinsPassIo pad{flags,    in[0],    in[1],    in[2],    in[3],    in[4],   in[5],
+                         category, out_i[0], out_i[1], out_f[0], out_f[1], out_f[2]};
     I8 valid{};
     for (std::size_t l = 0; l < rest; ++l) valid[l] = -1;
     bins_block(pad, 0, near_m, inv_dr, bins, pt, valid, t);
-    std::int32_t* const dst_i[3] = {io.first, io.centre, io.code};
+    std::int32_t* const dst_i[2] = {io.first, io.code};
     float* const dst_f[3] = {io.frac_next, io.ratio_out, io.area_out};
-    for (int k = 0; k < 3; ++k) std::copy_n(out_i[k], rest, dst_i[k] + full);
+    for (int k = 0; k < 2; ++k) std::copy_n(out_i[k], rest, dst_i[k] + full);
     for (int k = 0; k < 3; ++k) std::copy_n(out_f[k], rest, dst_f[k] + full);
   }
   for (int l = 0; l < kLanes; ++l) {
@@ -299,7 +305,6 @@ void scatter_pass(int j0, int n, int first_index, double power_scale, LineElemen
   using D2 = double __attribute__((vector_size(16)));
   const std::size_t stride = s.stride();
   const std::int32_t* __restrict first = s.first.data();
-  const std::int32_t* __restrict centre = s.centre.data();
   const std::int32_t* __restrict code = s.code.data();
   const float* __restrict ratio = s.ratio.data();
   const float* __restrict area = s.area.data();
@@ -326,7 +331,7 @@ void scatter_pass(int j0, int n, int first_index, double power_scale, LineElemen
     std::memcpy(&t2, touch + b, 2);
     t2 = static_cast<std::uint16_t>(t2 | (c & 0xffff));
     std::memcpy(touch + b, &t2, 2);
-    const std::size_t k = q * stride + static_cast<std::size_t>(centre[jj]);
+    const std::size_t k = b + static_cast<std::size_t>((c >> kCodeCentreShift) & 1);
     counts[k] += (c & kCodeSeen) ? kSeenOne : 1;
   };
   const auto copy = [first_index](int j) {
@@ -395,6 +400,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
                        c.gain2_pairs.data(), c.sigma0_pairs.data(), lut.offsets(),
                        lut.any_category()};
   constexpr int kChunk = 256;
+  const float near_f = static_cast<float>(c.near_m), inv_dr_f = static_cast<float>(c.inv_dr);
   for (int j0 = 0; j0 < n; j0 += kChunk) {
     const int m = std::min(kChunk, n - j0);
     const auto o = static_cast<std::size_t>(j0);
@@ -407,17 +413,16 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
                         e.area_m2 + o,
                         e.category + o,
                         s.first.data() + o,
-                        s.centre.data() + o,
                         s.code.data() + o,
                         s.frac_next.data() + o,
                         s.ratio.data() + o,
                         s.area.data() + o};
-    bins_pass(m, static_cast<float>(c.near_m), static_cast<float>(c.inv_dr), bins, pt, io, t);
+    bins_pass(m, near_f, inv_dr_f, bins, pt, io, t);
     scatter_pass(j0, m, e.first_index, c.power_scale, s);
   }
 
   // Pass 3: the elements spanning more than two bins or the swath's edge,
-  // into copy 0 by spread(), in element order.
+  // into copy 0 by spread(), in element order, and their centre counts.
   // Their indices gathered branch-free (an index is written at every
   // element and kept where the count advances); most lines have none
   // (bins_pass counts them), and then the loop over the line is skipped.
@@ -434,6 +439,11 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   for (int g = 0; g < n_general; ++g) {
     const std::int32_t j = general[g];
     const std::size_t jj = static_cast<std::size_t>(j);
+    // The centre's bin as bins_pass finds it (in single precision).
+    const float pos_f = (e.slant_range_m[jj] - near_f) * inv_dr_f;
+    if (pos_f >= 0.0f && pos_f < static_cast<float>(bins)) {
+      s.counts[static_cast<std::size_t>(pos_f)] += (code[j] & kCodeSeen) ? kSeenOne : 1;
+    }
     const std::uint8_t f = e.flags[jj];
     const bool vis = sample_visible(f);
     const double pos = (double(e.slant_range_m[jj]) - c.near_m) * c.inv_dr;

@@ -170,11 +170,11 @@ struct LineElementScratch {
   static constexpr int kCopies = 4;
   int bins = 0;
   // Per element: the first bin touched (`bins`, a spare, for an element the
-  // scatter pass skips), the centre's bin (`bins` when outside), the
-  // fraction of the power in the next bin, the touch bits and counts
-  // (form_line_profile's kCode*), element_power_ratio and the area (0 where
-  // not visible); the elements left to spread().
-  std::vector<std::int32_t> first, centre, code;
+  // scatter pass skips), the fraction of the power in the next bin, the
+  // touch bits, counts and where the centre is (form_line_profile's kCode*),
+  // element_power_ratio and the area (0 where not visible); the elements
+  // left to spread().
+  std::vector<std::int32_t> first, code;
   std::vector<float> frac_next, ratio, area;
   std::vector<std::int32_t> general;  // the first n_general are used
   int n_general = 0;
