@@ -173,6 +173,20 @@ struct BinsTally {
   I8 in_swath{}, nodata{}, shadow{}, back_facing{}, layover{}, general{};
   F8 r_min = splat(std::numeric_limits<float>::infinity());
   F8 r_max = splat(-std::numeric_limits<float>::infinity());
+  // The bins the scatter pass adds to: b0 and b0 + 1 of the elements that
+  // touch the swath.
+  I8 bin_min = splat(std::numeric_limits<std::int32_t>::max()), bin_max = splat(-1);
+};
+
+// The bins a line's elements add to, [lo, hi] (lo > hi: none): merge_pass
+// reads and clears only those (an oblique track's line clipped to the scene
+// covers part of the swath).
+struct BinRange {
+  int lo = std::numeric_limits<int>::max(), hi = -1;
+  void add(int b0, int b1) {
+    lo = std::min(lo, b0);
+    hi = std::max(hi, b1);
+  }
 };
 
 __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std::size_t j,
@@ -204,6 +218,8 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
   const I8 b1 = __builtin_convertvector(touch ? vmin(hi, nb - 1.0f) : zero, I8);
   const I8 fast = touch & (lo >= zero) & (hi < nb) & ((b1 - b0) <= 1);
   t.general -= touch & ~fast;  // padding lanes have no data: never touch
+  t.bin_min = touch & (b0 < t.bin_min) ? b0 : t.bin_min;
+  t.bin_max = touch & (b0 + 1 > t.bin_max) ? b0 + 1 : t.bin_max;
   const I8 bits =
       slar_touch::kData | (vis & slar_touch::kVisible) | (vis & lay & slar_touch::kLayover);
   // The centre's bin (in the swath where fast): b0 or b0 + 1.
@@ -245,7 +261,7 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
 // (AVX2's 16 spilled a fifth of it to the stack).
 RIS_V4_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
                                     const PowerTables& pt, const BinsPassIo& io,
-                                    LineElementTally& tally) {
+                                    LineElementTally& tally, BinRange& range) {
   BinsTally t;
   const std::size_t full = static_cast<std::size_t>(n / kLanes) * kLanes;
   for (std::size_t j = 0; j < full; j += kLanes) {
@@ -283,6 +299,7 @@ RIS_V4_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
     tally.general += t.general[l];
     tally.r_min_m = std::min(tally.r_min_m, t.r_min[l]);
     tally.r_max_m = std::max(tally.r_max_m, t.r_max[l]);
+    range.add(t.bin_min[l], t.bin_max[l]);
   }
 }
 
@@ -350,26 +367,32 @@ void scatter_pass(int j0, int n, int first_index, double power_scale, LineElemen
 }
 
 // Pass 4: the copies summed into the line's outputs, and zeroed for the next
-// line; one loop per type, so that each vectorises.
-RIS_VECTOR_CLONES void merge_pass(int bins, std::size_t stride, double* __restrict acc,
-                                  std::uint64_t* __restrict counts, std::uint8_t* __restrict touch,
-                                  double* __restrict out_power, double* __restrict out_area,
-                                  std::uint8_t* __restrict out_touch,
+// line; one loop per type, so that each vectorises. Only the bins in
+// [lo, hi) were added to: the others are 0 in every copy (their power and
+// area outputs 0, touch bits and counts unchanged).
+RIS_VECTOR_CLONES void merge_pass(int bins, int lo, int hi, std::size_t stride,
+                                  double* __restrict acc, std::uint64_t* __restrict counts,
+                                  std::uint8_t* __restrict touch, double* __restrict out_power,
+                                  double* __restrict out_area, std::uint8_t* __restrict out_touch,
                                   std::uint16_t* __restrict out_mapped,
                                   std::uint16_t* __restrict out_visible) {
   const std::size_t s1 = stride, s2 = 2 * stride, s3 = 3 * stride;
-  const std::size_t nb = static_cast<std::size_t>(bins);
-  for (std::size_t b = 0; b < nb; ++b) {
+  const auto b0 = static_cast<std::size_t>(lo), b1 = static_cast<std::size_t>(hi);
+  std::fill(out_power, out_power + b0, 0.0);
+  std::fill(out_area, out_area + b0, 0.0);
+  std::fill(out_power + b1, out_power + bins, 0.0);
+  std::fill(out_area + b1, out_area + bins, 0.0);
+  for (std::size_t b = b0; b < b1; ++b) {
     const std::size_t k = 2 * b;
     out_power[b] = (acc[k] + acc[k + 2 * s1]) + (acc[k + 2 * s2] + acc[k + 2 * s3]);
     out_area[b] = (acc[k + 1] + acc[k + 1 + 2 * s1]) + (acc[k + 1 + 2 * s2] + acc[k + 1 + 2 * s3]);
   }
-  for (std::size_t b = 0; b < nb; ++b) {
+  for (std::size_t b = b0; b < b1; ++b) {
     out_touch[b] |=
         static_cast<std::uint8_t>(touch[b] | touch[b + s1] | touch[b + s2] | touch[b + s3]);
   }
   constexpr std::uint32_t kMax = 65535;  // the counts saturate
-  for (std::size_t b = 0; b < nb; ++b) {
+  for (std::size_t b = b0; b < b1; ++b) {
     const std::uint64_t c = (counts[b] + counts[b + s1]) + (counts[b + s2] + counts[b + s3]);
     const std::uint32_t m = out_mapped[b] + static_cast<std::uint32_t>(c & 0xffffffffu);
     const std::uint32_t v = out_visible[b] + static_cast<std::uint32_t>(c >> 32);
@@ -377,9 +400,9 @@ RIS_VECTOR_CLONES void merge_pass(int bins, std::size_t stride, double* __restri
     out_visible[b] = static_cast<std::uint16_t>(std::min(v, kMax));
   }
   for (std::size_t q = 0; q < LineElementScratch::kCopies; ++q) {
-    std::fill_n(acc + 2 * q * stride, 2 * nb, 0.0);
-    std::fill_n(touch + q * stride, nb, std::uint8_t{0});
-    std::fill_n(counts + q * stride, nb, std::uint64_t{0});
+    std::fill(acc + 2 * (q * stride + b0), acc + 2 * (q * stride + b1), 0.0);
+    std::fill(touch + q * stride + b0, touch + q * stride + b1, std::uint8_t{0});
+    std::fill(counts + q * stride + b0, counts + q * stride + b1, std::uint64_t{0});
   }
 }
 
@@ -400,6 +423,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
                        c.gain2_pairs.data(), c.sigma0_pairs.data(), lut.offsets(),
                        lut.any_category()};
   constexpr int kChunk = 256;
+  BinRange range;
   const float near_f = static_cast<float>(c.near_m), inv_dr_f = static_cast<float>(c.inv_dr);
   for (int j0 = 0; j0 < n; j0 += kChunk) {
     const int m = std::min(kChunk, n - j0);
@@ -417,7 +441,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
                         s.frac_next.data() + o,
                         s.ratio.data() + o,
                         s.area.data() + o};
-    bins_pass(m, near_f, inv_dr_f, bins, pt, io, t);
+    bins_pass(m, near_f, inv_dr_f, bins, pt, io, t, range);
     scatter_pass(j0, m, e.first_index, c.power_scale, s);
   }
 
@@ -442,6 +466,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     // The centre's bin as bins_pass finds it (in single precision).
     const float pos_f = (e.slant_range_m[jj] - near_f) * inv_dr_f;
     if (pos_f >= 0.0f && pos_f < static_cast<float>(bins)) {
+      range.add(static_cast<int>(pos_f), static_cast<int>(pos_f));
       s.counts[static_cast<std::size_t>(pos_f)] += (code[j] & kCodeSeen) ? kSeenOne : 1;
     }
     const std::uint8_t f = e.flags[jj];
@@ -452,6 +477,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     const double lo = std::min(std::min(xa, xb), pos), hi = std::max(std::max(xa, xb), pos);
     if (hi < 0.0 || lo >= bins) continue;  // in single precision only
     const int b0 = first_bin(lo), b1 = last_bin(hi, bins);
+    range.add(b0, b1);
     std::uint8_t bits = slar_touch::kData;
     if (vis) bits |= slar_touch::kVisible;
     if (vis && (f & sample_flag::kLayover)) bits |= slar_touch::kLayover;
@@ -464,7 +490,10 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     spread(s.acc.data(), s.acc.data() + 1, pos, xb, half_power, half_area, bins, 2);
   }
 
-  merge_pass(bins, s.stride(), s.acc.data(), s.counts.data(), s.touch.data(), out.power_w,
+  const bool any = range.lo <= range.hi;
+  const int lo = any ? std::clamp(range.lo, 0, bins) : 0;
+  const int hi = any ? std::clamp(range.hi + 1, lo, bins) : 0;
+  merge_pass(bins, lo, hi, s.stride(), s.acc.data(), s.counts.data(), s.touch.data(), out.power_w,
              out.area_m2, out.touch, out.mapped_count, out.visible_count);
   if (element_power_w) {
     for (int j = 0; j < n; ++j) {
