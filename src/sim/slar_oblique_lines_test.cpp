@@ -45,10 +45,15 @@ TEST(SlarObliqueLines, TrackAcrossTheSceneFusedEqualsStagesByteForByte) {
     double x0, y0, x1, y1;
     LookSide side;
   };
-  // Headings ~49 deg and ~229 deg (the same line reversed), and a steep one.
+  // Headings ~49 deg and ~229 deg (the same line reversed), a steep one,
+  // and two a fraction of a degree off the grid axes (rows of the scene-map
+  // scatter nearly a whole line long; each row's cells outside the swath
+  // found exactly).
   for (const Case& k : {Case{200.0, 100.0, 600.0, 450.0, LookSide::right},
                         Case{600.0, 450.0, 200.0, 100.0, LookSide::left},
-                        Case{420.0, 50.0, 520.0, 560.0, LookSide::right}}) {
+                        Case{420.0, 50.0, 520.0, 560.0, LookSide::right},
+                        Case{420.0, 50.0, 421.0, 560.0, LookSide::right},
+                        Case{100.0, 300.0, 800.0, 298.5, LookSide::right}}) {
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
       const RadarParams r = crossing_radar(k.x0, k.y0, k.x1, k.y1, k.side);
