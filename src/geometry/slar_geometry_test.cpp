@@ -245,6 +245,31 @@ TEST(SlarGeometry, TerrainAtOrAboveTheSensorIsAnInputError) {
   }
 }
 
+// The check compares each height with the altitude as a double: a cell one
+// float below an altitude that is not a float passes, the float just above
+// it does not (the scan's float threshold is exact), wherever the cell is
+// (the vector blocks and the scalar rest), and a cell without data never
+// counts.
+TEST(SlarGeometry, TerrainCheckIsExactAtAnAltitudeBetweenTwoFloats) {
+  // 3000.0001 rounds down to the float 3000, 2999.9999 up to it.
+  for (const double altitude : {3000.0001, 2999.9999}) {
+    const float f = static_cast<float>(altitude);
+    const float above = double(f) >= altitude ? f : std::nextafter(f, 1e9f);
+    const float below = std::nextafter(above, 0.0f);
+    ASSERT_LT(double(below), altitude);
+    ASSERT_GT(double(above), altitude);
+    for (const std::size_t at : {0, 7, 8, 30, 35}) {
+      Scene s = Scene::flat(6, 6, kCell, 0.0f, 1);
+      s.elevation_m[at] = below;
+      EXPECT_NO_THROW(check_terrain_below_sensor(s, altitude, "radar.toml")) << at;
+      s.elevation_m[at] = above;
+      EXPECT_THROW(check_terrain_below_sensor(s, altitude, "radar.toml"), InputError) << at;
+      s.valid[at] = 0;
+      EXPECT_NO_THROW(check_terrain_below_sensor(s, altitude, "radar.toml")) << at;
+    }
+  }
+}
+
 TEST(SlarGeometry, NoDataCellsAreCountedAndMaskedAndCastNoShadow) {
   Scene s = Scene::flat(6, 30, kCell, 0.0f, 1);
   int nans = 0;
