@@ -128,24 +128,77 @@ inline void element_ends_at(int j, bool has, bool has_lo, bool has_hi, float u, 
   far_end[j] = has ? std::sqrt(uf * uf + df * df) : nan;
 }
 
-// Samples [1, n - 1), whose two neighbours exist: no branches, so that it
-// vectorises.
-RIS_VECTOR_CLONES void element_ends_interior(int n, double first_u, double step, float H,
+// Samples [j0, j1) with 1 <= j0 and j1 <= n - 1, whose two neighbours
+// exist: no branches, so that it vectorises.
+RIS_VECTOR_CLONES void element_ends_interior(int j0, int j1, double first_u, double step, float H,
                                              float half_step, const float* __restrict h,
                                              const float* __restrict dh_du,
                                              const std::uint8_t* __restrict flags,
                                              float* __restrict near_end,
                                              float* __restrict far_end) {
-  for (int j = 1; j < n - 1; ++j) {
+  for (int j = j0; j < j1; ++j) {
     element_ends_at(j, !(flags[j] & kSkip), !(flags[j - 1] & kSkip), !(flags[j + 1] & kSkip),
                     static_cast<float>(first_u + j * step), h[j - 1], h[j], h[j + 1], dh_du[j], H,
                     half_step, near_end, far_end);
   }
 }
 
+#ifdef RIS_HAVE_AVX512_KERNELS
+// Which of sixteen samples from flags are taken (not kNoData, kUnseen).
+RIS_AVX512_KERNEL inline __mmask16 taken16(const std::uint8_t* flags, __m128i skip) {
+  return _mm_testn_epi8_mask(_mm_loadu_si128(reinterpret_cast<const __m128i*>(flags)), skip);
+}
+
+// element_ends_interior sixteen samples at a time with AVX-512 (element_ends_at's
+// operations lane by lane, u in double as the scalar rule, the neighbours'
+// flags as mask registers); returns the first sample not done.
+RIS_AVX512_KERNEL int element_ends_avx512(int j0, int j1, double first_u, double step, float H,
+                                          float half_step, const float* __restrict h,
+                                          const float* __restrict dh_du,
+                                          const std::uint8_t* __restrict flags,
+                                          float* __restrict near_end, float* __restrict far_end) {
+  const __m128i skip = _mm_set1_epi8(static_cast<char>(kSkip));
+  const __m512 H_v = _mm512_set1_ps(H), half_v = _mm512_set1_ps(half_step),
+               mid = _mm512_set1_ps(0.5f),
+               nan = _mm512_set1_ps(std::numeric_limits<float>::quiet_NaN());
+  const __m512d first_v = _mm512_set1_pd(first_u), step_v = _mm512_set1_pd(step),
+                sixteen = _mm512_set1_pd(16.0);
+  // j as exact doubles, as the scalar rule's int-to-double conversion.
+  __m512d j_lo = _mm512_add_pd(_mm512_set1_pd(j0), _mm512_set_pd(7, 6, 5, 4, 3, 2, 1, 0));
+  __m512d j_hi = _mm512_add_pd(j_lo, _mm512_set1_pd(8.0));
+  int j = j0;
+  for (; j + 16 <= j1; j += 16) {
+    const auto jj = static_cast<std::size_t>(j);
+    const __mmask16 has = taken16(flags + jj, skip), has_lo = taken16(flags + jj - 1, skip),
+                    has_hi = taken16(flags + jj + 1, skip);
+    const __m512 hv = _mm512_loadu_ps(h + jj);
+    const __m512 slope_half = _mm512_mul_ps(_mm512_loadu_ps(dh_du + jj), half_v);
+    const __m512 h_near =
+        _mm512_mask_blend_ps(has_lo, _mm512_sub_ps(hv, slope_half),
+                             _mm512_mul_ps(mid, _mm512_add_ps(hv, _mm512_loadu_ps(h + jj - 1))));
+    const __m512 h_far =
+        _mm512_mask_blend_ps(has_hi, _mm512_add_ps(hv, slope_half),
+                             _mm512_mul_ps(mid, _mm512_add_ps(hv, _mm512_loadu_ps(h + jj + 1))));
+    const __m512 u = _mm512_insertf32x8(
+        _mm512_castps256_ps512(
+            _mm512_cvtpd_ps(_mm512_add_pd(first_v, _mm512_mul_pd(j_lo, step_v)))),
+        _mm512_cvtpd_ps(_mm512_add_pd(first_v, _mm512_mul_pd(j_hi, step_v))), 1);
+    j_lo = _mm512_add_pd(j_lo, sixteen);
+    j_hi = _mm512_add_pd(j_hi, sixteen);
+    const __m512 un = _mm512_sub_ps(u, half_v), uf = _mm512_add_ps(u, half_v);
+    const __m512 dn = _mm512_sub_ps(H_v, h_near), df = _mm512_sub_ps(H_v, h_far);
+    const __m512 rn = _mm512_sqrt_ps(_mm512_add_ps(_mm512_mul_ps(un, un), _mm512_mul_ps(dn, dn)));
+    const __m512 rf = _mm512_sqrt_ps(_mm512_add_ps(_mm512_mul_ps(uf, uf), _mm512_mul_ps(df, df)));
+    _mm512_storeu_ps(near_end + jj, _mm512_mask_blend_ps(has, nan, rn));
+    _mm512_storeu_ps(far_end + jj, _mm512_mask_blend_ps(has, nan, rf));
+  }
+  return j;
+}
+#endif
+
 }  // namespace
 
-void line_element_ends(const LineSamples& l) {
+void line_element_ends(const LineSamples& l, ScanKernel kernel) {
   const float H = static_cast<float>(l.altitude_m);
   const float half_step = static_cast<float>(0.5 * l.step_m);
   const int n = l.samples;
@@ -159,7 +212,14 @@ void line_element_ends(const LineSamples& l) {
   };
   edge(0);
   if (n == 1) return;
-  element_ends_interior(n, l.first_u_m, l.step_m, H, half_step, l.height_m, l.dh_du, l.flags,
+  int j = 1;
+#ifdef RIS_HAVE_AVX512_KERNELS
+  if (cpu_has_avx512() && kernel == ScanKernel::best) {
+    j = element_ends_avx512(1, n - 1, l.first_u_m, l.step_m, H, half_step, l.height_m, l.dh_du,
+                            l.flags, l.range_near_end_m, l.range_far_end_m);
+  }
+#endif
+  element_ends_interior(j, n - 1, l.first_u_m, l.step_m, H, half_step, l.height_m, l.dh_du, l.flags,
                         l.range_near_end_m, l.range_far_end_m);
   edge(n - 1);
 }

@@ -123,15 +123,15 @@ struct LineSamples {
   std::uint8_t* flags;         // in: kNoData / kUnseen (/ kBackFacing); out: + shadow, layover
 };
 
+// Which code line_element_ends and the scans run: the widest the CPU has
+// (AVX-512 sixteen samples at a time, where it has it), or the portable one
+// whatever the CPU (for tests: both give the same bytes).
+enum class ScanKernel { best, portable };
+
 // The element's ends: heights halfway to the neighbours with data (or the
 // local slope's extrapolation where a neighbour has none), so a step in the
 // terrain is shared by the two cells beside it.
-void line_element_ends(const LineSamples& line);
-
-// Which code the scans run: the widest the CPU has (AVX-512 sixteen samples
-// at a time, where it has it), or the portable eight-sample one whatever the
-// CPU (for tests: both give the same flags).
-enum class ScanKernel { best, portable };
+void line_element_ends(const LineSamples& line, ScanKernel kernel = ScanKernel::best);
 
 // Cast shadow and layover along the line (MODEL.md section 2). Samples not
 // skipped (kNoData, kUnseen) must be in front of the sensor, u > 0.
