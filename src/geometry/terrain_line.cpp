@@ -129,17 +129,20 @@ RIS_AVX512_KERNEL int texel_row_avx512(
 #pragma GCC diagnostic pop
 #endif
 
-// One row's interior texels, by the AVX-512 kernel where the CPU has it
-// (then its last columns by texel_cells), else by the clones.
-void texel_row(int cols, double dx_m, double dy_m, const float* z, const std::uint8_t* v,
+// One row's interior texels, by the AVX-512 kernel when `wide` (the CPU has
+// it and the caller allows it; then its last columns by texel_cells), else
+// by the clones.
+void texel_row(bool wide, int cols, double dx_m, double dy_m, const float* z, const std::uint8_t* v,
                const std::uint16_t* cat, const float* zs, const std::uint8_t* vs, const float* zn,
                const std::uint8_t* vn, TerrainTexel* out) {
 #ifdef RIS_HAVE_AVX512_KERNELS
-  if (cpu_has_avx512()) {
+  if (wide) {
     const int done = texel_row_avx512(cols, dx_m, dy_m, z, v, cat, zs, vs, zn, vn, out);
     texel_cells(done, cols - 1, dx_m, dy_m, z, v, cat, zs, vs, zn, vn, out);
     return;
   }
+#else
+  (void)wide;
 #endif
   texel_row_interior(cols, dx_m, dy_m, z, v, cat, zs, vs, zn, vn, out);
 }
@@ -215,7 +218,8 @@ void TerrainTexelsFree::operator()(TerrainTexel* p) const {
   std::free(p);
 }
 
-TerrainTexels terrain_texels(const Scene& scene) {
+TerrainTexels terrain_texels(const Scene& scene, SamplerKernel kernel) {
+  const bool wide = kernel == SamplerKernel::best && cpu_has_avx512();
   TerrainTexels t;
   t.rows = scene.rows;
   t.cols = scene.cols;
@@ -241,7 +245,7 @@ TerrainTexels terrain_texels(const Scene& scene) {
   for (int r = 0; r < scene.rows; ++r) {
     const std::size_t row = scene.index(r, 0);
     const bool south = r + 1 < scene.rows, north = r > 0;
-    texel_row(scene.cols, scene.dx_m, scene.dy_m, &scene.elevation_m[row], &scene.valid[row],
+    texel_row(wide, scene.cols, scene.dx_m, scene.dy_m, &scene.elevation_m[row], &scene.valid[row],
               &scene.category[row], south ? &scene.elevation_m[row + cols] : no_z.data(),
               south ? &scene.valid[row + cols] : no_valid.data(),
               north ? &scene.elevation_m[row - cols] : no_z.data(),
@@ -611,17 +615,19 @@ RIS_AVX512_KERNEL void sample_span_avx512(const float* __restrict tex, int rows,
 }  // namespace
 
 void sample_terrain_line(const TerrainTexels& tex, const GridLine& line, int begin, int end,
-                         const SampledTerrain& out) {
+                         const SampledTerrain& out, SamplerKernel kernel) {
   static_assert(sizeof(TerrainTexel) == 4 * sizeof(float));
   const auto* t = reinterpret_cast<const float*>(tex.texel.get());
   // 32-bit float indices (4 per cell) where they fit: every scene that
   // fits in memory with its texels up to 2^29 cells.
   if (tex.size() < (std::size_t{1} << 29)) {
 #ifdef RIS_HAVE_AVX512_KERNELS
-    if (cpu_has_avx512()) {
+    if (kernel == SamplerKernel::best && cpu_has_avx512()) {
       sample_span_avx512(t, tex.rows, tex.cols, line, begin, end, out);
       return;
     }
+#else
+    (void)kernel;
 #endif
     sample_span_i32(t, tex.rows, tex.cols, line, begin, end, out);
   } else {

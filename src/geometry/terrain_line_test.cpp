@@ -41,8 +41,8 @@ struct Sampled {
 };
 
 // The texels hold each cell's height (NaN without data), its slope exactly
-// as surface_gradient (the vectorised interior and the edges alike) and its
-// category.
+// as surface_gradient (either kernel; the vectorised interior and the edges
+// alike) and its category.
 TEST(TerrainLine, TexelsHoldHeightSlopeAndCategoryAsTheSceneAndGradient) {
   for (int cols : {1, 2, 3, 9, 10, 17, 40}) {
     Scene s = plane_scene();
@@ -55,18 +55,20 @@ TEST(TerrainLine, TexelsHoldHeightSlopeAndCategoryAsTheSceneAndGradient) {
       s.category[i] = static_cast<std::uint16_t>(i % 7);
       s.valid[i] = (i % 5 == 3) ? 0 : 1;
     }
-    const TerrainTexels tex = terrain_texels(s);
-    const SurfaceGradient grad = surface_gradient(s);
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const TerrainTexel& t = tex.texel[i];
-      EXPECT_EQ(static_cast<std::uint16_t>(t.category), s.category[i]);
-      if (!s.valid[i]) {
-        EXPECT_TRUE(std::isnan(t.height_m) && std::isnan(t.dz_dx) && std::isnan(t.dz_dy)) << i;
-        continue;
+    for (const SamplerKernel kernel : {SamplerKernel::portable, SamplerKernel::best}) {
+      const TerrainTexels tex = terrain_texels(s, kernel);
+      const SurfaceGradient grad = surface_gradient(s);
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        const TerrainTexel& t = tex.texel[i];
+        EXPECT_EQ(static_cast<std::uint16_t>(t.category), s.category[i]);
+        if (!s.valid[i]) {
+          EXPECT_TRUE(std::isnan(t.height_m) && std::isnan(t.dz_dx) && std::isnan(t.dz_dy)) << i;
+          continue;
+        }
+        EXPECT_EQ(t.height_m, s.elevation_m[i]) << i;
+        EXPECT_EQ(t.dz_dx, grad.dz_dx[i]) << "cols " << cols << " cell " << i;
+        EXPECT_EQ(t.dz_dy, grad.dz_dy[i]) << "cols " << cols << " cell " << i;
       }
-      EXPECT_EQ(t.height_m, s.elevation_m[i]) << i;
-      EXPECT_EQ(t.dz_dx, grad.dz_dx[i]) << "cols " << cols << " cell " << i;
-      EXPECT_EQ(t.dz_dy, grad.dz_dy[i]) << "cols " << cols << " cell " << i;
     }
   }
 }
@@ -229,9 +231,9 @@ std::uint32_t bits(float f) {
   return u;
 }
 
-// The line sampler (whichever of its vector kernels this CPU runs: AVX-512,
-// AVX2 or SSE2; the chunks' vector bodies and their scalar ends) gives the
-// rule's bits exactly on every sample: lines at 40 headings, with steps of a
+// The line sampler (its best kernel on this CPU: AVX-512, AVX2 or SSE2, the
+// chunks' vector bodies and their scalar ends; and its portable one) gives
+// the rule's bits exactly on every sample: lines at 40 headings, with steps of a
 // half and a third of a cell and lengths that end anywhere in a chunk, lines
 // through cell centres and edges, no-data cells.
 TEST(TerrainLine, SamplerGivesThePerSampleRuleBitForBit) {
@@ -240,6 +242,8 @@ TEST(TerrainLine, SamplerGivesThePerSampleRuleBitForBit) {
   int compared = 0, no_data = 0;
   const auto check = [&](const GridLine& line, int samples) {
     const auto [begin, end] = inside_samples(line, s.rows, s.cols, samples);
+    Sampled portable(std::max(end - begin, 1));
+    sample_terrain_line(tex, line, begin, end, portable.out(), SamplerKernel::portable);
     Sampled out(std::max(end - begin, 1));
     sample_terrain_line(tex, line, begin, end, out.out());
     for (int j = begin; j < end; ++j) {
@@ -253,6 +257,11 @@ TEST(TerrainLine, SamplerGivesThePerSampleRuleBitForBit) {
       ASSERT_EQ(bits(out.gy[o]), bits(want[2])) << j;
       ASSERT_EQ(out.cat[o], cat) << j;
       ASSERT_EQ(out.flags[o], flags) << j;
+      ASSERT_EQ(bits(portable.h[o]), bits(want[0])) << j;
+      ASSERT_EQ(bits(portable.gx[o]), bits(want[1])) << j;
+      ASSERT_EQ(bits(portable.gy[o]), bits(want[2])) << j;
+      ASSERT_EQ(portable.cat[o], cat) << j;
+      ASSERT_EQ(portable.flags[o], flags) << j;
       ++compared;
       no_data += flags != 0;
     }

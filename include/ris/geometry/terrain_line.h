@@ -57,11 +57,16 @@ struct TerrainTexels {
   }
 };
 
+// Which code the texels and the sampler run: the widest the CPU has (AVX-512
+// kernels, ris/util/avx512.h, where it has them), or the portable one
+// whatever the CPU (for tests: both give the same bytes).
+enum class SamplerKernel { best, portable };
+
 // The texels of a whole scene (16 bytes a cell), in parallel over rows; each
 // row's interior in one vectorised pass. The array asks for transparent huge
 // pages (Linux), and the largest freed one is kept for the next run: a 2000 x
 // 2000 scene's 64 MB would otherwise be 16,000 page faults on every run.
-TerrainTexels terrain_texels(const Scene& scene);
+TerrainTexels terrain_texels(const Scene& scene, SamplerKernel kernel = SamplerKernel::best);
 
 // A straight line of samples in grid coordinates (Scene::grid_from_world:
 // col east, row south, cell centres at integer + 1/2).
@@ -100,6 +105,6 @@ struct SampledTerrain {
 // Bilinear height and slope and the nearest cell's category for samples
 // [begin, end), all inside the scene (inside_samples).
 void sample_terrain_line(const TerrainTexels& tex, const GridLine& line, int begin, int end,
-                         const SampledTerrain& out);
+                         const SampledTerrain& out, SamplerKernel kernel = SamplerKernel::best);
 
 }  // namespace ris
