@@ -206,7 +206,11 @@ void run_bench(const BenchArgs& a) {
   };
   std::vector<TrackCase> tracks{{"along-axis track (heading 0)", 0.0}};
   if (a.oblique) {
-    tracks.push_back({fmt::format("oblique track (heading {:g})", a.oblique_heading_deg),
+    // --oblique-heading 90 (or 180, 270) times the other along-axis cases:
+    // named as such.
+    const bool on_axis = std::fmod(a.oblique_heading_deg, 90.0) == 0.0;
+    tracks.push_back({fmt::format("{} track (heading {:g})", on_axis ? "along-axis" : "oblique",
+                                  a.oblique_heading_deg),
                       a.oblique_heading_deg});
   }
   double cells_per_s_2 = 0.0;
