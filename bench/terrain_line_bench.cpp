@@ -1,6 +1,6 @@
 // Google Benchmark kernels of the oblique track's terrain line sampler
 // (ris/geometry/terrain_line.h) on a 1000 x 1000 fractal scene, heading 30
-// deg, the texels built once. Items per second are samples within the scene
+// or 45 deg (the argument), the texels built once. Items per second are samples within the scene
 // (about two per scene cell). "Hot" samples the same two lines over and over
 // (texels in cache): the gap to the full run is the cost of memory.
 //
@@ -21,22 +21,26 @@ struct LineFixture {
   ris::Scene scene = ris::make_bench_scene(1000, 1000, 6.096, 7);
   ris::SlarGeometry g;
   ris::TerrainTexels tex;
-  LineFixture() {
+  explicit LineFixture(double heading_deg) {
     const ris::RadarParams base = ris::load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
-    const ris::RadarParams radar = ris::bench_radar(base, scene, ris::deg_to_rad(30.0));
+    const ris::RadarParams radar = ris::bench_radar(base, scene, ris::deg_to_rad(heading_deg));
     g = ris::slar_geometry_layout(scene, ris::resolve_track(radar.track, scene, "bench"), 0.0);
     tex = ris::terrain_texels(scene);
   }
 };
 
-const LineFixture& line_fixture() {
-  static const LineFixture f;
-  return f;
+const LineFixture& line_fixture(int heading_deg = 30) {
+  if (heading_deg == 45) {
+    static const LineFixture f45(45.0);
+    return f45;
+  }
+  static const LineFixture f30(30.0);
+  return f30;
 }
 
 // Samples every line (hot: lines g.lines / 2 and the next, alternately).
 void run_sampler(benchmark::State& state, bool hot) {
-  const LineFixture& f = line_fixture();
+  const LineFixture& f = line_fixture(static_cast<int>(state.range(0)));
   const auto n = static_cast<std::size_t>(f.g.samples);
   std::vector<float> h(n), gx(n), gy(n);
   std::vector<std::uint16_t> cat(n);
@@ -72,8 +76,8 @@ void BM_TerrainTexels(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(f.scene.size()));
 }
 
-BENCHMARK(BM_TerrainLineSampler)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_TerrainLineSamplerHot)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TerrainLineSampler)->Arg(30)->Arg(45)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TerrainLineSamplerHot)->Arg(30)->Arg(45)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TerrainTexels)->Unit(benchmark::kMillisecond);
 
 }  // namespace
