@@ -467,6 +467,20 @@ int line_cell(const Scene& scene, const SlarGeometry& g, bool cross_is_x, int li
   return (f >= 0.0 && f < n) ? static_cast<int>(std::floor(f)) : -1;
 }
 
+// Whether lines [b0, b1) (along columns) each take their own column, the
+// columns forming one run [lo, hi]; `scratch` holds them.
+bool column_run(const Scene& scene, const SlarGeometry& g, int b0, int b1,
+                std::vector<int>& scratch, int& lo, int& hi) {
+  scratch.clear();
+  for (int line = b0; line < b1; ++line) scratch.push_back(line_cell(scene, g, false, line));
+  std::sort(scratch.begin(), scratch.end());
+  if (scratch.empty() || scratch.front() < 0) return false;
+  lo = scratch.front();
+  hi = scratch.back();
+  return hi - lo + 1 == b1 - b0 &&
+         std::adjacent_find(scratch.begin(), scratch.end()) == scratch.end();
+}
+
 }  // namespace
 
 int SlarLineEngine::cell_of_line(int line) const {
@@ -538,35 +552,16 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
     SlarLineCounts local;
     ColumnTile tile;
     std::vector<int> columns;
-    int own_lo = 0, own_hi = -1;
 #pragma omp for schedule(dynamic, 1)
     for (int block = 0; block < blocks; ++block) {
       const int b0 = line0 + block * block_lines, b1 = std::min(line1, b0 + block_lines);
-      // The block's columns (tiled: one column of margin each side, and no
-      // more than a block's width plus the margins, as when every line has
-      // its own column).
-      bool tiled = false;
-      if (column_tiles) {
-        columns.clear();
-        int lo = scene.cols, hi = -1;
-        for (int line = b0; line < b1; ++line) {
-          const int c = line_cell(scene, g, cross_is_x_, line);
-          columns.push_back(c);
-          if (c >= 0) {
-            lo = std::min(lo, c);
-            hi = std::max(hi, c);
-          }
-        }
-        // Tiled when the block's lines are one run of distinct columns (one
-        // line per column, as fused_slar_applies makes them).
-        own_lo = lo;
-        own_hi = hi;
-        std::sort(columns.begin(), columns.end());
-        tiled = hi >= 0 && columns.front() >= 0 && hi - lo + 1 == b1 - b0 &&
-                std::adjacent_find(columns.begin(), columns.end()) == columns.end();
-        if (tiled)
-          tile.load_columns(in, scene.cols, std::max(0, lo - 1), std::min(scene.cols - 1, hi + 1));
-      }
+      // Tiled when the block's lines take one run of distinct columns [lo,
+      // hi] (one line per column, as fused_slar_applies makes them); the
+      // tile adds one column of margin each side.
+      int lo = 0, hi = -1;
+      const bool tiled = column_tiles && column_run(scene, g, b0, b1, columns, lo, hi);
+      if (tiled)
+        tile.load_columns(in, scene.cols, std::max(0, lo - 1), std::min(scene.cols - 1, hi + 1));
       for (int line = b0; line < b1; ++line) {
         const int lc = line_cell(scene, g, cross_is_x_, line);
         const auto cell_of = [&](int j, int& r, int& c) {
@@ -650,7 +645,7 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
           }
         }
       }
-      if (tiled) tile.store_maps(own_lo, own_hi - own_lo + 1, maps);
+      if (tiled) tile.store_maps(lo, hi - lo + 1, maps);
     }
 #pragma omp critical(ris_slar_line_counts)
     counts.add(local);
