@@ -11,7 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcairo2-dev fonts-dejavu-core
   libkissfft-dev
-  clang-format
+  clang-format ccache
 )
 
 missing=()
