@@ -123,15 +123,21 @@ TEST(Topo, RidgeHasLayoverAndShadow) {
   const Acquisition a = small_airborne();
   const TopoLayers t = compute_topo(a, dem_for(a, 1500.0, 866.0), {});
   std::size_t shadow = 0, layover = 0;
+  double shadow_bin = 0.0, layover_bin = 0.0;
   for (std::size_t i = 0; i < t.mask.size(); ++i) {
     shadow += (t.mask[i] & kMaskShadow) != 0;
     layover += (t.mask[i] & kMaskLayover) != 0;
+    if ((t.mask[i] & kMaskShadow) != 0) shadow_bin += static_cast<double>(i % 300);
+    if ((t.mask[i] & kMaskLayover) != 0) layover_bin += static_cast<double>(i % 300);
     if ((t.mask[i] & kMaskShadow) != 0) {
       EXPECT_EQ(t.simulated_amplitude[i], 0.0F);
     }
   }
   EXPECT_GT(shadow, 60U * 10U);
   EXPECT_GT(layover, 60U * 10U);
+  // The crest is laid over towards near range, the shadow falls beyond it.
+  EXPECT_LT(layover_bin / static_cast<double>(layover), 150.0);
+  EXPECT_GT(shadow_bin / static_cast<double>(shadow), 150.0);
   const std::size_t mid = 30 * 300;
   EXPECT_EQ(t.mask[mid + 2], 0);    // near range, flat
   EXPECT_EQ(t.mask[mid + 297], 0);  // far range, beyond the shadow
