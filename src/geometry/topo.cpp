@@ -1,5 +1,6 @@
 #include "ris/geometry/topo.h"
 
+#include <fmt/format.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -329,6 +330,18 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
                      "the DEM does not cover any pixel of the acquisition's radar grid");
   }
   const std::size_t np = w.size();
+  // Layers (53 bytes a pixel) and the DEM pass's sums (16 bytes a pixel per
+  // thread) live in memory: refuse a window that would not fit comfortably.
+  constexpr std::size_t kMaxPixels = 50'000'000;
+  if (np > kMaxPixels) {
+    throw InputError(
+        acq.source, options.full_grid ? "--full-grid" : "--dem",
+        fmt::format("the window is {} lines x {} bins ({:.0f} M pixels, about {:.1f} "
+                    "GiB of layers); at most {} M pixels: choose one burst "
+                    "(--burst), a smaller DEM, or drop --full-grid",
+                    w.lines, w.bins, static_cast<double>(np) / 1e6,
+                    static_cast<double>(np) * 90.0 / 1073741824.0, kMaxPixels / 1'000'000));
+  }
   t.lat_deg.resize(np);
   t.lon_deg.resize(np);
   for (auto* v :
