@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <string>
 
@@ -79,6 +80,30 @@ TEST(SarCoherent, SingleLookUniformAreaHasExponentialIntensity) {
     for (int b = 15; b < img.bins - 15; ++b, ++n)
       if (intensity[img.index(line, b)] > img.mean_power_w[img.index(line, b)]) ++above;
   EXPECT_NEAR(double(above) / n, std::exp(-1.0), 0.02);
+}
+
+// E|z|^2 of the coherent sum is the incoherent mean power (MODEL.md section
+// 3; the truncated sinc's energy renormalised): pooled over 24 single-look
+// realisations (~480,000 independent resolution cells, a standard error of
+// 0.14% for the exponential law), the mean ratio is 1 within 0.5%.
+TEST(SarCoherent, CoherentMeanPowerEqualsTheIncoherentImage) {
+  const SlarSimulation sim =
+      simulate_slar(speckle_scene(), coherent_radar(), test::CosineSigma0Source());
+  const SlarImage& img = sim.image;
+  double sum = 0.0;
+  std::int64_t n = 0;
+  for (std::uint64_t seed = 100; seed < 124; ++seed) {
+    const std::vector<float> intensity = coherent_sar_intensity(sim, seed);
+    for (int line = 40; line < img.lines - 40; ++line) {
+      for (int b = 15; b < img.bins - 15; ++b) {
+        const std::size_t i = img.index(line, b);
+        sum += intensity[i] / img.mean_power_w[i];
+        ++n;
+      }
+    }
+  }
+  // Measured 0.99978; without the renormalisation it would be 0.976.
+  EXPECT_NEAR(sum / double(n), 1.0, 5e-3);
 }
 
 TEST(SarCoherent, FourLookAverageHasEnlFour) {
