@@ -11,8 +11,8 @@
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_line.h"
 #include "ris/geometry/terrain_sample.h"
+#include "ris/kernels/vector_clones.h"
 #include "ris/util/error.h"
-#include "ris/util/vector_clones.h"
 
 namespace ris {
 

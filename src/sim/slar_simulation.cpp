@@ -6,17 +6,16 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <tuple>
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/image/greytone.h"
 #include "ris/image/greytone_image.h"
 #include "ris/image/greytone_terms.h"
 #include "ris/image/speckle.h"
-#include "ris/image/thermal_noise.h"
 #include "ris/sensor/elevation_gain.h"
 #include "ris/sim/radiometry_setup.h"
 #include "ris/sim/slar_line_blocks.h"
+#include "ris/sim/slar_run_setup.h"
 #include "ris/util/error.h"
 #include "ris/util/float_select.h"
 
@@ -113,14 +112,11 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   // switched-off factors at their reference values.
   options.report("backscatter", 0.3);
   RadiometrySetup rs = prepare_radiometry(scene, radar, sim.derived, sigma0, backscatter_file);
-  sim.categories = rs.categories;
-  sim.category_names = rs.category_names;
-  sim.backscatter_description = rs.backscatter_description;
   SlarImagingParams& imaging = rs.imaging;
 
   options.report("image formation", 0.4);
-  set_sar_windows(radar, sim.geometry.line_spacing_m, imaging);
-  sim.warnings = sar_resolution_warnings(scene, sim.geometry, radar);
+  // SAR windows, resolution warnings and thermal noise (as a streamed run).
+  complete_slar_setup(sim, rs, scene);
   check_point_targets_on_scene(options.targets, scene);
   if (fused) {
     options.report("geometry + image formation + scene maps (fused)", 0.4);
@@ -133,11 +129,8 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
     imaging.keep_element_power = radar.mode == RadarMode::sar && radar.sar.coherent;
     sim.image = form_slar_image(sim.geometry, rs.lut, imaging, radar.source_file);
   }
-  std::tie(sim.range_corrected, sim.area_corrected) = apply_switch_corrections(sim.image, rs.terms);
-
-  // SAR thermal noise: NESZ over the multilooked resolution cell.
-  sim.noise_power_w = sar_noise_power_w(radar, imaging, sim.geometry.altitude_m);
-  if (!sim.noise_power_w.empty()) add_noise_power(sim.image, sim.noise_power_w);
+  // Switch corrections and SAR thermal noise (as a streamed run's blocks).
+  finish_slar_image(sim, sim.image, rs.terms);
 
   // Products on the scene grid and the ground-range grid.
   if (!fused) {
