@@ -1,4 +1,4 @@
-#include "sim/slar_line_kernels.h"
+#include "sim/slar_line_stages.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "image/slar_element.h"
+#include "kernels/image/slar_element.h"
 
 #include <algorithm>
 #include <bit>
@@ -7,10 +7,10 @@
 #include <cstring>
 #include <limits>
 
+#include "kernels/simd/vec8.h"
+#include "ris/kernels/vector_clones.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
-#include "ris/util/vector_clones.h"
-#include "util/vec8.h"
 
 namespace ris::detail {
 
@@ -73,7 +73,7 @@ constexpr std::int32_t kCodeGeneral = 1 << 24;
 constexpr std::uint64_t kSeenOne = (std::uint64_t{1} << 32) | 1;
 
 // Pass 1 works on eight elements at a time in GCC vector types
-// (util/vec8.h): GCC 12 does not vectorise this loop by itself (its
+// (kernels/simd/vec8.h): GCC 12 does not vectorise this loop by itself (its
 // conditions mix byte flags and float comparisons).
 using vec8::F8;
 using vec8::I8;

@@ -1,4 +1,8 @@
+// The Philox kernels (ris/util/counter_rng.h): the whole file is the block
+// kernel, its AVX-512 intrinsics and their dispatch.
 #include "ris/util/counter_rng.h"
+
+#include "ris/kernels/vector_clones.h"
 
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -8,23 +12,16 @@ namespace ris {
 
 namespace {
 
-// AVX-512 and AVX2 clones beside the SSE2 default, chosen at load time (GCC
-// function multiversioning, as ris/geometry/line_scan.cpp): 32 x 32 -> 64-bit
-// multiplies eight or four at a time (vpmuludq) instead of one; integers
-// only, so every clone gives the same bits.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define RIS_PHILOX_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define RIS_PHILOX_CLONES
-#endif
+// AVX-512 and AVX2 clones beside the SSE2 default, chosen at load time
+// (RIS_WIDE_VECTOR_CLONES): 32 x 32 -> 64-bit multiplies eight or four at a
+// time (vpmuludq) instead of one; integers only, so every clone gives the
+// same bits.
 
 // philox4x32_10 with the rounds over a block of counters, structure of arrays.
-RIS_PHILOX_CLONES void philox_block_kernel(std::uint32_t k0, std::uint32_t k1, std::uint32_t a0,
-                                           std::uint32_t b, std::uint32_t stream, std::size_t n,
-                                           std::uint32_t* __restrict w0,
-                                           std::uint32_t* __restrict w1,
-                                           std::uint32_t* __restrict w2,
-                                           std::uint32_t* __restrict w3) {
+RIS_WIDE_VECTOR_CLONES void philox_block_kernel(
+    std::uint32_t k0, std::uint32_t k1, std::uint32_t a0, std::uint32_t b, std::uint32_t stream,
+    std::size_t n, std::uint32_t* __restrict w0, std::uint32_t* __restrict w1,
+    std::uint32_t* __restrict w2, std::uint32_t* __restrict w3) {
   constexpr std::uint64_t kM0 = 0xD2511F53u;
   constexpr std::uint64_t kM1 = 0xCD9E8D57u;
   constexpr std::uint32_t kW0 = 0x9E3779B9u;

@@ -110,11 +110,9 @@ inline double radar_power_w(double k_radar, double gain2, float sigma0, float ar
 // 1024 m, R^4 stays within ~1e-12 (R = 1 m) to 1e16 (R = 10^7 m) and the
 // ratio well inside float's range. The order of the operations is part of
 // the definition (vectorised and scalar lanes give the same bits).
-// F: float, or a GCC vector of floats (the power pass's eight lanes; as in
-// util/vec8.h, the ABI note for vectors passed by value (-Wpsabi) is moot for
-// an always-inlined function, and reported at the end of the file, hence
-// not popped).
-#pragma GCC diagnostic ignored "-Wpsabi"
+// F: float, or a GCC vector of floats (the power pass's eight lanes, in
+// kernels/image/slar_element.cpp; -Wpsabi, GCC's note on vectors passed by
+// value, is off for src/kernels/ only and moot for an inlined function).
 template <typename F>
 __attribute__((always_inline)) inline F element_power_ratio(F gain2, F sigma0, F area_m2,
                                                             F slant_range_m) {

@@ -5,16 +5,16 @@
 #include <cstddef>
 #include <limits>
 
+#include "kernels/simd/vec8.h"
+#include "ris/kernels/vector_clones.h"
 #include "ris/util/fast_math.h"
-#include "ris/util/vector_clones.h"
-#include "util/vec8.h"
 
 // GCC 12's AVX-512 intrinsics pass _mm512_undefined_*() as the masked-off
 // source of the unmasked forms, which -Wmaybe-uninitialized reports once they
 // are inlined (GCC bug 105593, fixed in GCC 13): a false positive. (Before
 // the intrinsics' headers, whose lines the warning points at.)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include "ris/util/avx512.h"
+#include "kernels/simd/avx512.h"
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
@@ -249,7 +249,7 @@ RIS_VECTOR_CLONES void cot_look_angle(int j0, int n, double first_u, double step
 
 namespace {
 
-// The scans eight samples at a time (util/vec8.h): a running minimum or
+// The scans eight samples at a time (kernels/simd/vec8.h): a running minimum or
 // maximum is an inclusive prefix scan, log-step within the block (three
 // shifts and mins), then combined with the previous blocks' value, so the
 // chain from block to block is one min and one broadcast instead of one

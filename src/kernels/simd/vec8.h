@@ -1,4 +1,4 @@
-// Internal: eight-lane GCC vector types and helpers, for hot loops that GCC
+// Internal to kernels/: eight-lane GCC vector types and helpers, for hot loops that GCC
 // 12 does not vectorise by itself (conditions that mix byte flags with float
 // or double comparisons). One F8 is one AVX2 register in a RIS_VECTOR_CLONES
 // function's AVX2 clone and two SSE2 registers in its default clone; the
@@ -13,10 +13,9 @@
 #include <cstdint>
 #include <cstring>
 
-// The helpers take and return vectors; they are internal and inlined into
-// the clones, so GCC's note that passing them without AVX changes the ABI
-// (-Wpsabi, reported at the end of the file, hence not popped) is moot.
-#pragma GCC diagnostic ignored "-Wpsabi"
+// The helpers take and return vectors by value; GCC's note that this
+// changes the ABI without AVX (-Wpsabi) is moot for inlined internal
+// helpers and is switched off for the kernels folder only (CMakeLists.txt).
 
 namespace ris::vec8 {
 

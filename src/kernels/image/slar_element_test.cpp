@@ -1,4 +1,4 @@
-#include "image/slar_element.h"
+#include "kernels/image/slar_element.h"
 
 #include <gtest/gtest.h>
 

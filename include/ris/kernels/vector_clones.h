@@ -15,16 +15,20 @@
 
 //
 // RIS_WIDE_VECTOR_CLONES adds an AVX-512 clone (twice the lanes of GCC's
-// vectorised loops; one instruction for util/vec8.h's eight doubles). GCC's
-// avx512f target enables FMA, so a file that uses it must be compiled with
-// -ffp-contract=off (CMakeLists.txt), which keeps every clone's bytes the
-// same.
+// vectorised loops; one instruction for kernels/simd/vec8.h's eight doubles). GCC's
+// avx512f target enables FMA, so it is used only in src/kernels/, which
+// is compiled with -ffp-contract=off (CMakeLists.txt): every clone's bytes
+// stay the same.
 //
 // RIS_V4_VECTOR_CLONES adds an x86-64-v4 clone instead (AVX-512 F, VL, BW,
-// DQ): for loops in GCC's 8-lane vector types (util/vec8.h) that run out of
+// DQ): for loops in GCC's 8-lane vector types (kernels/simd/vec8.h) that run out of
 // AVX2's 16 registers, AVX-512VL gives the same 256-bit operations 32
 // registers and mask registers for the selects (no spills). Its target
-// enables FMA too: the same -ffp-contract=off rule.
+// enables FMA too: the same rule (src/kernels/ only).
+//
+// Public because ris/util/float_select.h's key template (over a caller's
+// predicate, so a template, not a compiled kernel) uses RIS_VECTOR_CLONES,
+// whose AVX2 target has no FMA; every other user is in src/kernels/.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #define RIS_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #define RIS_WIDE_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))

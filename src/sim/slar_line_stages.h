@@ -1,21 +1,22 @@
-// Internal: the per-line steps shared by the fused SLAR paths (along a grid
-// axis: slar_line_blocks.cpp; any other heading: slar_oblique_lines.cpp):
-// per-thread line scratch, the line's look geometry, and image formation of
-// the line's elements into its range profile. They run the same code as the
-// stage path (compute_slar_geometry + form_slar_image), so the products are
-// the same bytes.
+// Internal: the line engine (sim/slar_line_engine.h)'s per-line stages,
+// shared by every line source (along a grid axis: slar_line_blocks.cpp; any
+// other heading: slar_oblique_lines.cpp): per-thread line scratch, the
+// line's look geometry, and radiometry and image formation of the line's
+// elements into its range profile. They run the same code as the stage path
+// (compute_slar_geometry + form_slar_image), so the products are the same
+// bytes.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "image/slar_element.h"
+#include "kernels/image/slar_element.h"
 #include "ris/geometry/line_scan.h"
 #include "ris/geometry/scene_geometry_maps.h"
 #include "ris/geometry/slar_geometry.h"
 #include "ris/image/slar_image.h"
-#include "ris/sim/slar_line_blocks.h"
+#include "ris/sim/slar_line_parts.h"
 
 namespace ris::detail {
 

@@ -1,6 +1,6 @@
 #include "ris/util/float_select.h"
 
-#include "ris/util/vector_clones.h"
+#include "ris/kernels/vector_clones.h"
 
 namespace ris::detail {
 
