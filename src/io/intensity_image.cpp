@@ -47,41 +47,10 @@ std::string product_layer(const std::string& path, int index) {
                 : fmt::format("layer {} asked for, the product has {} ({})", index, seen, names));
 }
 
-}  // namespace
-
-PixelScale parse_pixel_scale(const std::string& text, const std::string& option) {
-  if (text == "auto") return PixelScale::automatic;
-  if (text == "power") return PixelScale::power;
-  if (text == "amplitude") return PixelScale::amplitude;
-  if (text == "db") return PixelScale::db;
-  throw InputError("", option,
-                   fmt::format("expected auto, power, amplitude or db, got '{}'", text));
-}
-
-IntensityImage read_intensity_image(const std::string& path, int band, PixelScale scale) {
-  ensure_gdal_registered();
-  IntensityImage img;
-  const bool product = ends_with(path, ".h5") || ends_with(path, ".hdf5");
-  if (product && !std::filesystem::exists(path)) {
-    throw InputError(path, "", "no such file");
-  }
-  img.source = product ? product_layer(path, band) : path;
-  const int band_index = product ? 1 : band;
-  // A product's layer is a GDAL subdataset name, not a path.
-  const bool subdataset = product || img.source.rfind("HDF5:", 0) == 0;
-  const GdalDataset ds =
-      subdataset ? GdalDataset(GDALOpenEx(img.source.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY,
-                                          nullptr, nullptr, nullptr))
-                 : open_raster(img.source);
-  if (!ds) throw InputError(path, "", "GDAL cannot open " + img.source + ": " + last_gdal_error());
-  const int n_bands = GDALGetRasterCount(handle(ds));
-  if (band_index < 1 || band_index > n_bands) {
-    throw InputError(path, "band",
-                     fmt::format("band {} asked for, the raster has {}", band_index, n_bands));
-  }
-  GDALRasterBandH b = GDALGetRasterBand(handle(ds), band_index);
-  img.cols = GDALGetRasterXSize(handle(ds));
-  img.rows = GDALGetRasterYSize(handle(ds));
+// Band b's values as intensity into img (whose cols and rows are set), by the
+// rules of the header.
+void fill_intensity(GDALRasterBandH b, PixelScale scale, const std::string& path,
+                    IntensityImage& img) {
   const std::size_t n = static_cast<std::size_t>(img.cols) * static_cast<std::size_t>(img.rows);
   const GDALDataType type = GDALGetRasterDataType(b);
   int has_nodata = 0;
@@ -122,6 +91,44 @@ IntensityImage read_intensity_image(const std::string& path, int band, PixelScal
                   : s == PixelScale::amplitude ? "amplitude^2"
                                                : "10^(dB/10)";
   }
+}
+
+}  // namespace
+
+PixelScale parse_pixel_scale(const std::string& text, const std::string& option) {
+  if (text == "auto") return PixelScale::automatic;
+  if (text == "power") return PixelScale::power;
+  if (text == "amplitude") return PixelScale::amplitude;
+  if (text == "db") return PixelScale::db;
+  throw InputError("", option,
+                   fmt::format("expected auto, power, amplitude or db, got '{}'", text));
+}
+
+IntensityImage read_intensity_image(const std::string& path, int band, PixelScale scale) {
+  ensure_gdal_registered();
+  IntensityImage img;
+  const bool product = ends_with(path, ".h5") || ends_with(path, ".hdf5");
+  if (product && !std::filesystem::exists(path)) {
+    throw InputError(path, "", "no such file");
+  }
+  img.source = product ? product_layer(path, band) : path;
+  const int band_index = product ? 1 : band;
+  // A product's layer is a GDAL subdataset name, not a path.
+  const bool subdataset = product || img.source.rfind("HDF5:", 0) == 0;
+  const GdalDataset ds =
+      subdataset ? GdalDataset(GDALOpenEx(img.source.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY,
+                                          nullptr, nullptr, nullptr))
+                 : open_raster(img.source);
+  if (!ds) throw InputError(path, "", "GDAL cannot open " + img.source + ": " + last_gdal_error());
+  const int n_bands = GDALGetRasterCount(handle(ds));
+  if (band_index < 1 || band_index > n_bands) {
+    throw InputError(path, "band",
+                     fmt::format("band {} asked for, the raster has {}", band_index, n_bands));
+  }
+  GDALRasterBandH b = GDALGetRasterBand(handle(ds), band_index);
+  img.cols = GDALGetRasterXSize(handle(ds));
+  img.rows = GDALGetRasterYSize(handle(ds));
+  fill_intensity(b, scale, path, img);
   double gt[6];
   if (GDALGetGeoTransform(handle(ds), gt) == CE_None) {
     img.has_geotransform = true;
@@ -135,6 +142,49 @@ IntensityImage read_intensity_image(const std::string& path, int band, PixelScal
     const auto eq = item.find('=');
     if (eq != std::string::npos) img.metadata[item.substr(0, eq)] = item.substr(eq + 1);
   }
+  return img;
+}
+
+}  // namespace ris
+
+namespace ris {
+
+IntensityImage read_intensity_image_on_grid(const std::string& path, int band, PixelScale scale,
+                                            const IntensityImage& grid) {
+  ensure_gdal_registered();
+  const GdalDataset ds = open_raster(path);
+  double gt[6];
+  const char* wkt = GDALGetProjectionRef(handle(ds));
+  const std::array<double, 6>& g = grid.georef.geotransform;
+  if (!grid.has_geotransform || grid.georef.crs_wkt.empty() ||
+      GDALGetGeoTransform(handle(ds), gt) != CE_None || wkt == nullptr || *wkt == 0) {
+    throw InputError(path, "grid",
+                     "the images differ in size and are not both georeferenced (a geotransform "
+                     "and a CRS each): nothing says which pixels correspond");
+  }
+  if (g[2] != 0.0 || g[4] != 0.0 || !(g[5] < 0.0)) {
+    throw InputError(path, "grid", "the first image's grid is rotated: resample it north-up first");
+  }
+  if (band != 1) {
+    throw InputError(path, "band",
+                     "a raster resampled onto the other image's grid is read from band 1");
+  }
+  WarpGrid w;
+  w.crs_wkt = grid.georef.crs_wkt;
+  w.min_x = g[0];
+  w.max_y = g[3];
+  w.cell_x = g[1];
+  w.cell_y = -g[5];
+  w.cols = grid.cols;
+  w.rows = grid.rows;
+  const GdalDataset warped = warp_band1(handle(ds), wkt, w, "bilinear", "Float64", "nan", path);
+  IntensityImage img;
+  img.source = path + " (resampled bilinearly onto the first image's grid)";
+  img.cols = grid.cols;
+  img.rows = grid.rows;
+  fill_intensity(GDALGetRasterBand(handle(warped), 1), scale, path, img);
+  img.georef = grid.georef;
+  img.has_geotransform = true;
   return img;
 }
 

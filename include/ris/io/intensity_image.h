@@ -37,6 +37,12 @@ struct IntensityImage {
 IntensityImage read_intensity_image(const std::string& path, int band = 1,
                                     PixelScale scale = PixelScale::automatic);
 
+// The raster at `path` (band 1) resampled bilinearly onto `grid`'s pixels
+// (GDAL's warper, exact transformation). InputError when either lacks a
+// geotransform and CRS, or grid is rotated.
+IntensityImage read_intensity_image_on_grid(const std::string& path, int band, PixelScale scale,
+                                            const IntensityImage& grid);
+
 PixelScale parse_pixel_scale(const std::string& text, const std::string& option);
 
 }  // namespace ris
