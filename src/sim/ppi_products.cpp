@@ -144,7 +144,7 @@ void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene
     write_text_file_atomic(dir.path("metadata.json"),
                            ppi_metadata(scene, sim, pic, info).dump(2) + "\n");
   });
-  run_concurrently(tasks);
+  run_concurrently(tasks, info.threads);  // --threads bounds the writers too
   dir.commit();
 }
 

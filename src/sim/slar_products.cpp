@@ -319,7 +319,7 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
     write_text_file_atomic(dir.path("metadata.json"),
                            slar_metadata(scene, sim, pic, info, extra_metadata).dump(2) + "\n");
   });
-  run_concurrently(tasks);
+  run_concurrently(tasks, info.threads);  // --threads bounds the writers too
   dir.commit();
 }
 
