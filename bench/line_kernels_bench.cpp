@@ -16,7 +16,7 @@
 #include <random>
 #include <vector>
 
-#include "image/slar_element.h"
+#include "kernels/image/slar_element.h"
 #include "ris/backscatter/library.h"
 #include "ris/geometry/line_scan.h"
 #include "ris/util/units.h"

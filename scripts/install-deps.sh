@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libgdal-dev gdal-bin
+  # PROJ's grids: EGM96 geoid heights to ellipsoidal heights (ris topo, docs/geometry.md)
+  proj-data
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libfmt-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -17,6 +17,7 @@
 // A file that appears or disappears fails too. With RIS_GOLDEN_UPDATE=1 the
 // test writes expected.json instead of comparing (scripts/golden-update.sh),
 // so a deliberate change of output shows as a diff in review.
+#include <fmt/format.h>
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
@@ -26,6 +27,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -103,12 +105,16 @@ json describe_band(GDALRasterBand& band) {
                   static_cast<GPtrDiff_t>(values.size()));
   std::int64_t finite = 0, nan = 0;
   double lo = INFINITY, hi = -INFINITY, sum = 0.0;
+  // The count of each value, kept while there are few (categories, masks).
+  std::map<double, std::int64_t> counts;
+  constexpr std::size_t kMaxDistinct = 64;
   for (const double v : values) {
     if (!std::isfinite(v)) {
       ++nan;
       continue;
     }
     ++finite;
+    if (counts.size() <= kMaxDistinct) ++counts[v];
     lo = std::min(lo, v);
     hi = std::max(hi, v);
     sum += v;
@@ -131,6 +137,11 @@ json describe_band(GDALRasterBand& band) {
   b["max"] = finite > 0 ? hi : 0.0;
   b["mean"] = mean;
   b["std"] = finite > 0 ? std::sqrt(ss / double(finite)) : 0.0;
+  if (counts.size() <= kMaxDistinct) {
+    json c = json::object();
+    for (const auto& [v, n] : counts) c[fmt::format("{:.9g}", v)] = n;
+    b["value_counts"] = c;
+  }
   return b;
 }
 
@@ -238,7 +249,8 @@ void compare_file(const json& want, const json& got, double rel, bool exact,
       const json& w = want["bands"][i];
       const json& g = got["bands"][i];
       const std::string at = name + " band " + std::to_string(i + 1);
-      for (const char* key : {"type", "description", "nodata", "finite", "non_finite"}) {
+      for (const char* key :
+           {"type", "description", "nodata", "finite", "non_finite", "value_counts"}) {
         EXPECT_EQ(w.value(key, json()), g.value(key, json())) << at << " " << key;
       }
       const bool is_float = g["type"].get<std::string>().rfind("Float", 0) == 0 ||

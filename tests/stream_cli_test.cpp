@@ -1,8 +1,10 @@
 // `ris simulate --stream` / `--block-lines` and `ris scene fractal
 // --generator noise` end to end.
+#include <gdal_priv.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "ris/io/raster_io.h"
@@ -68,6 +70,17 @@ TEST(StreamCli, NoiseFractalIsATiledCompressedScene) {
   EXPECT_GE(lo, 50.0);
   EXPECT_LE(hi, 450.0);
   EXPECT_GT(hi - lo, 380.0);
+  // Tiled (square blocks, not strips of rows) and compressed, as the name says.
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(ds);
+  int bx = 0, by = 0;
+  ds->GetRasterBand(1)->GetBlockSize(&bx, &by);
+  EXPECT_LT(bx, 300);
+  EXPECT_EQ(bx, by);
+  const char* compression = ds->GetMetadataItem("COMPRESSION", "IMAGE_STRUCTURE");
+  ASSERT_NE(compression, nullptr);
+  EXPECT_NE(std::string(compression), "NONE");
   EXPECT_NE(test::run_ris("scene fractal --generator fft -o " + path).exit_code, 0);
 }
 

@@ -7,12 +7,12 @@
 #include <limits>
 #include <tuple>
 
+#include "kernels/geometry/terrain_height_kernels.h"
 #include "ris/geometry/line_scan.h"
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_line.h"
 #include "ris/geometry/terrain_sample.h"
 #include "ris/util/error.h"
-#include "ris/util/vector_clones.h"
 
 namespace ris {
 
@@ -154,19 +154,6 @@ void fill_oblique_line(const Scene& scene, const TerrainTexels& tex, SlarGeometr
 
 }  // namespace
 
-namespace {
-
-// Whether a cell with data has h >= the float threshold (branch-free: it
-// vectorises, eight floats at a time in the AVX2 clone).
-RIS_VECTOR_CLONES bool any_at_or_above(std::size_t n, const std::uint8_t* __restrict valid,
-                                       const float* __restrict h, float threshold) {
-  int reaches = 0;
-  for (std::size_t i = 0; i < n; ++i) reaches |= (valid[i] != 0) & (h[i] >= threshold);
-  return reaches != 0;
-}
-
-}  // namespace
-
 void check_terrain_below_sensor(const Scene& scene, double altitude_m, const std::string& file) {
   // Almost always nothing reaches the sensor: first a branch-free scan that
   // only says whether a cell does, then, only then, the highest cell for the
@@ -175,7 +162,8 @@ void check_terrain_below_sensor(const Scene& scene, double altitude_m, const std
   // (NaN: both false), twice the lanes of a comparison in double.
   float t = static_cast<float>(altitude_m);
   if (double(t) < altitude_m) t = std::nextafter(t, std::numeric_limits<float>::infinity());
-  if (!any_at_or_above(scene.size(), scene.valid.data(), scene.elevation_m.data(), t)) return;
+  if (!kernels::any_at_or_above(scene.size(), scene.valid.data(), scene.elevation_m.data(), t))
+    return;
   std::size_t worst = scene.size();
   float max_h = -std::numeric_limits<float>::infinity();
   for (std::size_t i = 0; i < scene.size(); ++i) {

@@ -107,7 +107,7 @@ TEST(ScenePreview, FlatGroundKeepsItsColourAndContoursDarken) {
   EXPECT_LT(px(5, 5).r + px(5, 5).g + px(5, 5).b, (c9.r + c9.g + c9.b) / 2 + 10);
 }
 
-TEST(ScenePreview, WritesAPngWithMapAndLegend) {
+TEST(ScenePreview, WritesAPngWithTheMapsCellsAndALegendWithSwatchAndText) {
   test::TempDir dir;
   Scene s = Scene::flat(30, 50, 6.096, 0.0f, 1);
   s.category[s.index(3, 3)] = 7;
@@ -119,6 +119,29 @@ TEST(ScenePreview, WritesAPngWithMapAndLegend) {
   // Small grids are enlarged by whole pixels to at least 400 px: 8 x 50 = 400.
   EXPECT_GE(png.cols, 400 + 300);
   EXPECT_GE(png.rows, 8 * 30);
+  ASSERT_GE(png.bands, 3);
+  const std::size_t plane = static_cast<std::size_t>(png.cols) * png.rows;
+  const auto is = [&](std::size_t i, Rgb8 c) {
+    return png.data[i] == c.r && png.data[plane + i] == c.g && png.data[2 * plane + i] == c.b;
+  };
+  // The map: the one cell of category 7 is an 8 x 8 block of its colour; the
+  // legend (right of the map): category 1's swatch and dark text.
+  const Rgb8 c1 = category_colour(1), c7 = category_colour(7);
+  int c7_map = 0, c1_legend = 0, dark_legend = 0;
+  for (int y = 0; y < png.rows; ++y) {
+    for (int x = 0; x < png.cols; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * png.cols + x;
+      if (x < 400) {
+        c7_map += is(i, c7);
+      } else {
+        c1_legend += is(i, c1);
+        dark_legend += png.data[i] + png.data[plane + i] + png.data[2 * plane + i] < 200;
+      }
+    }
+  }
+  EXPECT_EQ(c7_map, 64);
+  EXPECT_GT(c1_legend, 20);
+  EXPECT_GT(dark_legend, 50);
   int files = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
   EXPECT_EQ(files, 1);  // the PNG and no temporary

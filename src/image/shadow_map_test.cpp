@@ -59,10 +59,11 @@ TEST(ShadowMap, FlatPlaneCountsEqualTheCellsWhoseSlantRangeFallsInEachBin) {
   EXPECT_NE(expected.find('3'), std::string::npos);
 }
 
-TEST(ShadowMap, BoxShowsShadowZerosAndLayoverCountsAboveFlat) {
+TEST(ShadowMap, BoxShowsShadowZerosAndLayoverCountsAboveFlatWhereTheGeometryPutsThem) {
   Scene s = Scene::flat(4, 300, kCell, 0.0f, 1);
+  const double h = 200.0;
   for (int r = 0; r < s.rows; ++r)
-    for (int c = 100; c < 120; ++c) s.elevation_m[s.index(r, c)] = 200.0f;
+    for (int c = 100; c < 120; ++c) s.elevation_m[s.index(r, c)] = float(h);
   const Scene flat = Scene::flat(4, 300, kCell, 0.0f, 1);
   const SlarImagingParams p = params(5000.0, 120);
   const auto text = [&](const Scene& sc) {
@@ -70,12 +71,31 @@ TEST(ShadowMap, BoxShowsShadowZerosAndLayoverCountsAboveFlat) {
     return rows_of(shadow_map_text(form_slar_image(g, test::cosine_lut(sc), p, "r")))[2];
   };
   const std::string box = text(s), ref = text(flat);
-  EXPECT_NE(box.find('0'), std::string::npos);
   EXPECT_EQ(ref.find('0'), std::string::npos);
+  const auto bin_of = [&](double u, double z) {
+    return static_cast<int>(std::floor((std::hypot(u, kH - z) - p.range.near_m) / p.range.bin_m));
+  };
+  const auto u_of = [](int c) { return kNear + (c + 0.5) * kCell; };
+  // Shadow: the ground behind the box's far top sample (u_top, cell 119)
+  // out to u_top H / (H - h), where the ray over the top meets the ground.
+  const double u_top = u_of(119), u_end = u_top * kH / (kH - h);
+  const int first_zero = static_cast<int>(box.find('0'));
+  const int last_zero = static_cast<int>(box.rfind('0'));
+  ASSERT_GE(first_zero, 0) << box;
+  EXPECT_NEAR(first_zero, bin_of(u_top + kCell, 0.0), 1) << box;
+  EXPECT_NEAR(last_zero, bin_of(u_end, 0.0), 1) << box;
+  for (int b = first_zero; b <= last_zero; ++b) EXPECT_EQ(box[b], '0') << "bin " << b;
+  // Layover: the top (cells 100-119 at h) lands among the nearer ground's
+  // bins, which then count more points than flat ground does; nowhere else.
+  const int top_near = bin_of(u_of(100), h), top_far = bin_of(u_of(119), h);
   int above = 0;
-  for (std::size_t b = 0; b < box.size(); ++b)
-    if (box[b] != '0' && box[b] != '9' && (box[b] == '#' || box[b] > ref[b])) ++above;
-  EXPECT_GT(above, 0);
+  for (int b = 0; b < static_cast<int>(box.size()); ++b) {
+    if (box[b] == '0' || box[b] == '9' || !(box[b] == '#' || box[b] > ref[b])) continue;
+    ++above;
+    EXPECT_GE(b, top_near - 1) << box;
+    EXPECT_LE(b, top_far + 1) << box;
+  }
+  EXPECT_GE(above, top_far - top_near - 1) << box;
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "image/slar_element.h"
+#include "kernels/image/slar_element.h"
 #include "ris/image/slar_azimuth_integrator.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"

@@ -46,7 +46,7 @@ TEST(SlarImage, FlatPlanePixelPowerFollowsTheRadarEquationAcrossTheSwath) {
   ASSERT_EQ(img.bins, 200);
   const double k_radar = p.transmit_power_w * p.wavelength_m * p.wavelength_m * p.peak_gain *
                          p.peak_gain / std::pow(4 * kPi, 3);
-  double worst = 0.0;
+  double worst = 0.0, worst_area = 0.0;
   for (int line : {40, 60, 80}) {
     for (int b = 0; b < img.bins; ++b) {
       const double R = p.range.centre_m(b);
@@ -60,14 +60,19 @@ TEST(SlarImage, FlatPlanePixelPowerFollowsTheRadarEquationAcrossTheSwath) {
       const double got = img.mean_power_w[img.index(line, b)];
       const double rel = std::abs(got / expected - 1.0);
       worst = std::max(worst, rel);
-      EXPECT_LT(rel, 0.01) << "line " << line << " bin " << b;
+      // Measured 1.7e-4 (the elements' ranges and angles spread over a bin,
+      // against the bin centre's): the tolerance is 3 times that.
+      EXPECT_LT(rel, 5e-4) << "line " << line << " bin " << b;
       EXPECT_EQ(img.mask[img.index(line, b)], 0);
       // The seed's cell area dA = w l, l = c tau / (2 sin theta).
       const double cell_area = R * p.azimuth_beamwidth_rad * p.range.bin_m / std::sin(theta);
-      EXPECT_NEAR(img.area_m2[img.index(line, b)] / cell_area, 1.0, 0.01);
+      const double area_rel = std::abs(img.area_m2[img.index(line, b)] / cell_area - 1.0);
+      worst_area = std::max(worst_area, area_rel);
+      EXPECT_LT(area_rel, 2e-4);  // measured 4.1e-5
     }
   }
   RecordProperty("worst_relative_error", std::to_string(worst));
+  RecordProperty("worst_area_error", std::to_string(worst_area));
   // Near the track's ends the footprint runs off the scene: less power.
   EXPECT_LT(img.mean_power_w[img.index(0, 100)], 0.8 * img.mean_power_w[img.index(60, 100)]);
 }

@@ -342,7 +342,7 @@ category = 4
   EXPECT_NEAR(h_at(s, 31.5, 0.5), 0.0, kTolM);
 }
 
-TEST(SceneBuilder, StandardSceneStatisticsArePinned) {
+TEST(SceneBuilder, StandardSceneHasTheSeedsSizeApexAndTenCategories) {
   const SceneDescription d =
       read_scene_description(std::string(RIS_DATA_DIR) + "/scenes/ku-geometric.toml");
   EXPECT_EQ(d.name, "ku-geometric");
@@ -359,10 +359,19 @@ TEST(SceneBuilder, StandardSceneStatisticsArePinned) {
   // The 2000 ft pyramid's apex sits on a cell centre.
   EXPECT_NEAR(st.max_elevation_m, 2000.0 * kFeetToMetres, 1e-3);
   EXPECT_EQ(st.min_elevation_m, 0.0);
-  const std::map<std::uint16_t, std::size_t> expected{
-      {1, 540940}, {2, 8074},  {3, 34280}, {4, 22520}, {5, 13999},
-      {6, 16762},  {7, 11203}, {8, 15837}, {9, 14385}, {10, 22000}};
-  EXPECT_EQ(st.category_counts, expected);
+  // Every one of the ten categories is used and the counts cover the grid.
+  // The exact count of each was read off the built scene, not derived
+  // independently: it is pinned as golden data (tests/golden/streamed-blocks,
+  // scene.tif band 2's value_counts; docs/testing.md), not here.
+  ASSERT_EQ(st.category_counts.size(), 10u);
+  std::size_t total = 0;
+  for (const auto& [category, n] : st.category_counts) {
+    EXPECT_GE(category, 1);
+    EXPECT_LE(category, 10);
+    EXPECT_GT(n, 0u) << "category " << category;
+    total += n;
+  }
+  EXPECT_EQ(total, 700000u);
 }
 
 // Bad input: each an InputError naming the file and the key.

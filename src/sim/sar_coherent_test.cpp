@@ -133,12 +133,16 @@ TEST(SarCoherent, PointTargetResolutionAndSidelobesMatchTheDesign) {
     const IrfMeasurement m =
         measure_irf(intensity, img.lines, img.bins, img.line_spacing_m, img.range.bin_m, pr.line,
                     bin, 3, 24, IrfInterpolation::sinc);
-    EXPECT_NEAR(m.range.width_m / 3.0, 1.0, 0.10) << "R " << pr.slant_range_m;
-    EXPECT_NEAR(m.azimuth.width_m / 3.0, 1.0, 0.10) << "R " << pr.slant_range_m;
-    // An unweighted sinc: first sidelobe -13.26 dB; ISLR about -10 dB.
-    EXPECT_NEAR(m.range.pslr_db, -13.26, 1.0);
-    EXPECT_NEAR(m.azimuth.pslr_db, -13.26, 1.0);
-    EXPECT_NEAR(m.islr_db, -10.0, 1.5);
+    // Measured within 4e-4 of the design's 3 m (sinc interpolation of 1 m
+    // pixels); the clutter is 50 dB below the target.
+    EXPECT_NEAR(m.range.width_m / 3.0, 1.0, 4e-3) << "R " << pr.slant_range_m;
+    EXPECT_NEAR(m.azimuth.width_m / 3.0, 1.0, 4e-3) << "R " << pr.slant_range_m;
+    // An unweighted sinc: first sidelobe -13.26 dB (measured within 0.11 dB);
+    // ISLR -10.2 dB within the +-24-pixel cuts, as ris/image/impulse_response's
+    // own test of a clean sinc (measured -10.38 and -10.41).
+    EXPECT_NEAR(m.range.pslr_db, -13.26, 0.3);
+    EXPECT_NEAR(m.azimuth.pslr_db, -13.26, 0.3);
+    EXPECT_NEAR(m.islr_db, -10.2, 0.5);
   }
 }
 

@@ -94,7 +94,9 @@ TEST(SarSimulation, FlatPlanePixelHoldsTheMultilookedResolutionCell) {
                             std::sin(theta) / std::pow(R, 4);
     worst = std::max(worst, std::abs(img.mean_power_w[img.index(50, b)] / expected - 1.0));
   }
-  EXPECT_LT(worst, 0.01);
+  RecordProperty("worst_relative_error", std::to_string(worst));
+  // Measured 1.3e-4 (range and angle across a bin against its centre's).
+  EXPECT_LT(worst, 5e-4);
 }
 
 TEST(SarSimulation, AzimuthResolutionIsConstantWhileSlarGrowsWithRange) {

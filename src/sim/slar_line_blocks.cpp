@@ -3,18 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "kernels/sim/line_block_kernels.h"
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_sample.h"
 #include "ris/util/error.h"
 #include "ris/util/thread_ranges.h"
 #include "ris/util/units.h"
-#include "ris/util/vector_clones.h"
-#include "sim/slar_line_kernels.h"
-#include "util/vec8.h"
+#include "sim/slar_line_engine.h"
 
 namespace ris {
 
@@ -41,283 +41,28 @@ std::int64_t count_zero_bytes(const std::uint8_t* v, std::size_t i0, std::size_t
   return total;
 }
 
-// slope_difference (ris/geometry/surface_gradient.h) on eight cells at a
-// time: the same operations in double precision (the division too), so the
-// same floats; lo_ok and hi_ok are lane masks. The neighbours are chosen in
-// single precision (a float select, then the exact widening) and the
-// double-precision selects are bitwise: GCC compiles `?:` on eight doubles
-// into a branch per lane.
-__attribute__((always_inline)) inline vec8::F8 slope_difference8(vec8::I8 lo_ok, vec8::F8 z_lo,
-                                                                 vec8::I8 hi_ok, vec8::F8 z_hi,
-                                                                 vec8::F8 z_c, double step_m) {
-  using vec8::D8;
-  using L8 = std::int64_t __attribute__((vector_size(64)));
-  const auto select = [](L8 m, D8 x, D8 y) { return D8((m & L8(x)) | (~m & L8(y))); };
-  const D8 a = __builtin_convertvector(hi_ok ? z_hi : z_c, D8);
-  const D8 b = __builtin_convertvector(lo_ok ? z_lo : z_c, D8);
-  const D8 num = select(__builtin_convertvector(lo_ok | hi_ok, L8), a - b, D8{});
-  const D8 den =
-      select(__builtin_convertvector(lo_ok & hi_ok, L8), D8{} + 2.0 * step_m, D8{} + step_m);
-  return __builtin_convertvector(num / den, vec8::F8);
-}
-
-// The cells of row r of the window (all columns) into the scratch in sample
-// order (column c is sample c, or cols - 1 - c with `reverse`, where u grows
-// towards the west: written in place, no reversal afterwards): height, slope
-// (slope_difference, as surface_gradient), category and the flags (kNoData,
-// and kUnseen from s.unseen); NaN height and slope where a cell has no data.
-// Rows outside the scene read `none` (no data). The interior columns eight
-// at a time in vector types (util/vec8.h; GCC does not vectorise the scalar
-// loop: its double-precision selects on byte flags), the edges and the
-// remainder by the scalar `one`, the same operations. With an AVX-512
-// clone (this file is compiled with -ffp-contract=off): the eight doubles
-// in one register (~2% of the fused benchmark, as map_row's).
-RIS_WIDE_VECTOR_CLONES void gather_row(const SceneWindow& in, int scene_rows, int r, double dx_m,
-                                       double dy_m, const std::uint8_t* none_valid,
-                                       const float* none_z, bool reverse, detail::LineScratch& s) {
-  const int cols = in.cols;
+// Row r of the window (all its columns) and its neighbour rows, or the
+// scratch's row of no-data cells beyond the scene's edge.
+kernels::CellRow cell_row(const SceneWindow& in, int scene_rows, int r,
+                          const detail::LineScratch& s) {
   const std::size_t base = in.index(r, in.col0);
-  const float* __restrict z = in.elevation_m + base;
-  const std::uint8_t* __restrict v = in.valid + base;
-  const std::uint16_t* __restrict cat = in.category + base;
-  // North (+y) is towards row r - 1: the "hi" neighbour of dz/dy.
-  const bool up_in = r - 1 >= 0, down_in = r + 1 < scene_rows;
-  const float* __restrict zu = up_in ? z - in.cols : none_z;
-  const std::uint8_t* __restrict vu = up_in ? v - in.cols : none_valid;
-  const float* __restrict zd = down_in ? z + in.cols : none_z;
-  const std::uint8_t* __restrict vd = down_in ? v + in.cols : none_valid;
-  float* __restrict h = s.height.data();
-  float* __restrict gx = s.dz_dx.data();
-  float* __restrict gy = s.dz_dy.data();
-  std::uint16_t* __restrict cg = s.category.data();
-  std::uint8_t* __restrict fl = s.flags.data();
-  const std::uint8_t* __restrict unseen = s.unseen.data();
-  const auto one = [&](int c, bool left_ok, bool right_ok, float zl, float zr) {
-    const bool ok = v[c] != 0;
-    const float zc = z[c];
-    const float sx = slope_difference(left_ok, zl, right_ok, zr, zc, dx_m);
-    const float sy = slope_difference(vd[c] != 0, zd[c], vu[c] != 0, zu[c], zc, dy_m);
-    const int j = reverse ? cols - 1 - c : c;
-    h[j] = ok ? zc : kNaN;
-    gx[j] = ok ? sx : kNaN;
-    gy[j] = ok ? sy : kNaN;
-    const std::uint16_t k = cat[c];  // loaded unconditionally: no control flow
-    cg[j] = ok ? k : std::uint16_t{0};
-    fl[j] = static_cast<std::uint8_t>((ok ? 0 : sample_flag::kNoData) | unseen[j]);
-  };
-  if (cols == 1) {
-    one(0, false, false, 0.0f, 0.0f);
-    return;
-  }
-  one(0, false, v[1] != 0, 0.0f, z[1]);
-  using namespace vec8;
-  // Whether eight bytes are all non-zero (the classic zero-byte test).
-  const auto all_nonzero = [](const std::uint8_t* p) {
-    const auto x = load<std::uint64_t>(p);
-    return ((x - 0x0101010101010101u) & ~x & 0x8080808080808080u) == 0;
-  };
-  const auto valid8 = [](const std::uint8_t* p) { return widen_u8(load<U8x8>(p)) != 0; };
-  const I8 reversed = {7, 6, 5, 4, 3, 2, 1, 0};
-  const F8 nan = splat(kNaN);
-  int c = 1;
-  for (; c + kLanes <= cols - 1; c += kLanes) {
-    const auto cc = static_cast<std::size_t>(c);
-    const F8 zc = load<F8>(z + cc);
-    F8 hh, sxx, syy;
-    I8 k, nodata;
-    if (all_nonzero(v + cc - 1) && all_nonzero(v + cc + 1) && all_nonzero(vd + cc) &&
-        all_nonzero(vu + cc)) {
-      // The eight cells and their neighbours all have data (most blocks):
-      // slope_difference's central difference without its selects.
-      const auto central = [](F8 z_lo, F8 z_hi, double step_m) {
-        return __builtin_convertvector(
-            (__builtin_convertvector(z_hi, D8) - __builtin_convertvector(z_lo, D8)) /
-                (D8{} + 2.0 * step_m),
-            F8);
-      };
-      hh = zc;
-      sxx = central(load<F8>(z + cc - 1), load<F8>(z + cc + 1), dx_m);
-      syy = central(load<F8>(zd + cc), load<F8>(zu + cc), dy_m);
-      k = __builtin_convertvector(load<U16x8>(cat + cc), I8);
-      nodata = I8{};
-    } else {
-      const I8 ok = valid8(v + cc);
-      const F8 sx = slope_difference8(valid8(v + cc - 1), load<F8>(z + cc - 1), valid8(v + cc + 1),
-                                      load<F8>(z + cc + 1), zc, dx_m);
-      const F8 sy = slope_difference8(valid8(vd + cc), load<F8>(zd + cc), valid8(vu + cc),
-                                      load<F8>(zu + cc), zc, dy_m);
-      hh = ok ? zc : nan;
-      sxx = ok ? sx : nan;
-      syy = ok ? sy : nan;
-      k = ok ? __builtin_convertvector(load<U16x8>(cat + cc), I8) : I8{};
-      nodata = ~ok & sample_flag::kNoData;
-    }
-    if (reverse) {
-      hh = __builtin_shuffle(hh, reversed);
-      sxx = __builtin_shuffle(sxx, reversed);
-      syy = __builtin_shuffle(syy, reversed);
-      k = __builtin_shuffle(k, reversed);
-      nodata = __builtin_shuffle(nodata, reversed);
-    }
-    const std::size_t j = reverse ? static_cast<std::size_t>(cols - kLanes - c) : cc;
-    store(h + j, hh);
-    store(gx + j, sxx);
-    store(gy + j, syy);
-    store(cg + j, __builtin_convertvector(k, U16x8));
-    store(fl + j, narrow_u8(nodata) | load<U8x8>(unseen + j));
-  }
-  for (; c < cols - 1; ++c) one(c, v[c - 1] != 0, v[c + 1] != 0, z[c - 1], z[c + 1]);
-  one(cols - 1, v[cols - 2] != 0, false, z[cols - 2], 0.0f);
+  const float* z = in.elevation_m + base;
+  const std::uint8_t* v = in.valid + base;
+  const bool north_in = r - 1 >= 0, south_in = r + 1 < scene_rows;
+  return {in.cols,
+          z,
+          v,
+          in.category + base,
+          north_in ? z - in.cols : s.none_z.data(),
+          north_in ? v - in.cols : s.none_valid.data(),
+          south_in ? z + in.cols : s.none_z.data(),
+          south_in ? v + in.cols : s.none_valid.data()};
 }
 
-// The scene-grid maps of a row of cells that is one line: sample j is cell
-// j, or cols - 1 - j (`reverse`) where u grows towards the west. Eight
-// samples at a time in vector types (util/vec8.h), the same operations as
-// scene_map_cell (which takes the remainder), so the same bytes; a scalar
-// loop over cells was a fifth of the fused stage (a double division per
-// cell for the degrees, and branches).
-RIS_WIDE_VECTOR_CLONES void map_row(int n, bool reverse, double near_m, double far_m,
-                                    const std::uint8_t* __restrict flags,
-                                    const float* __restrict range,
-                                    const float* __restrict local_incidence,
-                                    const std::uint8_t* __restrict valid,
-                                    std::uint8_t* __restrict mask, float* __restrict deg) {
-  using namespace vec8;
-  // double(R) >= near_m <=> R >= near_f, the smallest float whose double is
-  // >= near_m (likewise far_m): the comparisons in single precision.
-  const auto float_at_or_above = [](double x) {
-    float f = static_cast<float>(x);
-    if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    return f;
-  };
-  const F8 near_f = splat(float_at_or_above(near_m)), far_f = splat(float_at_or_above(far_m));
-  const F8 nan = splat(kNaN);
-  const I8 reversed = {7, 6, 5, 4, 3, 2, 1, 0};
-  const int full = n / kLanes * kLanes;
-  for (int j = 0; j < full; j += kLanes) {
-    const auto jj = static_cast<std::size_t>(j);
-    const I8 sf = widen_u8(load<U8x8>(flags + jj));
-    const F8 r = load<F8>(range + jj);
-    const I8 has_data = (sf & (sample_flag::kNoData | sample_flag::kUnseen)) == 0;
-    I8 f = ((sf & sample_flag::kNoData) != 0) & scene_flag::kNoData;
-    f |= ((sf & sample_flag::kShadow) != 0) & scene_flag::kShadow;
-    f |= ((sf & sample_flag::kLayover) != 0) & scene_flag::kLayover;
-    f |= ((sf & sample_flag::kBackFacing) != 0) & scene_flag::kBackFacing;
-    const I8 in_swath = (r >= near_f) & (r < far_f);
-    f |= (((sf & sample_flag::kUnseen) != 0) | (has_data & ~in_swath)) & scene_flag::kOutsideSwath;
-    // rad_to_deg in double, as scene_map_sample.
-    const D8 rad = __builtin_convertvector(load<F8>(local_incidence + jj), D8);
-    const F8 d = __builtin_convertvector(rad * 180.0 / kPi, F8);
-    const std::size_t c = reverse ? static_cast<std::size_t>(n - kLanes - j) : jj;
-    I8 ok = widen_u8(load<U8x8>(valid + c)) != 0;
-    if (reverse) ok = __builtin_shuffle(ok, reversed);
-    f |= ~ok & scene_flag::kNoData;
-    F8 out = (has_data & ok) ? d : nan;
-    if (reverse) {
-      f = __builtin_shuffle(f, reversed);
-      out = __builtin_shuffle(out, reversed);
-    }
-    store(mask + c, narrow_u8(f));
-    store(deg + c, out);
-  }
-  for (int j = full; j < n; ++j) {
-    const auto jj = static_cast<std::size_t>(j);
-    const auto c = static_cast<std::size_t>(reverse ? n - 1 - j : j);
-    scene_map_cell(valid[c] != 0, flags[jj], range[jj], local_incidence[jj], near_m, far_m, mask[c],
-                   deg[c]);
-  }
-}
-
-// The 8 x 8 transpose of eight 8-lane rows of 32-bit lanes, in place
-// (three rounds of two-input shuffles, as unpack / shuffle / permute).
-template <class V>
-[[gnu::always_inline]] inline void transpose8(V (&a)[8]) {
-  using vec8::I8;
-  V t[8], u[8];
-  for (int i = 0; i < 8; i += 2) {
-    t[i] = __builtin_shuffle(a[i], a[i + 1], I8{0, 8, 1, 9, 4, 12, 5, 13});
-    t[i + 1] = __builtin_shuffle(a[i], a[i + 1], I8{2, 10, 3, 11, 6, 14, 7, 15});
-  }
-  for (int i = 0; i < 8; i += 4) {
-    u[i] = __builtin_shuffle(t[i], t[i + 2], I8{0, 1, 8, 9, 4, 5, 12, 13});
-    u[i + 1] = __builtin_shuffle(t[i], t[i + 2], I8{2, 3, 10, 11, 6, 7, 14, 15});
-    u[i + 2] = __builtin_shuffle(t[i + 1], t[i + 3], I8{0, 1, 8, 9, 4, 5, 12, 13});
-    u[i + 3] = __builtin_shuffle(t[i + 1], t[i + 3], I8{2, 3, 10, 11, 6, 7, 14, 15});
-  }
-  for (int i = 0; i < 4; ++i) {
-    a[i] = __builtin_shuffle(u[i], u[i + 4], I8{0, 1, 2, 3, 8, 9, 10, 11});
-    a[i + 4] = __builtin_shuffle(u[i], u[i + 4], I8{4, 5, 6, 7, 12, 13, 14, 15});
-  }
-}
-
-// ColumnTile's transposes, eight rows by eight columns at a time through
-// registers (transpose8; rows taken last to first, so that each column
-// comes out in the tile's reversed row order), in functions of their own
-// for the AVX2 / AVX-512 clones (the baseline's 16-byte registers would
-// split every shuffle). Scene cell (r, c) of the block's rows [0, rows8)
-// and columns [0, cols8) is src + r * stride + c; its tile entry is
-// (tile_rows - 1 - c) * len + len - 1 - r.
-RIS_WIDE_VECTOR_CLONES void transpose_into_tile(
-    int rows8, int cols8, int tile_rows, std::size_t len, std::size_t stride,
-    const float* __restrict z, const std::uint16_t* __restrict cat,
-    const std::uint8_t* __restrict v, float* __restrict tz, std::uint16_t* __restrict tcat,
-    std::uint8_t* __restrict tv) {
-  using namespace vec8;
-  for (int r = 0; r < rows8; r += kLanes) {
-    const std::size_t k0 = len - kLanes - static_cast<std::size_t>(r);  // row r + 7's entry
-    for (int c = 0; c < cols8; c += kLanes) {
-      F8 zz[kLanes];
-      I8 kk[kLanes], vv[kLanes];
-      for (int i = 0; i < kLanes; ++i) {
-        const std::size_t from =
-            static_cast<std::size_t>(r + kLanes - 1 - i) * stride + static_cast<std::size_t>(c);
-        zz[i] = load<F8>(z + from);
-        kk[i] = __builtin_convertvector(load<U16x8>(cat + from), I8);
-        vv[i] = widen_u8(load<U8x8>(v + from));
-      }
-      transpose8(zz);
-      transpose8(kk);
-      transpose8(vv);
-      for (int j = 0; j < kLanes; ++j) {
-        const std::size_t to = static_cast<std::size_t>(tile_rows - 1 - c - j) * len + k0;
-        store(tz + to, zz[j]);
-        store(tcat + to, __builtin_convertvector(kk[j], U16x8));
-        store(tv + to, narrow_u8(vv[j]));
-      }
-    }
-  }
-}
-
-// The inverse for the scene maps: tile entry (tile_rows - 1 - c) * len +
-// len - 1 - r into dst + r * stride + c.
-RIS_WIDE_VECTOR_CLONES void transpose_from_tile(int rows8, int cols8, int tile_rows,
-                                                std::size_t len, std::size_t stride,
-                                                const std::uint8_t* __restrict tmask,
-                                                const float* __restrict tdeg,
-                                                std::uint8_t* __restrict mask,
-                                                float* __restrict deg) {
-  using namespace vec8;
-  for (int r = 0; r < rows8; r += kLanes) {
-    const std::size_t k0 = len - kLanes - static_cast<std::size_t>(r);
-    for (int c = 0; c < cols8; c += kLanes) {
-      F8 dd[kLanes];
-      I8 mm[kLanes];
-      for (int i = 0; i < kLanes; ++i) {
-        const std::size_t from = static_cast<std::size_t>(tile_rows - 1 - c - i) * len + k0;
-        dd[i] = load<F8>(tdeg + from);
-        mm[i] = widen_u8(load<U8x8>(tmask + from));
-      }
-      transpose8(dd);
-      transpose8(mm);
-      // Row j: entry k0 + j of the eight columns, scene row r + 7 - j.
-      for (int j = 0; j < kLanes; ++j) {
-        const std::size_t to =
-            static_cast<std::size_t>(r + kLanes - 1 - j) * stride + static_cast<std::size_t>(c);
-        store(deg + to, dd[j]);
-        store(mask + to, narrow_u8(mm[j]));
-      }
-    }
-  }
+// The scratch's terrain arrays, the kernels' output.
+kernels::LineTerrainOut terrain_out(detail::LineScratch& s) {
+  return {s.height.data(),   s.dz_dx.data(), s.dz_dy.data(),
+          s.category.data(), s.flags.data(), s.unseen.data()};
 }
 
 // Lines along columns (a track heading east or west): a block of lines'
@@ -374,12 +119,13 @@ struct ColumnTile {
       valid[to] = in.valid[from];
     };
     const int width = hi - lo + 1;
-    const int c8 = lo + width / vec8::kLanes * vec8::kLanes;
-    const int r8 = len / vec8::kLanes * vec8::kLanes;
+    const int c8 = lo + width / kernels::kTileLanes * kernels::kTileLanes;
+    const int r8 = len / kernels::kTileLanes * kernels::kTileLanes;
     const std::size_t from = in.index(in.row0, lo);
-    transpose_into_tile(r8, c8 - lo, width, static_cast<std::size_t>(len),
-                        static_cast<std::size_t>(in.cols), in.elevation_m + from,
-                        in.category + from, in.valid + from, z.data(), cat.data(), valid.data());
+    kernels::transpose_into_tile(r8, c8 - lo, width, static_cast<std::size_t>(len),
+                                 static_cast<std::size_t>(in.cols), in.elevation_m + from,
+                                 in.category + from, in.valid + from, z.data(), cat.data(),
+                                 valid.data());
     for (int r = 0; r < r8; ++r)
       for (int c = c8; c <= hi; ++c) one(r, c);
     for (int r = r8; r < len; ++r)
@@ -396,15 +142,15 @@ struct ColumnTile {
       maps.local_incidence_deg[to] = deg[from];
     };
     const int end = first + n;
-    const int c8 = first + n / vec8::kLanes * vec8::kLanes;
-    const int r8 = len / vec8::kLanes * vec8::kLanes;
+    const int c8 = first + n / kernels::kTileLanes * kernels::kTileLanes;
+    const int r8 = len / kernels::kTileLanes * kernels::kTileLanes;
     // The tile's column `first` is tile row offset(first) / len; the
     // columns after it are the rows before.
     const int tile_rows = static_cast<int>(offset(first) / static_cast<std::size_t>(len)) + 1;
     const std::size_t to = maps.index(maps.row0, first);
-    transpose_from_tile(r8, c8 - first, tile_rows, static_cast<std::size_t>(len),
-                        static_cast<std::size_t>(maps.cols), mask.data(), deg.data(),
-                        maps.mask + to, maps.local_incidence_deg + to);
+    kernels::transpose_from_tile(r8, c8 - first, tile_rows, static_cast<std::size_t>(len),
+                                 static_cast<std::size_t>(maps.cols), mask.data(), deg.data(),
+                                 maps.mask + to, maps.local_incidence_deg + to);
     for (int r = 0; r < r8; ++r)
       for (int c = c8; c < end; ++c) one(r, c);
     for (int r = r8; r < len; ++r)
@@ -517,140 +263,224 @@ void SlarLineEngine::window_for_lines(int line0, int line1, int& row0, int& rows
   }
 }
 
+namespace {
+
+using detail::LineSpan;
+
+// ---- The direct line sources: one line per cell row or column ----------
+// (as slar_geometry.cpp fill_line with its DirectSampler, the slope computed
+// in place as surface_gradient). Chosen per block by DirectThreadSource.
+
+// What every direct source of a run reads.
+struct DirectRun {
+  const Scene& scene;
+  const SlarGeometry& g;
+  const SceneWindow& in;
+  const SceneMapsWindow& maps;
+  bool cross_is_x;
+  bool u_grows_with_index;
+  double near_m, far_m;
+
+  int cell(int line) const { return line_cell(scene, g, cross_is_x, line); }
+  LineSpan whole() const { return {0, g.samples, &g}; }
+  // Sample j of the line over row or column lc: its cell.
+  void cell_of(int lc, int j, int& r, int& c) const {
+    if (cross_is_x) {
+      r = lc;
+      c = u_grows_with_index ? j : scene.cols - 1 - j;
+    } else {
+      c = lc;
+      r = u_grows_with_index ? j : scene.rows - 1 - j;
+    }
+  }
+  // A line beyond the scene: every sample unseen, no terrain.
+  void load_outside(detail::LineScratch& s) const {
+    for (int j = 0; j < g.samples; ++j) {
+      const std::size_t jj = static_cast<std::size_t>(j);
+      s.flags[jj] = sample_flag::kUnseen;
+      s.height[jj] = s.dz_dx[jj] = s.dz_dy[jj] = kNaN;
+      s.category[jj] = 0;
+    }
+  }
+};
+
+// Any window, cell by cell (the reference rule).
+struct CellSource {
+  const DirectRun& run;
+  int lc = -1;
+
+  LineSpan load(int line, detail::LineScratch& s) {
+    lc = run.cell(line);
+    if (lc < 0) {
+      run.load_outside(s);
+      return run.whole();
+    }
+    const Scene& scene = run.scene;
+    const SceneWindow& in = run.in;
+    const auto ok = [&](int r, int c) {
+      return scene.contains(r, c) && in.valid[in.index(r, c)] != 0;
+    };
+    const auto z = [&](int r, int c) {
+      return scene.contains(r, c) ? in.elevation_m[in.index(r, c)] : 0.0f;
+    };
+    for (int j = 0; j < run.g.samples; ++j) {
+      const std::size_t jj = static_cast<std::size_t>(j);
+      int r = 0, c = 0;
+      run.cell_of(lc, j, r, c);
+      const bool valid = in.valid[in.index(r, c)] != 0;
+      std::uint8_t f = valid ? 0 : sample_flag::kNoData;
+      if (!(run.g.sample_u_m(j) > 0.0)) f |= sample_flag::kUnseen;
+      s.flags[jj] = f;
+      if (!valid) {
+        s.height[jj] = s.dz_dx[jj] = s.dz_dy[jj] = kNaN;
+        s.category[jj] = 0;
+        continue;
+      }
+      const std::size_t i = in.index(r, c);
+      const float zc = in.elevation_m[i];
+      s.height[jj] = zc;
+      s.dz_dx[jj] =
+          slope_difference(ok(r, c - 1), z(r, c - 1), ok(r, c + 1), z(r, c + 1), zc, scene.dx_m);
+      // North (+y) is towards row r - 1.
+      s.dz_dy[jj] =
+          slope_difference(ok(r + 1, c), z(r + 1, c), ok(r - 1, c), z(r - 1, c), zc, scene.dy_m);
+      s.category[jj] = in.category[i];
+    }
+    return run.whole();
+  }
+  // The scene-grid maps (scene_geometry_maps: each cell is its own sample).
+  void store_maps(int, const LineSpan&, const detail::LineScratch& s) const {
+    if (lc < 0) return;
+    for (int j = 0; j < run.g.samples; ++j) {
+      const std::size_t jj = static_cast<std::size_t>(j);
+      int r = 0, c = 0;
+      run.cell_of(lc, j, r, c);
+      const std::size_t cell = run.maps.index(r, c);
+      scene_map_cell(run.in.valid[run.in.index(r, c)] != 0, s.flags[jj], s.range[jj],
+                     s.local_incidence[jj], run.near_m, run.far_m, run.maps.mask[cell],
+                     run.maps.local_incidence_deg[cell]);
+    }
+  }
+  void finish_block() const {}
+};
+
+// Lines along rows whose window and maps hold whole rows: a row of cells,
+// contiguous in memory, by the row kernels.
+struct RowSource {
+  const DirectRun& run;
+  int lc = -1;
+
+  LineSpan load(int line, detail::LineScratch& s) {
+    lc = run.cell(line);
+    if (lc < 0) {
+      run.load_outside(s);
+    } else {
+      kernels::gather_row(cell_row(run.in, run.scene.rows, lc, s), run.scene.dx_m, run.scene.dy_m,
+                          !run.u_grows_with_index, terrain_out(s));
+    }
+    return run.whole();
+  }
+  void store_maps(int, const LineSpan&, const detail::LineScratch& s) const {
+    if (lc < 0) return;
+    kernels::map_row(run.g.samples, !run.u_grows_with_index, run.near_m, run.far_m, s.flags.data(),
+                     s.range.data(), s.local_incidence.data(), run.in.valid + run.in.index(lc, 0),
+                     run.maps.mask + run.maps.index(lc, 0),
+                     run.maps.local_incidence_deg + run.maps.index(lc, 0));
+  }
+  void finish_block() const {}
+};
+
+// A block of lines along columns, each column a row of the transposed tile
+// (ColumnTile): the row kernels with the steps exchanged and the slopes
+// swapped back; the tile's maps written back at the block's end.
+struct TileSource {
+  const DirectRun& run;
+  ColumnTile& tile;
+  int lo = 0, hi = -1;  // the block's columns
+  int lc = -1;
+
+  LineSpan load(int line, detail::LineScratch& s) {
+    lc = run.cell(line);
+    kernels::gather_row(cell_row(tile.window(), run.scene.cols, tile.row_of_column(lc), s),
+                        run.scene.dy_m, run.scene.dx_m, run.u_grows_with_index, terrain_out(s));
+    std::swap(s.dz_dx, s.dz_dy);
+    return run.whole();
+  }
+  void store_maps(int, const LineSpan&, const detail::LineScratch& s) const {
+    const std::size_t at = tile.offset(lc);
+    kernels::map_row(run.g.samples, run.u_grows_with_index, run.near_m, run.far_m, s.flags.data(),
+                     s.range.data(), s.local_incidence.data(), tile.valid.data() + at,
+                     tile.mask.data() + at, tile.deg.data() + at);
+  }
+  void finish_block() const { tile.store_maps(lo, hi - lo + 1, run.maps); }
+};
+
+using DirectSource = std::variant<RowSource, TileSource, CellSource>;
+
+// One thread's direct sources: the row path when the window and the maps
+// hold whole rows; along columns, the tile when the block's lines take one
+// run of distinct columns and the window holds every scene row; else cell
+// by cell.
+struct DirectThreadSource {
+  const DirectRun& run;
+  bool rows;
+  bool column_tiles;
+  ColumnTile tile;
+  std::vector<int> columns;
+
+  DirectSource block(int b0, int b1) {
+    if (rows) return RowSource{run};
+    int lo = 0, hi = -1;
+    if (column_tiles && column_run(run.scene, run.g, b0, b1, columns, lo, hi)) {
+      // The tile adds one column of margin each side.
+      tile.load_columns(run.in, run.scene.cols, std::max(0, lo - 1),
+                        std::min(run.scene.cols - 1, hi + 1));
+      return TileSource{run, tile, lo, hi};
+    }
+    return CellSource{run};
+  }
+};
+
+}  // namespace
+
 void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLineProfiles& prof,
                          const SceneMapsWindow& maps, SlarLineCounts& counts) const {
   const SlarGeometry& g = g_;
-  const Scene& scene = scene_;
   const Track& t = g.track;
-  const double H = g.altitude_m;
   const int samples = g.samples;
-  const int bins = prof.bins;
-  const LineLookFrame frame{H, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
-  const bool need_incidence = !gain2_.uniform();
-  const double near_m = params_.range.near_m, far_m = params_.range.far_m();
-
-  const detail::SlarElementContext ctx = detail::element_context(params_, gain2_, lut_, bins);
-
-  const auto ok = [&](int r, int c) {
-    return scene.contains(r, c) && in.valid[in.index(r, c)] != 0;
-  };
-  const auto z = [&](int r, int c) {
-    return scene.contains(r, c) ? in.elevation_m[in.index(r, c)] : 0.0f;
-  };
-
+  const detail::SlarElementContext ctx = detail::element_context(params_, gain2_, lut_, prof.bins);
+  const detail::LineStages stages{
+      ctx, LineLookFrame{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m},
+      !gain2_.uniform(), params_.range_window_bins};
+  const DirectRun run{scene_,
+                      g,
+                      in,
+                      maps,
+                      cross_is_x_,
+                      u_grows_with_index_,
+                      params_.range.near_m,
+                      params_.range.far_m()};
+  const bool rows =
+      cross_is_x_ && in.col0 == 0 && in.cols == samples && maps.col0 == 0 && maps.cols == samples;
   // Lines along columns whose window holds every scene row go by blocks
-  // through a transposed tile (ColumnTile); rows and the rest line by line.
+  // through a transposed tile.
   const bool column_tiles =
       !cross_is_x_ && in.row0 == 0 && in.rows == samples && maps.row0 == 0 && maps.rows == samples;
   const int block_lines = column_tiles ? kColumnBlockLines : 16;
-  const int blocks = (line1 - line0 + block_lines - 1) / block_lines;
+  detail::run_line_blocks(g, stages, line0, line1, block_lines, prof, counts,
+                          [&](detail::LineScratch&) {
+                            return DirectThreadSource{run, rows, column_tiles, {}, {}};
+                          });
+}
 
-  std::int64_t in_swath = 0;
-#pragma omp parallel reduction(+ : in_swath)
-  {
-    detail::LineScratch s(g, bins);
-    SlarLineCounts local;
-    ColumnTile tile;
-    std::vector<int> columns;
-#pragma omp for schedule(dynamic, 1)
-    for (int block = 0; block < blocks; ++block) {
-      const int b0 = line0 + block * block_lines, b1 = std::min(line1, b0 + block_lines);
-      // Tiled when the block's lines take one run of distinct columns [lo,
-      // hi] (one line per column, as fused_slar_applies makes them); the
-      // tile adds one column of margin each side.
-      int lo = 0, hi = -1;
-      const bool tiled = column_tiles && column_run(scene, g, b0, b1, columns, lo, hi);
-      if (tiled)
-        tile.load_columns(in, scene.cols, std::max(0, lo - 1), std::min(scene.cols - 1, hi + 1));
-      for (int line = b0; line < b1; ++line) {
-        const int lc = line_cell(scene, g, cross_is_x_, line);
-        const auto cell_of = [&](int j, int& r, int& c) {
-          if (cross_is_x_) {
-            r = lc;
-            c = u_grows_with_index_ ? j : scene.cols - 1 - j;
-          } else {
-            c = lc;
-            r = u_grows_with_index_ ? j : scene.rows - 1 - j;
-          }
-        };
-
-        // The terrain under each sample (as slar_geometry.cpp fill_line with
-        // its DirectSampler, the slope computed in place as surface_gradient).
-        if (cross_is_x_ && lc >= 0 && in.col0 == 0 && in.cols == samples) {
-          // A row of cells, contiguous in memory.
-          gather_row(in, scene.rows, lc, scene.dx_m, scene.dy_m, s.none_valid.data(),
-                     s.none_z.data(), !u_grows_with_index_, s);
-        } else if (tiled && lc >= 0) {
-          // A column, as a row of the transposed tile: the steps exchanged,
-          // the slopes swapped back (ColumnTile).
-          gather_row(tile.window(), scene.cols, tile.row_of_column(lc), scene.dy_m, scene.dx_m,
-                     s.none_valid.data(), s.none_z.data(), u_grows_with_index_, s);
-          std::swap(s.dz_dx, s.dz_dy);
-        } else
-          for (int j = 0; j < samples; ++j) {
-            const std::size_t jj = static_cast<std::size_t>(j);
-            std::uint8_t f = 0;
-            int r = 0, c = 0;
-            bool valid = false;
-            if (lc < 0) {
-              f |= sample_flag::kUnseen;
-            } else {
-              cell_of(j, r, c);
-              valid = in.valid[in.index(r, c)] != 0;
-              if (!valid) f |= sample_flag::kNoData;
-            }
-            if (!(g.sample_u_m(j) > 0.0)) f |= sample_flag::kUnseen;
-            s.flags[jj] = f;
-            if (lc < 0 || !valid) {
-              s.height[jj] = s.dz_dx[jj] = s.dz_dy[jj] = kNaN;
-              s.category[jj] = 0;
-              continue;
-            }
-            const std::size_t i = in.index(r, c);
-            const float zc = in.elevation_m[i];
-            s.height[jj] = zc;
-            s.dz_dx[jj] = slope_difference(ok(r, c - 1), z(r, c - 1), ok(r, c + 1), z(r, c + 1), zc,
-                                           scene.dx_m);
-            // North (+y) is towards row r - 1.
-            s.dz_dy[jj] = slope_difference(ok(r + 1, c), z(r + 1, c), ok(r - 1, c), z(r - 1, c), zc,
-                                           scene.dy_m);
-            s.category[jj] = in.category[i];
-          }
-
-        detail::line_geometry(g, frame, need_incidence, s);
-        in_swath +=
-            detail::accumulate_line(ctx, samples, s, prof, line, local, params_.range_window_bins);
-
-        // The scene-grid maps (scene_geometry_maps: each cell is its own
-        // sample here).
-        if (cross_is_x_ && lc >= 0 && in.col0 == 0 && in.cols == samples && maps.col0 == 0 &&
-            maps.cols == samples) {
-          map_row(samples, !u_grows_with_index_, near_m, far_m, s.flags.data(), s.range.data(),
-                  s.local_incidence.data(), in.valid + in.index(lc, 0),
-                  maps.mask + maps.index(lc, 0), maps.local_incidence_deg + maps.index(lc, 0));
-        } else if (tiled && lc >= 0) {
-          const std::size_t at = tile.offset(lc);
-          map_row(samples, u_grows_with_index_, near_m, far_m, s.flags.data(), s.range.data(),
-                  s.local_incidence.data(), tile.valid.data() + at, tile.mask.data() + at,
-                  tile.deg.data() + at);
-        } else if (lc >= 0) {
-          for (int j = 0; j < samples; ++j) {
-            const std::size_t jj = static_cast<std::size_t>(j);
-            int r = 0, c = 0;
-            cell_of(j, r, c);
-            const std::size_t cell = maps.index(r, c);
-            scene_map_cell(in.valid[in.index(r, c)] != 0, s.flags[jj], s.range[jj],
-                           s.local_incidence[jj], near_m, far_m, maps.mask[cell],
-                           maps.local_incidence_deg[cell]);
-          }
-        }
-      }
-      if (tiled) tile.store_maps(lo, hi - lo + 1, maps);
-    }
-#pragma omp critical(ris_slar_line_counts)
-    counts.add(local);
-  }
-  prof.samples_in_swath += in_swath;
+void check_swath_hits_scene(std::int64_t samples_in_swath, const SlantRangeBins& range,
+                            const SlarLineCounts& counts, const std::string& radar_file) {
+  if (samples_in_swath > 0) return;
+  throw InputError(radar_file, "sweep_delay",
+                   fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the scene, "
+                               "which spans slant range {:.1f} to {:.1f} m; expected a sweep "
+                               "delay and length (or near range and range bins) that overlap it",
+                               range.near_m, range.far_m(), counts.r_min_m, counts.r_max_m));
 }
 
 bool fused_slar_image_applies(const Scene& scene, const SlarGeometry& layout) {
@@ -701,13 +531,7 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
     nodata_cells += part;
   });
   g.nodata_cells = nodata_cells;
-  if (prof.samples_in_swath == 0) {
-    throw InputError(radar_file, "sweep_delay",
-                     fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the scene, "
-                                 "which spans slant range {:.1f} to {:.1f} m; expected a sweep "
-                                 "delay and length (or near range and range bins) that overlap it",
-                                 p.range.near_m, p.range.far_m(), counts.r_min_m, counts.r_max_m));
-  }
+  check_swath_hits_scene(prof.samples_in_swath, p.range, counts, radar_file);
   SlarImage img;
   img.lines = g.lines;
   img.bins = p.range.count;

@@ -1,15 +1,16 @@
 // The fused SLAR / incoherent SAR run for a track off the grid axes (declared
-// in sim/slar_line_kernels.h): terrain sampled bilinearly along each line
+// in sim/slar_line_stages.h): terrain sampled bilinearly along each line
 // within the scene, the shared line geometry and image formation, and the
 // scene maps scattered per block of lines.
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
 #include <vector>
 
+#include "kernels/gather/oblique_scatter_kernels.h"
 #include "ris/geometry/terrain_line.h"
-#include "ris/util/vector_clones.h"
-#include "sim/slar_line_kernels.h"
+#include "sim/slar_line_engine.h"
 
 namespace ris::detail {
 
@@ -144,58 +145,6 @@ struct BlockMapValues {
   }
 };
 
-// round_half_away for the in-range indices of the scatter's inner loop
-// (|f| < 2^31): the same integer, through a 32-bit truncation, which GCC
-// vectorises (a 64-bit one it does not without AVX-512).
-inline int round_half_away_int(double f) {
-  const int t = static_cast<int>(f);
-  const double d = f - static_cast<double>(t);
-  return t + (d >= 0.5 ? 1 : 0) - (d <= -0.5 ? 1 : 0);
-}
-
-// The cells [c_begin, c_end) of one scene row, every one of them taking a
-// line of the block and a sample in [0, samples) (scatter_block has checked
-// the run's ends exactly): the inner loop has no test, so it runs without
-// branches.
-RIS_VECTOR_CLONES void scatter_run(double lbase, double line_dc, double sbase, double sample_dc,
-                                   int c_begin, int c_end, const BlockMapValues& b,
-                                   const std::uint8_t* __restrict valid,
-                                   std::uint8_t* __restrict mask, float* __restrict incidence) {
-  const std::int32_t* __restrict vm = b.mask.data();
-  const float* __restrict vi = b.incidence_deg.data();
-  const int lo = b.j_lo - 1, hi = b.j_hi, line0 = b.line0, width = b.width;
-  for (int c = c_begin; c < c_end; ++c) {
-    // The expressions of CellSampleFrame::line_f / sample_f, rounded as
-    // nearest_index rounds.
-    const int line = round_half_away_int(lbase + c * line_dc);
-    const int j0 = round_half_away_int(sbase + c * sample_dc);
-    const int j = j0 < lo ? lo : (j0 > hi ? hi : j0);
-    const int k = (line - line0) * width + (j - lo);
-    // Unconditional loads, so that GCC vectorises with gathers: a cell
-    // without data reads entry 0 (a guard column: unseen, NaN incidence)
-    // instead of selecting NaN, which GCC would turn into a masked load.
-    const int ok = valid[c] != 0 ? 1 : 0;
-    mask[c] = static_cast<std::uint8_t>(vm[k] | (ok ? 0 : scene_flag::kNoData));
-    incidence[c] = vi[k * ok];
-  }
-}
-
-// The scene-map values (scene_map_sample) of a line's n span samples, in
-// the block's dense layout; GCC vectorises the loop (AVX2 clone: twice the
-// lanes of the SSE2 default).
-RIS_VECTOR_CLONES void map_values(int n, const std::uint8_t* __restrict flags,
-                                  const float* __restrict range,
-                                  const float* __restrict local_incidence, double near_m,
-                                  double far_m, std::int32_t* __restrict mask,
-                                  float* __restrict incidence_deg) {
-  for (int k = 0; k < n; ++k) {
-    const SampleMapValue v =
-        scene_map_sample(flags[k], range[k], local_incidence[k], near_m, far_m);
-    mask[k] = v.mask;
-    incidence_deg[k] = v.local_incidence_deg;
-  }
-}
-
 // Writes the scene maps of the cells whose line (cell_sample) is in the
 // block: along each scene row the block's cells are one run of columns (the
 // line and sample indices are affine and monotone in the column), found
@@ -224,86 +173,113 @@ void scatter_block(const Scene& scene, const CellSampleFrame& f, const BlockMapV
     });
     if (c_begin == c_end) continue;
     const std::size_t row = scene.index(r, 0);
-    scatter_run(lbase, f.line_dc, sbase, f.sample_dc, c_begin, c_end, b, scene.valid.data() + row,
-                maps.mask.data() + row, maps.local_incidence_deg.data() + row);
+    const kernels::BlockMapView view{
+        b.mask.data(), b.incidence_deg.data(), b.line0, b.j_lo - 1, b.j_hi, b.width};
+    kernels::scatter_run(lbase, f.line_dc, sbase, f.sample_dc, c_begin, c_end, view,
+                         scene.valid.data() + row, maps.mask.data() + row,
+                         maps.local_incidence_deg.data() + row);
   }
 }
 
+// ---- The oblique line source ---------------------------------------------
+// Per line, the samples within the scene (slar_line_span) from the line
+// sampler (ris/geometry/terrain_line.h), each span as a line of its own
+// (the stages run over samples 0..n of the scratch); per block of lines, the
+// scene maps scattered into the grid.
+
+// What every oblique source of a run reads.
+struct ObliqueRun {
+  const Scene& scene;
+  const SlarGeometry& g;
+  const TerrainTexels& tex;
+  const CellSampleFrame& frame;
+  SceneGeometryMaps& maps;
+  double near_m, far_m;
+};
+
+// One thread's buffers: the block's spans and map values, the span's layout.
+struct ObliqueThreadState {
+  const ObliqueRun& run;
+  SlarGeometry span_layout;
+  std::vector<float> u_all;  // every sample's u (the scratch's u is per span)
+  BlockMapValues b;
+  std::vector<SlarLineSpan> spans;
+};
+
+struct ObliqueSource {
+  ObliqueThreadState& t;
+
+  LineSpan load(int line, LineScratch& s) {
+    const SlarGeometry& g = t.run.g;
+    const SlarLineSpan& span = t.spans[static_cast<std::size_t>(line - t.b.line0)];
+    const int n = span.end - span.begin;
+    const auto first = static_cast<std::ptrdiff_t>(span.begin);
+    sample_terrain_line(
+        t.run.tex, span.grid, span.begin, span.end,
+        {s.height.data(), s.dz_dx.data(), s.dz_dy.data(), s.category.data(), s.flags.data()});
+    std::copy(t.u_all.begin() + first, t.u_all.begin() + first + n, s.u.begin());
+    t.span_layout.samples = n;
+    t.span_layout.first_sample_u_m = g.sample_u_m(span.begin);
+    return {span.begin, n, &t.span_layout};
+  }
+  void store_maps(int line, const LineSpan& span, const LineScratch& s) {
+    t.b.set_span(line, span.first, span.first + span.n);
+    if (span.n <= 0) return;
+    const std::size_t k0 = t.b.index(line, span.first);
+    kernels::map_values(span.n, s.flags.data(), s.range.data(), s.local_incidence.data(),
+                        t.run.near_m, t.run.far_m, t.b.mask.data() + k0,
+                        t.b.incidence_deg.data() + k0);
+  }
+  void finish_block() const { scatter_block(t.run.scene, t.run.frame, t.b, t.run.maps); }
+};
+
+struct ObliqueThreadSource {
+  ObliqueThreadState t;
+
+  // The block's spans, and its map values sized to cover them.
+  std::variant<ObliqueSource> block(int b0, int b1) {
+    const SlarGeometry& g = t.run.g;
+    int j_lo = g.samples, j_hi = 0;
+    for (int line = b0; line < b1; ++line) {
+      const SlarLineSpan& span = t.spans[static_cast<std::size_t>(line - b0)] =
+          slar_line_span(t.run.scene, g, line);
+      if (span.begin < span.end) {
+        j_lo = std::min(j_lo, span.begin);
+        j_hi = std::max(j_hi, span.end);
+      }
+    }
+    t.b.reset(b0, b1 - b0, j_lo, j_hi);
+    return ObliqueSource{t};
+  }
+};
+
 }  // namespace
 
-// The fused run for any other heading: per line, the samples within the
-// scene (slar_line_span) from the line sampler (ris/geometry/terrain_line.h),
-// the shared line geometry and image formation over those samples only, then
-// per block of lines the scene maps. The stage path samples and scans the
-// same spans (slar_geometry.cpp fill_oblique_line) and assigns cells by the
-// same rule (cell_sample), so the bytes agree. Only the texels (16 bytes per
-// cell) are whole-scene.
+// The fused run for any other heading, through the line engine with the
+// oblique source. The stage path samples and scans the same spans
+// (slar_geometry.cpp fill_oblique_line) and assigns cells by the same rule
+// (cell_sample), so the bytes agree. Only the texels (16 bytes per cell)
+// are whole-scene.
 void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
                        const SlarImagingParams& p, const std::string& radar_file,
                        SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts) {
   const TerrainTexels tex = terrain_texels(scene);
   const CellSampleFrame frame = cell_sample_frame(scene, g);
   const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, radar_file);
-  const detail::SlarElementContext ctx = element_context(p, gain2, lut, prof.bins);
+  const SlarElementContext ctx = element_context(p, gain2, lut, prof.bins);
   const Track& t = g.track;
-  const LineLookFrame look{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m};
-  const bool need_incidence = !gain2.uniform();
-  const double near_m = p.range.near_m, far_m = p.range.far_m();
+  const LineStages stages{
+      ctx, LineLookFrame{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m},
+      !gain2.uniform(), p.range_window_bins};
+  const ObliqueRun run{scene, g, tex, frame, maps, p.range.near_m, p.range.far_m()};
   // Each row's cells outside the swath here, the others by the blocks
   // (each cell by one: not written twice).
   fill_outside_swath(scene, frame, maps);
-  const int blocks = (g.lines + kBlockLines - 1) / kBlockLines;
-  std::int64_t in_swath = 0;
-#pragma omp parallel reduction(+ : in_swath)
-  {
-    LineScratch s(g, prof.bins);
-    SlarLineCounts local;
-    // Each line's span as a line of its own (line_geometry and
-    // accumulate_line run over samples 0..n of the scratch): its first
-    // sample's u and count.
-    SlarGeometry span_layout = g;
-    const std::vector<float> u_all = s.u;
-    BlockMapValues b;
-    b.unseen = scene_map_sample(sample_flag::kUnseen, kNaN, kNaN, near_m, far_m);
-    std::vector<SlarLineSpan> spans(static_cast<std::size_t>(kBlockLines));
-#pragma omp for schedule(dynamic, 1)
-    for (int block = 0; block < blocks; ++block) {
-      const int line0 = block * kBlockLines;
-      const int lines = std::min(kBlockLines, g.lines - line0);
-      int j_lo = g.samples, j_hi = 0;
-      for (int k = 0; k < lines; ++k) {
-        const SlarLineSpan& span = spans[static_cast<std::size_t>(k)] =
-            slar_line_span(scene, g, line0 + k);
-        if (span.begin < span.end) {
-          j_lo = std::min(j_lo, span.begin);
-          j_hi = std::max(j_hi, span.end);
-        }
-      }
-      b.reset(line0, lines, j_lo, j_hi);
-      for (int line = line0; line < line0 + lines; ++line) {
-        const SlarLineSpan& span = spans[static_cast<std::size_t>(line - line0)];
-        const int n = span.end - span.begin;
-        const auto first = static_cast<std::ptrdiff_t>(span.begin);
-        sample_terrain_line(
-            tex, span.grid, span.begin, span.end,
-            {s.height.data(), s.dz_dx.data(), s.dz_dy.data(), s.category.data(), s.flags.data()});
-        std::copy(u_all.begin() + first, u_all.begin() + first + n, s.u.begin());
-        span_layout.samples = n;
-        span_layout.first_sample_u_m = g.sample_u_m(span.begin);
-        line_geometry(span_layout, look, need_incidence, s);
-        in_swath += accumulate_line(ctx, n, s, prof, line, local, p.range_window_bins, span.begin);
-        b.set_span(line, span.begin, span.end);
-        if (n <= 0) continue;
-        const std::size_t k0 = b.index(line, span.begin);
-        map_values(n, s.flags.data(), s.range.data(), s.local_incidence.data(), near_m, far_m,
-                   b.mask.data() + k0, b.incidence_deg.data() + k0);
-      }
-      scatter_block(scene, frame, b, maps);
-    }
-#pragma omp critical(ris_slar_line_counts)
-    counts.add(local);
-  }
-  prof.samples_in_swath += in_swath;
+  run_line_blocks(g, stages, 0, g.lines, kBlockLines, prof, counts, [&](LineScratch& s) {
+    ObliqueThreadSource ts{{run, g, s.u, {}, std::vector<SlarLineSpan>(kBlockLines)}};
+    ts.t.b.unseen = scene_map_sample(sample_flag::kUnseen, kNaN, kNaN, run.near_m, run.far_m);
+    return ts;
+  });
 }
 
 }  // namespace ris::detail

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -28,6 +30,7 @@
 #include "ris/sensor/radar_derived.h"
 #include "ris/sim/radiometry_setup.h"
 #include "ris/sim/slar_line_blocks.h"
+#include "ris/sim/slar_run_setup.h"
 #include "ris/util/error.h"
 #include "ris/util/progress.h"
 #include "ris/util/rank_select.h"
@@ -148,422 +151,517 @@ bool scene_needs_streaming(std::int64_t rows, std::int64_t cols) {
   return double(rows) * double(cols) * kInMemoryBytesPerCell > physical / 2.0;
 }
 
-SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path,
-                                         const RadarParams& radar_in, const Sigma0Source& sigma0,
-                                         const SlarRunInfo& info,
-                                         const std::filesystem::path& out_dir,
-                                         const SlarStreamOptions& options) {
-  bound_gdal_cache(kGdalCacheBytes);
-  const SceneStreamReader in(scene_path);
-  SlarStreamSummary summary;
-  summary.grid = in.grid();
-  const Scene& grid = summary.grid;
-  SlarSimulation& sim = summary.sim;
-  sim.radar = radar_in;
-  RadarParams& radar = sim.radar;
-  sim.derived = derive(radar);
-  const std::string backscatter_file =
-      info.backscatter_path.empty() ? sigma0.description() : info.backscatter_path;
+namespace {
 
-  // What the stream runs: SLAR along a grid axis (the fused engine).
-  if (!(radar.mode == RadarMode::slar || (radar.mode == RadarMode::sar && !radar.sar.coherent))) {
-    throw InputError(radar.source_file, "mode",
-                     "a streamed run simulates SLAR and the incoherent SAR; the coherent SAR and "
-                     "PPI need the scene in memory (run without --stream on a scene that fits)");
-  }
-  sim.track = resolve_track(radar.track, grid, radar.source_file);
-  const SlarGeometry layout = slar_geometry_layout(grid, sim.track, radar.azimuth_line_spacing_m);
-  if (!fused_slar_applies(grid, layout)) {
-    throw InputError(radar.source_file, "track",
-                     "a streamed run needs a track along a grid axis (heading 0, 90, 180 or "
-                     "270 deg) with one azimuth line per cell row or column (azimuth line "
-                     "spacing = the cell size); oblique tracks need the scene in memory");
+// A streamed run's state and its passes, in the order run() calls them.
+class StreamRun {
+ public:
+  StreamRun(const std::filesystem::path& scene_path, const RadarParams& radar,
+            const Sigma0Source& sigma0, const SlarRunInfo& info,
+            const std::filesystem::path& out_dir, const SlarStreamOptions& options)
+      : in_(scene_path), options_(options), info_(info), out_dir_(out_dir) {
+    summary_.grid = in_.grid();
+    summary_.sim.radar = radar;
+    summary_.sim.derived = derive(summary_.sim.radar);
+    backscatter_file_ =
+        info.backscatter_path.empty() ? sigma0.description() : info.backscatter_path;
+    georef_ = Georef{grid().geotransform(), grid().crs_wkt};
   }
 
-  const std::int64_t cells = std::int64_t(grid.rows) * grid.cols;
-  std::chrono::steady_clock::time_point mark;
-  ProgressBar bar("simulate (streamed)", 3 * cells, "cells", options.quiet);
+  SlarStreamSummary run(const Sigma0Source& sigma0) {
+    plan();
+    bar_.emplace("simulate (streamed)", 3 * std::int64_t(grid().rows) * grid().cols, "cells",
+                 options_.quiet);
+    stage("scene statistics");
+    ss_ = summarise_scene(in_, scene_block_rows_, *bar_);
+    stage_done();
+    set_up_stages(sigma0);
+    dir_.emplace(out_dir_);
+    lines_pass();
+    const GreytoneMap map = make_greytone_map_for_median(radar(), median_mean_power());
+    set_ground_grid();
+    stage("greytones, ground range, PNGs (pass 2)");
+    pictures_pass(map);
+    stage_done();
+    stage("geocoded products (pass 2b)");
+    geocoded_pass(map);
+    stage_done();
+    write_metadata(map);
+    bar_->finish();
+    dir_->commit();
+    return std::move(summary_);
+  }
 
-  // Pass 0: scene statistics.
-  const int cross_cells = along_y_axis(sim.track) ? grid.cols : grid.rows;
-  const int lines = layout.lines;
-  const int bins = sim.derived.range_bins;
-  const std::int64_t per_line =
-      std::int64_t(cross_cells) * 18 + std::int64_t(std::max(bins, 1)) * 72;
-  const int block_lines =
-      options.block_lines > 0
-          ? std::min(options.block_lines, lines)
-          : static_cast<int>(std::clamp<std::int64_t>(options.memory_budget_bytes / per_line, 16,
-                                                      std::max(lines, 16)));
-  summary.block_lines = std::min(block_lines, lines);
-  // Scene rows read at a time by the passes over whole rows.
-  const int scene_block_rows = std::min(grid.rows, std::max(in.block_rows(), 256));
-  const auto stage = [&](const std::string& name) {
-    summary.stage_seconds.emplace_back(name, 0.0);
-    bar.set_stage(name);
-    mark = std::chrono::steady_clock::now();
-  };
-  const auto stage_done = [&] {
-    summary.stage_seconds.back().second =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - mark).count();
-  };
-  stage("scene statistics");
-  SceneSummary ss = summarise_scene(in, scene_block_rows, bar);
-  stage_done();
-  if (ss.valid_cells == 0) throw InputError("scene", "", "the scene has no cell with data");
-  check_terrain_below_sensor(ss.h_max, ss.max_row, ss.max_col, sim.track.altitude_m,
-                             radar.source_file);
-  sim.geometry = layout;
-  SlarGeometry& g = sim.geometry;
+ private:
+  using ByteWriter = std::unique_ptr<GeoTiffBlockWriter<std::uint8_t>>;
+  using FloatWriter = std::unique_ptr<GeoTiffBlockWriter<float>>;
 
-  // sigma0 for every category the scene uses, as simulate_slar.
-  RadiometrySetup rs =
-      prepare_radiometry(ss.categories, radar, sim.derived, sigma0, backscatter_file);
-  sim.categories = rs.categories;
-  sim.category_names = rs.category_names;
-  sim.backscatter_description = rs.backscatter_description;
-  SlarImagingParams& imaging = rs.imaging;
-  // SAR: its windows, warnings and thermal noise, as simulate_slar.
-  set_sar_windows(radar, layout.line_spacing_m, imaging);
-  sim.warnings = sar_resolution_warnings(grid, layout, radar);
-  sim.noise_power_w = sar_noise_power_w(radar, imaging, layout.altitude_m);
-  RIS_CHECK(imaging.range.count == bins && bins > 0);
-  const std::uint64_t n_elev = ss.elevation.total();
-  ss.elevation.select(median_ranks(n_elev, false));
+  const Scene& grid() const { return summary_.grid; }
+  SlarSimulation& sim() { return summary_.sim; }
+  RadarParams& radar() { return summary_.sim.radar; }
+  int lines() const { return summary_.sim.geometry.lines; }
+  int bins() const { return summary_.sim.derived.range_bins; }
+  int block_lines() const { return summary_.block_lines; }
 
-  // The image's layout (for the products' metadata and geocoding).
-  SlarImage& img = sim.image;
-  img.lines = lines;
-  img.bins = bins;
-  img.range = imaging.range;
-  img.line_spacing_m = g.line_spacing_m;
+  void stage(const std::string& name) {
+    summary_.stage_seconds.emplace_back(name, 0.0);
+    bar_->set_stage(name);
+    mark_ = std::chrono::steady_clock::now();
+  }
+  void stage_done() {
+    summary_.stage_seconds.back().second =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - mark_).count();
+  }
 
-  StagedDirectory dir(out_dir);
-  const Georef georef{grid.geotransform(), grid.crs_wkt};
-  const auto open_writer = [&](const std::string& file, int cols, int rows, auto sample,
-                               BlockOrder order = BlockOrder::top_down) {
-    using T = decltype(sample);
-    const SlarRasterSpec spec = slar_raster_spec(file, img);
+  // What the stream runs (SLAR and the incoherent SAR along a grid axis: the
+  // direct line engine) and the block sizes.
+  void plan() {
+    const RadarParams& r = radar();
+    if (!(r.mode == RadarMode::slar || (r.mode == RadarMode::sar && !r.sar.coherent))) {
+      throw InputError(r.source_file, "mode",
+                       "a streamed run simulates SLAR and the incoherent SAR; the coherent SAR "
+                       "and PPI need the scene in memory (run without --stream on a scene that "
+                       "fits)");
+    }
+    sim().track = resolve_track(r.track, grid(), r.source_file);
+    sim().geometry = slar_geometry_layout(grid(), sim().track, r.azimuth_line_spacing_m);
+    if (!fused_slar_applies(grid(), sim().geometry)) {
+      throw InputError(r.source_file, "track",
+                       "a streamed run needs a track along a grid axis (heading 0, 90, 180 or "
+                       "270 deg) with one azimuth line per cell row or column (azimuth line "
+                       "spacing = the cell size); oblique tracks need the scene in memory");
+    }
+    cross_cells_ = along_y_axis(sim().track) ? grid().cols : grid().rows;
+    const std::int64_t per_line =
+        std::int64_t(cross_cells_) * 18 + std::int64_t(std::max(bins(), 1)) * 72;
+    const int n = lines();
+    const int block_lines =
+        options_.block_lines > 0
+            ? std::min(options_.block_lines, n)
+            : static_cast<int>(std::clamp<std::int64_t>(options_.memory_budget_bytes / per_line, 16,
+                                                        std::max(n, 16)));
+    summary_.block_lines = std::min(block_lines, n);
+    // Scene rows read at a time by the passes over whole rows.
+    scene_block_rows_ = std::min(grid().rows, std::max(in_.block_rows(), 256));
+  }
+
+  // After pass 0: the checks simulate_slar makes on the whole scene, and the
+  // stages' radiometric set-up (as simulate_slar: slar_run_setup.h).
+  void set_up_stages(const Sigma0Source& sigma0) {
+    if (ss_.valid_cells == 0) throw InputError("scene", "", "the scene has no cell with data");
+    check_terrain_below_sensor(ss_.h_max, ss_.max_row, ss_.max_col, sim().track.altitude_m,
+                               radar().source_file);
+    rs_ = prepare_radiometry(ss_.categories, radar(), sim().derived, sigma0, backscatter_file_);
+    complete_slar_setup(sim(), rs_, grid());
+    RIS_CHECK(rs_.imaging.range.count == bins() && bins() > 0);
+    n_elev_ = ss_.elevation.total();
+    ss_.elevation.select(median_ranks(n_elev_, false));
+    // The image's layout (for the products' metadata and geocoding).
+    SlarImage& img = sim().image;
+    img.lines = lines();
+    img.bins = bins();
+    img.range = rs_.imaging.range;
+    img.line_spacing_m = sim().geometry.line_spacing_m;
+  }
+
+  template <typename T>
+  std::unique_ptr<GeoTiffBlockWriter<T>> open_writer(const std::string& file, int cols, int rows,
+                                                     BlockOrder order = BlockOrder::top_down) {
+    const SlarRasterSpec spec = slar_raster_spec(file, sim().image);
     return std::make_unique<GeoTiffBlockWriter<T>>(
-        dir.path(file), cols, rows, std::vector<std::string>{spec.band},
-        spec.georeferenced ? &georef : nullptr, spec.nodata, spec.metadata, GeoTiffCompression{},
+        dir_->path(file), cols, rows, std::vector<std::string>{spec.band},
+        spec.georeferenced ? &georef_ : nullptr, spec.nodata, spec.metadata, GeoTiffCompression{},
         order);
+  }
+
+  // ---- Pass 1: lines in blocks through the line engine ------------------
+  // The sinks of pass 1: the slant-range products, the scene-grid maps and
+  // the shadow map, written block by block.
+  struct LineSinks {
+    FloatWriter mean, speckled;
+    ByteWriter mask;
+    ByteWriter scene_mask;
+    FloatWriter incidence;
+    std::ofstream shadow_text;
   };
 
-  // ---- Pass 1: lines in blocks ------------------------------------------
-  {
-    const SlarLineEngine engine(grid, layout, rs.lut, imaging, radar.source_file);
-    SlarAzimuthIntegrator az(imaging, g.line_spacing_m, lines, bins);
-    const bool cross_is_x = along_y_axis(sim.track);
-    const BlockOrder line_order = scene_line_order(sim.track);
-    auto mean_out = open_writer("mean_power_slant.tif", bins, lines, float{});
-    auto speckled_out = open_writer("speckled_power_slant.tif", bins, lines, float{});
-    auto mask_out = open_writer("mask_slant.tif", bins, lines, std::uint8_t{});
-    auto scene_mask_out =
-        open_writer("scene_mask.tif", grid.cols, grid.rows, std::uint8_t{}, line_order);
-    auto incidence_out =
-        open_writer("local_incidence_deg.tif", grid.cols, grid.rows, float{}, line_order);
-    std::ofstream shadow_text(dir.path("shadowmap.txt"), std::ios::binary);
-    if (!shadow_text) throw InputError(dir.path("shadowmap.txt").string(), "", "cannot write");
+  LineSinks open_line_sinks() {
+    const BlockOrder line_order = scene_line_order(sim().track);
+    LineSinks k;
+    k.mean = open_writer<float>("mean_power_slant.tif", bins(), lines());
+    k.speckled = open_writer<float>("speckled_power_slant.tif", bins(), lines());
+    k.mask = open_writer<std::uint8_t>("mask_slant.tif", bins(), lines());
+    k.scene_mask =
+        open_writer<std::uint8_t>("scene_mask.tif", grid().cols, grid().rows, line_order);
+    k.incidence =
+        open_writer<float>("local_incidence_deg.tif", grid().cols, grid().rows, line_order);
+    k.shadow_text.open(dir_->path("shadowmap.txt"), std::ios::binary);
+    if (!k.shadow_text) throw InputError(dir_->path("shadowmap.txt").string(), "", "cannot write");
+    return k;
+  }
 
+  void lines_pass() {
+    const SlarGeometry& g = sim().geometry;
+    const SlarLineEngine engine(grid(), g, rs_.lut, rs_.imaging, radar().source_file);
+    SlarAzimuthIntegrator az(rs_.imaging, g.line_spacing_m, lines(), bins());
+    LineSinks sinks = open_line_sinks();
     // N per range bin, as make_greytone_image.
-    std::vector<double> looks(sz(bins));
-    for (int k = 0; k < bins; ++k)
-      looks[sz(k)] = independent_samples(radar, imaging.range.centre_m(k));
-
-    const std::size_t win_cap = sz(summary.block_lines + 2) * sz(cross_cells);
-    std::vector<float> z(win_cap), incidence(win_cap);
-    std::vector<std::uint16_t> cat(win_cap);
-    std::vector<std::uint8_t> ok(win_cap), scene_mask(win_cap);
+    looks_.resize(sz(bins()));
+    for (int k = 0; k < bins(); ++k)
+      looks_[sz(k)] = independent_samples(radar(), rs_.imaging.range.centre_m(k));
+    const std::size_t win_cap = sz(block_lines() + 2) * sz(cross_cells_);
+    z_.resize(win_cap);
+    cat_.resize(win_cap);
+    ok_.resize(win_cap);
+    std::vector<float> incidence(win_cap);
+    std::vector<std::uint8_t> scene_mask(win_cap);
     SlarLineProfiles prof;
     SlarLineCounts counts;
     std::int64_t samples_in_swath = 0;
-    FloatRankSelect power;  // pass 1 of the median mean power
-    std::vector<float> mean, area, speckled;
-    std::vector<std::uint8_t> mask;
-    std::string text;
-
-    // The image lines the integrator has ready: switch corrections, NaN for
-    // no data, fading, written out (render_slar + write_slar_products).
-    const auto emit_ready = [&] {
-      const int n = az.lines_ready();
-      if (n == 0) return;
-      const int k0 = az.lines_emitted();
-      const std::size_t np = sz(n) * sz(bins);
-      SlarImage block;
-      block.lines = n;
-      block.bins = bins;
-      block.range = imaging.range;
-      block.mean_power_w.resize(np);
-      block.area_m2.resize(np);
-      mask.resize(np);
-      az.emit(n, block.mean_power_w.data(), block.area_m2.data(), mask.data());
-      std::tie(sim.range_corrected, sim.area_corrected) = apply_switch_corrections(block, rs.terms);
-      if (!sim.noise_power_w.empty()) add_noise_power(block, sim.noise_power_w);
-      mean.assign(block.mean_power_w.begin(), block.mean_power_w.end());
-      for (std::size_t i = 0; i < np; ++i) {
-        if (valid_power(mean[i], mask[i])) power.count(mean[i]);
-        if (mask[i] & pixel_flag::kNoData) mean[i] = kNaNf;
-      }
-      speckled = mean;
-      if (radar.switches.fading)
-        apply_fading(speckled, n, bins, looks, radar.fading, info.seed, k0);
-      mean_out->write(mean.data(), n);
-      speckled_out->write(speckled.data(), n);
-      mask_out->write(mask.data(), n);
-    };
 
     stage("geometry, image formation, scene maps, fading (pass 1)");
-    for (int l0 = 0; l0 < lines; l0 += summary.block_lines) {
-      const int l1 = std::min(lines, l0 + summary.block_lines);
+    for (int l0 = 0; l0 < lines(); l0 += block_lines()) {
+      const int l1 = std::min(lines(), l0 + block_lines());
       int row0 = 0, rows = 0, col0 = 0, cols = 0;
       engine.window_for_lines(l0, l1, row0, rows, col0, cols);
-      in.read(row0, rows, col0, cols, z.data(), cat.data(), ok.data());
-      const SceneWindow win{row0, col0, rows, cols, z.data(), cat.data(), ok.data()};
+      in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
+      const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
       const SceneMapsWindow maps{row0, col0, rows, cols, scene_mask.data(), incidence.data()};
-      prof.allocate(l1 - l0, bins, l0);
+      prof.allocate(l1 - l0, bins(), l0);
       engine.run(l0, l1, win, prof, maps, counts);
       samples_in_swath += prof.samples_in_swath;
-
-      // The block's own cells (its lines' rows or columns, without the halo):
-      // scene-grid maps out, the median elevation's second pass.
-      const int c_a = engine.cell_of_line(l0), c_b = engine.cell_of_line(l1 - 1);
-      RIS_CHECK(c_a >= 0 && c_b >= 0 && std::abs(c_b - c_a) == l1 - l0 - 1);
-      const int lo = std::min(c_a, c_b), count = l1 - l0;
-      if (cross_is_x) {
-        const std::size_t at = sz(lo - row0) * sz(cols);
-        scene_mask_out->write(scene_mask.data() + at, count);
-        incidence_out->write(incidence.data() + at, count);
-        for (std::size_t i = at; i < at + sz(count) * sz(cols); ++i)
-          if (ok[i] && std::isfinite(z[i])) ss.elevation.refine(z[i]);
-      } else {
-        const std::size_t at = sz(lo - col0);
-        scene_mask_out->write(scene_mask.data() + at, count, sz(cols));
-        incidence_out->write(incidence.data() + at, count, sz(cols));
-        for (int r = 0; r < rows; ++r) {
-          for (int c = lo; c < lo + count; ++c) {
-            const std::size_t i = sz(r) * sz(cols) + sz(c - col0);
-            if (ok[i] && std::isfinite(z[i])) ss.elevation.refine(z[i]);
-          }
-        }
-      }
-
-      // The seed's shadow map, line by line (ris/image/shadow_map.h).
-      text.clear();
-      for (int line = l0; line < l1; ++line) {
-        for (int b = 0; b < bins; ++b) {
-          const std::size_t i = prof.index(line, b);
-          text.push_back(shadow_map_char(prof.mapped_count[i], prof.visible_count[i]));
-        }
-        text.push_back('\n');
-      }
-      shadow_text.write(text.data(), static_cast<std::streamsize>(text.size()));
-
+      write_block_maps(engine, l0, l1, win, maps, sinks);
+      write_shadow_text(prof, l0, l1, sinks.shadow_text);
       az.push(prof, l1 - l0);
-      emit_ready();
-      bar.advance(std::int64_t(l1 - l0) * cross_cells);
-      ++summary.blocks;
+      emit_ready(az, sinks);
+      bar_->advance(std::int64_t(l1 - l0) * cross_cells_);
+      ++summary_.blocks;
     }
-    RIS_CHECK(az.lines_emitted() == lines);
+    RIS_CHECK(az.lines_emitted() == lines());
+    finish_counts(counts, samples_in_swath);
+    sinks.mean->close();
+    sinks.speckled->close();
+    sinks.mask->close();
+    sinks.scene_mask->close();
+    sinks.incidence->close();
+    sinks.shadow_text.close();
+    if (!sinks.shadow_text)
+      throw InputError(dir_->path("shadowmap.txt").string(), "", "write failed");
+    stage_done();
+  }
 
+  // The block's own cells (its lines' rows or columns, without the halo):
+  // scene-grid maps out, the median elevation's second pass.
+  void write_block_maps(const SlarLineEngine& engine, int l0, int l1, const SceneWindow& win,
+                        const SceneMapsWindow& maps, LineSinks& sinks) {
+    const int c_a = engine.cell_of_line(l0), c_b = engine.cell_of_line(l1 - 1);
+    RIS_CHECK(c_a >= 0 && c_b >= 0 && std::abs(c_b - c_a) == l1 - l0 - 1);
+    const int lo = std::min(c_a, c_b), count = l1 - l0;
+    const int cols = win.cols;
+    if (along_y_axis(sim().track)) {
+      const std::size_t at = sz(lo - win.row0) * sz(cols);
+      sinks.scene_mask->write(maps.mask + at, count);
+      sinks.incidence->write(maps.local_incidence_deg + at, count);
+      for (std::size_t i = at; i < at + sz(count) * sz(cols); ++i)
+        if (ok_[i] && std::isfinite(z_[i])) ss_.elevation.refine(z_[i]);
+    } else {
+      const std::size_t at = sz(lo - win.col0);
+      sinks.scene_mask->write(maps.mask + at, count, sz(cols));
+      sinks.incidence->write(maps.local_incidence_deg + at, count, sz(cols));
+      for (int r = 0; r < win.rows; ++r) {
+        for (int c = lo; c < lo + count; ++c) {
+          const std::size_t i = sz(r) * sz(cols) + sz(c - win.col0);
+          if (ok_[i] && std::isfinite(z_[i])) ss_.elevation.refine(z_[i]);
+        }
+      }
+    }
+  }
+
+  // The seed's shadow map, line by line (ris/image/shadow_map.h).
+  void write_shadow_text(const SlarLineProfiles& prof, int l0, int l1, std::ofstream& out) {
+    text_.clear();
+    for (int line = l0; line < l1; ++line) {
+      for (int b = 0; b < bins(); ++b) {
+        const std::size_t i = prof.index(line, b);
+        text_.push_back(shadow_map_char(prof.mapped_count[i], prof.visible_count[i]));
+      }
+      text_.push_back('\n');
+    }
+    out.write(text_.data(), static_cast<std::streamsize>(text_.size()));
+  }
+
+  // The image lines the integrator has ready: switch corrections and noise
+  // (finish_slar_image), NaN for no data, fading, written out (render_slar
+  // + write_slar_products).
+  void emit_ready(SlarAzimuthIntegrator& az, LineSinks& sinks) {
+    const int n = az.lines_ready();
+    if (n == 0) return;
+    const int k0 = az.lines_emitted();
+    const std::size_t np = sz(n) * sz(bins());
+    SlarImage block;
+    block.lines = n;
+    block.bins = bins();
+    block.range = rs_.imaging.range;
+    block.mean_power_w.resize(np);
+    block.area_m2.resize(np);
+    mask_.resize(np);
+    az.emit(n, block.mean_power_w.data(), block.area_m2.data(), mask_.data());
+    finish_slar_image(sim(), block, rs_.terms);
+    mean_.assign(block.mean_power_w.begin(), block.mean_power_w.end());
+    for (std::size_t i = 0; i < np; ++i) {
+      if (valid_power(mean_[i], mask_[i])) power_.count(mean_[i]);
+      if (mask_[i] & pixel_flag::kNoData) mean_[i] = kNaNf;
+    }
+    speckled_ = mean_;
+    if (radar().switches.fading)
+      apply_fading(speckled_, n, bins(), looks_, radar().fading, info_.seed, k0);
+    sinks.mean->write(mean_.data(), n);
+    sinks.speckled->write(speckled_.data(), n);
+    sinks.mask->write(mask_.data(), n);
+  }
+
+  void finish_counts(const SlarLineCounts& counts, std::int64_t samples_in_swath) {
+    SlarGeometry& g = sim().geometry;
     g.nodata_samples = counts.nodata;
     g.shadow_samples = counts.shadow;
     g.back_facing_samples = counts.back_facing;
     g.layover_samples = counts.layover;
-    g.nodata_cells = ss.nodata_cells;
-    img.samples_in_swath = samples_in_swath;
-    if (img.samples_in_swath == 0) {
-      // As form_slar_image_fused.
-      throw InputError(
-          radar.source_file, "sweep_delay",
-          fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the "
-                      "scene, which spans slant range {:.1f} to {:.1f} m; expected "
-                      "a sweep delay and length (or near range and range bins) "
-                      "that overlap it",
-                      imaging.range.near_m, imaging.range.far_m(), counts.r_min_m, counts.r_max_m));
-    }
-    mean_out->close();
-    speckled_out->close();
-    mask_out->close();
-    scene_mask_out->close();
-    incidence_out->close();
-    shadow_text.close();
-    if (!shadow_text) throw InputError(dir.path("shadowmap.txt").string(), "", "write failed");
-    stage_done();
+    g.nodata_cells = ss_.nodata_cells;
+    sim().image.samples_in_swath = samples_in_swath;
+    check_swath_hits_scene(samples_in_swath, rs_.imaging.range, counts, radar().source_file);
+  }
 
-    // ---- Pass 1b: the median mean power (auto greytone reference) -------
-    double median_power = std::numeric_limits<double>::quiet_NaN();
-    const std::uint64_t n_power = power.total();
-    if (radar.reference.automatic && n_power > 0) {
-      stage("median mean power (pass 1b)");
-      power.select(median_ranks(n_power, true));
-      GdalDataset mean_ds = open_raster(dir.path("mean_power_slant.tif").string());
-      GdalDataset mask_ds = open_raster(dir.path("mask_slant.tif").string());
-      for (int k0 = 0; k0 < lines; k0 += summary.block_lines) {
-        const int n = std::min(summary.block_lines, lines - k0);
-        const std::size_t np = sz(n) * sz(bins);
-        mean.resize(np);
-        mask.resize(np);
-        read_rows(handle(mean_ds), k0, n, mean.data(), GDT_Float32, "mean_power_slant.tif");
-        read_rows(handle(mask_ds), k0, n, mask.data(), GDT_Byte, "mask_slant.tif");
-        for (std::size_t i = 0; i < np; ++i)
-          if (valid_power(mean[i], mask[i])) power.refine(mean[i]);
-      }
-      median_power = median_value(power, n_power, true);
-      stage_done();
+  // ---- Pass 1b: the median mean power (auto greytone reference) ---------
+  double median_mean_power() {
+    const std::uint64_t n_power = power_.total();
+    if (!(radar().reference.automatic && n_power > 0))
+      return std::numeric_limits<double>::quiet_NaN();
+    stage("median mean power (pass 1b)");
+    power_.select(median_ranks(n_power, true));
+    GdalDataset mean_ds = open_raster(dir_->path("mean_power_slant.tif").string());
+    GdalDataset mask_ds = open_raster(dir_->path("mask_slant.tif").string());
+    for (int k0 = 0; k0 < lines(); k0 += block_lines()) {
+      const int n = std::min(block_lines(), lines() - k0);
+      const std::size_t np = sz(n) * sz(bins());
+      mean_.resize(np);
+      mask_.resize(np);
+      read_rows(handle(mean_ds), k0, n, mean_.data(), GDT_Float32, "mean_power_slant.tif");
+      read_rows(handle(mask_ds), k0, n, mask_.data(), GDT_Byte, "mask_slant.tif");
+      for (std::size_t i = 0; i < np; ++i)
+        if (valid_power(mean_[i], mask_[i])) power_.refine(mean_[i]);
     }
-    // (make_greytone_image's map and N per bin, for the metadata.)
-    const GreytoneMap map = make_greytone_map_for_median(radar, median_power);
+    const double median = median_value(power_, n_power, true);
+    stage_done();
+    return median;
+  }
+
+  // The ground-range grid over the median elevation (simulate_slar).
+  void set_ground_grid() {
+    const double h_ref = options_.reference_height_m
+                             ? *options_.reference_height_m
+                             : (n_elev_ > 0 ? double(ss_.elevation.value(0)) : 0.0);
+    const SlarImage& img = sim().image;
+    sim().ground_grid =
+        ground_range_grid(img.range, sim().geometry.altitude_m, h_ref, img.line_spacing_m);
+  }
+
+  // ---- Pass 2: greytones, ground range, PNGs ----------------------------
+  // The pictures: a tiled GeoTIFF when too large for a PNG (picture_file),
+  // else through a tiled temporary in the staging folder (removed before it
+  // is committed), then to PNG row by row.
+  void pictures_pass(const GreytoneMap& map) {
+    const GroundRangeGrid& gg = sim().ground_grid;
+    const std::string slant_file =
+        picture_file("slant_range", bins(), lines(), info_.max_png_pixels);
+    const std::string ground_file =
+        picture_file("ground_range", gg.count, lines(), info_.max_png_pixels);
+    const auto picture_path = [&](const std::string& file) {
+      return file.ends_with(".png") ? dir_->path("." + file + ".tmp.tif") : dir_->path(file);
+    };
+    const auto open_picture = [&](const std::string& file, int cols) {
+      const SlarRasterSpec spec =
+          file.ends_with(".png") ? SlarRasterSpec{} : slar_raster_spec(file, sim().image);
+      return std::make_unique<GeoTiffBlockWriter<std::uint8_t>>(
+          picture_path(file), cols, lines(), std::vector<std::string>{spec.band}, nullptr,
+          spec.nodata, spec.metadata);
+    };
+    {
+      ByteWriter slant_grey_out = open_picture(slant_file, bins());
+      ByteWriter ground_grey_out = open_picture(ground_file, gg.count);
+      picture_blocks(map, *slant_grey_out, *ground_grey_out);
+      slant_grey_out->close();
+      ground_grey_out->close();
+    }
+    for (const std::string& file : {slant_file, ground_file}) {
+      if (!file.ends_with(".png")) continue;
+      write_png_gray_from_raster(dir_->path(file), picture_path(file));
+      std::filesystem::remove(picture_path(file));
+    }
+  }
+
+  // The speckled power read back block by block: its greytones in slant and
+  // ground range (render_slar).
+  void picture_blocks(const GreytoneMap& map, GeoTiffBlockWriter<std::uint8_t>& slant_out,
+                      GeoTiffBlockWriter<std::uint8_t>& ground_out) {
+    const SlarImage& img = sim().image;
+    const GroundRangeGrid& gg = sim().ground_grid;
+    GdalDataset sp_ds = open_raster(dir_->path("speckled_power_slant.tif").string());
+    GdalDataset mask_ds = open_raster(dir_->path("mask_slant.tif").string());
+    std::vector<std::uint8_t> no_data, grey, ground_no_data, ground_grey;
+    for (int k0 = 0; k0 < lines(); k0 += block_lines()) {
+      const int n = std::min(block_lines(), lines() - k0);
+      const std::size_t np = sz(n) * sz(bins());
+      speckled_.resize(np);
+      mask_.resize(np);
+      read_rows(handle(sp_ds), k0, n, speckled_.data(), GDT_Float32, "speckled_power_slant.tif");
+      read_rows(handle(mask_ds), k0, n, mask_.data(), GDT_Byte, "mask_slant.tif");
+      no_data.resize(np);
+      for (std::size_t i = 0; i < np; ++i) no_data[i] = (mask_[i] & pixel_flag::kNoData) ? 1 : 0;
+      grey.resize(np);
+      greytones(speckled_, grey, map, no_data);
+      slant_out.write(grey.data(), n);
+      const std::vector<float> ground_power = to_ground_range(speckled_, n, img.range, gg);
+      const std::vector<std::uint8_t> ground_mask =
+          to_ground_range_nearest(mask_, n, img.range, gg, pixel_flag::kNoData);
+      ground_no_data.resize(ground_mask.size());
+      for (std::size_t i = 0; i < ground_mask.size(); ++i)
+        ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
+      ground_grey.resize(ground_power.size());
+      greytones(ground_power, ground_grey, map, ground_no_data);
+      ground_out.write(ground_grey.data(), n);
+      bar_->advance(0);
+    }
+  }
+
+  // ---- Pass 2b: geocoded products, scene rows top down ------------------
+  void geocoded_pass(const GreytoneMap& map) {
+    GdalDataset sp_ds = open_raster(dir_->path("speckled_power_slant.tif").string());
+    GdalDataset mask_ds = open_raster(dir_->path("mask_slant.tif").string());
+    FloatWriter power_out = open_writer<float>("geocoded_power.tif", grid().cols, grid().rows);
+    ByteWriter grey_out = open_writer<std::uint8_t>("geocoded_grey.tif", grid().cols, grid().rows);
+    // Scene rows a tile row at a time (pass 1's window is freed).
+    const int block_rows = scene_block_rows_;
+    const std::size_t cap = sz(block_rows) * sz(grid().cols);
+    z_.resize(std::max(z_.size(), cap));
+    cat_.resize(z_.size());
+    ok_.resize(z_.size());
+    pix_line_.resize(cap);
+    pix_bin_.resize(cap);
+    std::vector<float> out_power(cap);
+    std::vector<std::uint8_t> out_grey(cap);
+    for (int r0 = 0; r0 < grid().rows; r0 += block_rows) {
+      const int n = std::min(block_rows, grid().rows - r0);
+      const std::size_t nc = sz(n) * sz(grid().cols);
+      in_.read(r0, n, 0, grid().cols, z_.data(), cat_.data(), ok_.data());
+      std::fill(out_power.begin(), out_power.begin() + static_cast<std::ptrdiff_t>(nc), kNaNf);
+      std::fill(out_grey.begin(), out_grey.begin() + static_cast<std::ptrdiff_t>(nc),
+                std::uint8_t{0});
+      geocode_rows(map, r0, n, sp_ds, mask_ds, out_power.data(), out_grey.data());
+      power_out->write(out_power.data(), n);
+      grey_out->write(out_grey.data(), n);
+      bar_->advance(static_cast<std::int64_t>(nc));
+    }
+    power_out->close();
+    grey_out->close();
+  }
+
+  // Scene rows [r0, r0 + n) (read into z_, ok_): each cell's pixel, then the
+  // window of the image they need read back, its greytones, and each cell's
+  // power and greytone.
+  void geocode_rows(const GreytoneMap& map, int r0, int n, GdalDataset& sp_ds, GdalDataset& mask_ds,
+                    float* out_power, std::uint8_t* out_grey) {
+    const SlarImage& img = sim().image;
+    const int cols = grid().cols;
+    const std::size_t nc = sz(n) * sz(cols);
+    int l_lo = lines(), l_hi = -1, b_lo = bins(), b_hi = -1;
+    for (int r = r0; r < r0 + n; ++r) {
+      for (int c = 0; c < cols; ++c) {
+        const std::size_t i = sz(r - r0) * sz(cols) + sz(c);
+        int line = -1, bin = -1;
+        if (!(ok_[i] && geocode_pixel(grid(), sim().track, img, r, c, z_[i], line, bin))) {
+          line = -1;
+        } else {
+          l_lo = std::min(l_lo, line);
+          l_hi = std::max(l_hi, line);
+          b_lo = std::min(b_lo, bin);
+          b_hi = std::max(b_hi, bin);
+        }
+        pix_line_[i] = line;
+        pix_bin_[i] = bin;
+      }
+    }
+    if (l_hi < 0) return;
+    const int wl = l_hi - l_lo + 1, wb = b_hi - b_lo + 1;
+    const std::size_t np = sz(wl) * sz(wb);
+    speckled_.resize(np);
+    mask_.resize(np);
+    read_window(handle(sp_ds), l_lo, wl, b_lo, wb, speckled_.data(), GDT_Float32,
+                "speckled_power_slant.tif");
+    read_window(handle(mask_ds), l_lo, wl, b_lo, wb, mask_.data(), GDT_Byte, "mask_slant.tif");
+    std::vector<std::uint8_t> no_data(np), grey(np);
+    for (std::size_t i = 0; i < np; ++i) no_data[i] = (mask_[i] & pixel_flag::kNoData) ? 1 : 0;
+    greytones(speckled_, grey, map, no_data);
+    for (std::size_t i = 0; i < nc; ++i) {
+      if (pix_line_[i] < 0) continue;
+      const std::size_t p = sz(pix_line_[i] - l_lo) * sz(wb) + sz(pix_bin_[i] - b_lo);
+      out_power[i] = speckled_[p];
+      out_grey[i] = grey[p];
+    }
+  }
+
+  // metadata.json, with make_greytone_image's map and N per bin.
+  void write_metadata(const GreytoneMap& map) {
     SlarPictures pic_meta;
-    pic_meta.seed = info.seed;
-    pic_meta.looks = looks;
+    pic_meta.seed = info_.seed;
+    pic_meta.looks = looks_;
     pic_meta.reference_power_w = map.reference_power_w();
     pic_meta.reference_greytone = map.reference_greytone();
     pic_meta.greytones_per_decade = map.greytones_per_decade();
     pic_meta.film_offset = map.film_offset();
-
-    // The ground-range grid over the median elevation (simulate_slar).
-    const double h_ref = options.reference_height_m
-                             ? *options.reference_height_m
-                             : (n_elev > 0 ? double(ss.elevation.value(0)) : 0.0);
-    sim.ground_grid = ground_range_grid(img.range, g.altitude_m, h_ref, img.line_spacing_m);
-    const GroundRangeGrid& gg = sim.ground_grid;
-
-    // ---- Pass 2: greytones, ground range, PNGs ----------------------------
-    stage("greytones, ground range, PNGs (pass 2)");
-    {
-      GdalDataset sp_ds = open_raster(dir.path("speckled_power_slant.tif").string());
-      GdalDataset mask_ds = open_raster(dir.path("mask_slant.tif").string());
-      // The pictures: a tiled GeoTIFF when too large for a PNG
-      // (picture_file), else through a tiled temporary in the staging folder
-      // (removed before it is committed), then to PNG row by row.
-      const std::string slant_file = picture_file("slant_range", bins, lines, info.max_png_pixels);
-      const std::string ground_file =
-          picture_file("ground_range", gg.count, lines, info.max_png_pixels);
-      const auto picture_path = [&](const std::string& file) {
-        return file.ends_with(".png") ? dir.path("." + file + ".tmp.tif") : dir.path(file);
-      };
-      {
-        const auto open_picture = [&](const std::string& file, int cols) {
-          const SlarRasterSpec spec =
-              file.ends_with(".png") ? SlarRasterSpec{} : slar_raster_spec(file, img);
-          return std::make_unique<GeoTiffBlockWriter<std::uint8_t>>(
-              picture_path(file), cols, lines, std::vector<std::string>{spec.band}, nullptr,
-              spec.nodata, spec.metadata);
-        };
-        auto slant_grey_out = open_picture(slant_file, bins);
-        auto ground_grey_out = open_picture(ground_file, gg.count);
-        std::vector<std::uint8_t> no_data, grey, ground_no_data, ground_grey;
-        for (int k0 = 0; k0 < lines; k0 += summary.block_lines) {
-          const int n = std::min(summary.block_lines, lines - k0);
-          const std::size_t np = sz(n) * sz(bins);
-          speckled.resize(np);
-          mask.resize(np);
-          read_rows(handle(sp_ds), k0, n, speckled.data(), GDT_Float32, "speckled_power_slant.tif");
-          read_rows(handle(mask_ds), k0, n, mask.data(), GDT_Byte, "mask_slant.tif");
-          no_data.resize(np);
-          for (std::size_t i = 0; i < np; ++i) no_data[i] = (mask[i] & pixel_flag::kNoData) ? 1 : 0;
-          grey.resize(np);
-          greytones(speckled, grey, map, no_data);
-          slant_grey_out->write(grey.data(), n);
-          // Ground range (render_slar).
-          const std::vector<float> ground_power = to_ground_range(speckled, n, img.range, gg);
-          const std::vector<std::uint8_t> ground_mask =
-              to_ground_range_nearest(mask, n, img.range, gg, pixel_flag::kNoData);
-          ground_no_data.resize(ground_mask.size());
-          for (std::size_t i = 0; i < ground_mask.size(); ++i)
-            ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
-          ground_grey.resize(ground_power.size());
-          greytones(ground_power, ground_grey, map, ground_no_data);
-          ground_grey_out->write(ground_grey.data(), n);
-          bar.advance(0);
-        }
-        slant_grey_out->close();
-        ground_grey_out->close();
-      }
-      for (const std::string& file : {slant_file, ground_file}) {
-        if (!file.ends_with(".png")) continue;
-        write_png_gray_from_raster(dir.path(file), picture_path(file));
-        std::filesystem::remove(picture_path(file));
-      }
-      stage_done();
-
-      // ---- Pass 2b: geocoded products, scene rows top down ---------------
-      stage("geocoded products (pass 2b)");
-      auto power_out = open_writer("geocoded_power.tif", grid.cols, grid.rows, float{});
-      auto grey_out = open_writer("geocoded_grey.tif", grid.cols, grid.rows, std::uint8_t{});
-      // Free pass 1's window, read scene rows a tile row at a time.
-      std::vector<float>().swap(incidence);
-      std::vector<std::uint8_t>().swap(scene_mask);
-      const int block_rows = scene_block_rows;
-      const std::size_t cap = sz(block_rows) * sz(grid.cols);
-      z.resize(std::max(z.size(), cap));
-      cat.resize(z.size());
-      ok.resize(z.size());
-      std::vector<std::int32_t> pix_line(cap), pix_bin(cap);
-      std::vector<float> out_power(cap);
-      std::vector<std::uint8_t> out_grey(cap), no_data, grey;
-      for (int r0 = 0; r0 < grid.rows; r0 += block_rows) {
-        const int n = std::min(block_rows, grid.rows - r0);
-        const std::size_t nc = sz(n) * sz(grid.cols);
-        in.read(r0, n, 0, grid.cols, z.data(), cat.data(), ok.data());
-        // Each cell's pixel, and the window of the image they need.
-        int l_lo = lines, l_hi = -1, b_lo = bins, b_hi = -1;
-        for (int r = r0; r < r0 + n; ++r) {
-          for (int c = 0; c < grid.cols; ++c) {
-            const std::size_t i = sz(r - r0) * sz(grid.cols) + sz(c);
-            int line = -1, bin = -1;
-            if (!(ok[i] && geocode_pixel(grid, sim.track, img, r, c, z[i], line, bin))) {
-              line = -1;
-            } else {
-              l_lo = std::min(l_lo, line);
-              l_hi = std::max(l_hi, line);
-              b_lo = std::min(b_lo, bin);
-              b_hi = std::max(b_hi, bin);
-            }
-            pix_line[i] = line;
-            pix_bin[i] = bin;
-          }
-        }
-        std::fill(out_power.begin(), out_power.begin() + static_cast<std::ptrdiff_t>(nc), kNaNf);
-        std::fill(out_grey.begin(), out_grey.begin() + static_cast<std::ptrdiff_t>(nc),
-                  std::uint8_t{0});
-        if (l_hi >= 0) {
-          const int wl = l_hi - l_lo + 1, wb = b_hi - b_lo + 1;
-          const std::size_t np = sz(wl) * sz(wb);
-          speckled.resize(np);
-          mask.resize(np);
-          read_window(handle(sp_ds), l_lo, wl, b_lo, wb, speckled.data(), GDT_Float32,
-                      "speckled_power_slant.tif");
-          read_window(handle(mask_ds), l_lo, wl, b_lo, wb, mask.data(), GDT_Byte, "mask_slant.tif");
-          no_data.resize(np);
-          for (std::size_t i = 0; i < np; ++i) no_data[i] = (mask[i] & pixel_flag::kNoData) ? 1 : 0;
-          grey.resize(np);
-          greytones(speckled, grey, map, no_data);
-          for (std::size_t i = 0; i < nc; ++i) {
-            if (pix_line[i] < 0) continue;
-            const std::size_t p = sz(pix_line[i] - l_lo) * sz(wb) + sz(pix_bin[i] - b_lo);
-            out_power[i] = speckled[p];
-            out_grey[i] = grey[p];
-          }
-        }
-        power_out->write(out_power.data(), n);
-        grey_out->write(out_grey.data(), n);
-        bar.advance(static_cast<std::int64_t>(nc));
-      }
-      power_out->close();
-      grey_out->close();
-      stage_done();
-    }
-
-    // ---- metadata.json ----------------------------------------------------
     write_text_file_atomic(
-        dir.path("metadata.json"),
-        slar_metadata(grid, ss.h_min, ss.h_max, sim, pic_meta, info).dump(2) + "\n");
+        dir_->path("metadata.json"),
+        slar_metadata(grid(), ss_.h_min, ss_.h_max, sim(), pic_meta, info_).dump(2) + "\n");
   }
-  bar.finish();
-  dir.commit();
-  return summary;
+
+  const SceneStreamReader in_;
+  const SlarStreamOptions& options_;
+  const SlarRunInfo& info_;
+  const std::filesystem::path out_dir_;
+  SlarStreamSummary summary_;
+  std::string backscatter_file_;
+  Georef georef_;
+  // Made at the points the passes need them: a refused run shows no bar
+  // and stages no folder.
+  std::optional<ProgressBar> bar_;
+  std::optional<StagedDirectory> dir_;
+  std::chrono::steady_clock::time_point mark_;
+  int cross_cells_ = 0;
+  int scene_block_rows_ = 0;
+  SceneSummary ss_;
+  std::uint64_t n_elev_ = 0;
+  RadiometrySetup rs_;
+  std::vector<double> looks_;
+  FloatRankSelect power_;  // the median mean power's two passes
+  // Buffers reused across blocks and passes.
+  std::vector<float> z_;
+  std::vector<std::uint16_t> cat_;
+  std::vector<std::uint8_t> ok_;
+  std::vector<float> mean_, speckled_;
+  std::vector<std::uint8_t> mask_;
+  std::vector<std::int32_t> pix_line_, pix_bin_;
+  std::string text_;
+};
+
+}  // namespace
+
+SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path,
+                                         const RadarParams& radar, const Sigma0Source& sigma0,
+                                         const SlarRunInfo& info,
+                                         const std::filesystem::path& out_dir,
+                                         const SlarStreamOptions& options) {
+  bound_gdal_cache(kGdalCacheBytes);
+  StreamRun run(scene_path, radar, sigma0, info, out_dir, options);
+  return run.run(sigma0);
 }
 
 }  // namespace ris

@@ -17,10 +17,13 @@ TEST(ProgressBar, LineShowsFractionRateAndTimeRemaining) {
 }
 
 TEST(ProgressBar, QuietOrNotATerminalDrawsNothing) {
+  ::testing::internal::CaptureStderr();
   ProgressBar quiet("x", 10, "", true);
   EXPECT_FALSE(quiet.enabled());
-  quiet.advance(5);  // no-op, must not crash
+  quiet.advance(5);
+  quiet.set_stage("stage");
   quiet.finish();
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
   // ctest runs with stderr redirected: not a terminal.
   ProgressBar piped("x", 10, "", false);
   EXPECT_EQ(piped.enabled(), stderr_is_terminal());

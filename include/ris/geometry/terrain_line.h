@@ -58,7 +58,7 @@ struct TerrainTexels {
 };
 
 // Which code the texels and the sampler run: the widest the CPU has (AVX-512
-// kernels, ris/util/avx512.h, where it has them), or the portable one
+// kernels, kernels/simd/avx512.h, where it has them), or the portable one
 // whatever the CPU (for tests: both give the same bytes).
 enum class SamplerKernel { best, portable };
 

@@ -31,48 +31,9 @@
 #include "ris/geometry/slar_geometry.h"
 #include "ris/image/slar_image.h"
 #include "ris/scene/scene.h"
+#include "ris/sim/slar_line_parts.h"
 
 namespace ris {
-
-// A rectangle of scene cells held in memory: global rows [row0, row0 + rows),
-// columns [col0, col0 + cols), row-major with `cols` per row.
-struct SceneWindow {
-  int row0 = 0, col0 = 0, rows = 0, cols = 0;
-  const float* elevation_m = nullptr;
-  const std::uint16_t* category = nullptr;
-  const std::uint8_t* valid = nullptr;
-
-  static SceneWindow whole(const Scene& s) {
-    return {0, 0, s.rows, s.cols, s.elevation_m.data(), s.category.data(), s.valid.data()};
-  }
-  bool holds(int r, int c) const {
-    return r >= row0 && r < row0 + rows && c >= col0 && c < col0 + cols;
-  }
-  std::size_t index(int r, int c) const {
-    return static_cast<std::size_t>(r - row0) * static_cast<std::size_t>(cols) +
-           static_cast<std::size_t>(c - col0);
-  }
-};
-
-// Scene-grid outputs for a rectangle of cells (same layout as SceneWindow).
-struct SceneMapsWindow {
-  int row0 = 0, col0 = 0, rows = 0, cols = 0;
-  std::uint8_t* mask = nullptr;
-  float* local_incidence_deg = nullptr;
-  std::size_t index(int r, int c) const {
-    return static_cast<std::size_t>(r - row0) * static_cast<std::size_t>(cols) +
-           static_cast<std::size_t>(c - col0);
-  }
-};
-
-// Per-sample counts of SlarGeometry, plus the slant-range extent of the
-// samples with data (for the "swath misses the scene" message).
-struct SlarLineCounts {
-  std::int64_t nodata = 0, shadow = 0, back_facing = 0, layover = 0;
-  float r_min_m = 0.0f, r_max_m = 0.0f;  // +inf / -inf when none
-  SlarLineCounts();
-  void add(const SlarLineCounts& o);
-};
 
 // Whether the fused path reproduces the reference stages for this layout:
 // direct sampling with one line per row (track along y) or column.
@@ -113,6 +74,11 @@ class SlarLineEngine {
   bool cross_is_x_ = true;
   bool u_grows_with_index_ = true;
 };
+
+// Throws the InputError of a swath that misses the scene (no sample in
+// it; counts: the slant-range extent of the samples with data).
+void check_swath_hits_scene(std::int64_t samples_in_swath, const SlantRangeBins& range,
+                            const SlarLineCounts& counts, const std::string& radar_file);
 
 // The whole fused run for an in-memory scene: fills `maps` (rows x cols),
 // sets layout's counts, returns the image as form_slar_image does (same

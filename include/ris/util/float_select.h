@@ -38,7 +38,7 @@
 #include <utility>
 #include <vector>
 
-#include "ris/util/vector_clones.h"
+#include "ris/kernels/vector_clones.h"
 
 namespace ris {
 

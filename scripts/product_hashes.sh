@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Hashes of every product's decoded pixels and of the text products for a
+# fixed set of `ris simulate` runs: the proof that a refactoring moved no
+# output value. Rasters (GeoTIFF, PNG) are decoded by GDAL to raw pixels
+# (gdal_translate -of ENVI) and hashed, so compression settings do not count;
+# metadata.json is hashed without its timing and version keys.
+#
+# Usage: scripts/product_hashes.sh RIS_BINARY WORK_DIR > hashes.txt
+# Compare two runs with diff (e.g. the binary before and after a change).
+set -euo pipefail
+ris=$(realpath "$1")
+work=$2
+here="$(cd "$(dirname "$0")/.." && pwd)"
+data="$here/data"
+dem="$here/tests/data/dem"
+rm -rf "$work"
+mkdir -p "$work"
+cd "$work"
+
+# Inputs: the standard scene as a raster, radars with other headings, an
+# imported DEM and a radar for it (as tests/terrain_cli_test.cpp).
+"$ris" scene build -o scene.tif > /dev/null
+for h in 30 90; do
+  sed "s/^heading = \"0 deg\"/heading = \"$h deg\"/" "$data/radars/seed-fig4-5.toml" > "fig45-h$h.toml"
+done
+cat > dem-radar.toml << 'EOF'
+name = "t"
+mode = "slar"
+frequency = "9.4 GHz"
+polarisation = "HH"
+pulse_width = "0.2 us"
+near_range = "10000 m"
+far_range = "14000 m"
+azimuth_beamwidth = "0.2 deg"
+[track]
+altitude = "3000 m"
+start_latlon = [34.13, -118.55]
+end_latlon = [34.22, -118.55]
+EOF
+"$ris" scene import "$dem/SanAnd_dem.tif" --category grass -o dem.tif > /dev/null
+
+run() {  # name, then the simulate arguments
+  local name=$1
+  shift
+  "$ris" simulate --quiet --out "$name" "$@" > "$name.log" 2>&1 || {
+    echo "run $name failed:" >&2
+    cat "$name.log" >&2
+    exit 1
+  }
+}
+run default --threads 2
+run default-t1 --threads 1
+run sar-coherent --threads 2 --radar "$data/radars/sar-x-band-stripmap.toml" \
+  --targets "$data/targets/corner-reflectors.toml"
+sed 's/^coherent = true/coherent = false/' "$data/radars/sar-x-band-stripmap.toml" > sar-inc.toml
+run sar-incoherent-notargets --threads 2 --radar sar-inc.toml
+run sar-incoherent-targets --threads 2 --radar sar-inc.toml \
+  --targets "$data/targets/corner-reflectors.toml"
+run ppi --threads 2 --radar "$data/radars/ppi-ground-mast-30m.toml"
+run ppi-t1 --threads 1 --radar "$data/radars/ppi-ground-mast-30m.toml"
+run ppi-air --threads 2 --radar "$data/radars/ppi-airborne-nav-10000ft.toml"
+run dem --threads 2 --scene dem.tif --radar dem-radar.toml \
+  --backscatter "$data/backscatter/generic-terrain.toml"
+run oblique30 --threads 2 --radar fig45-h30.toml
+run oblique30-t1 --threads 1 --radar fig45-h30.toml
+run heading90 --threads 2 --radar fig45-h90.toml
+run heading90-t1 --threads 1 --radar fig45-h90.toml
+run raster --threads 2 --scene scene.tif
+run stream7 --threads 2 --scene scene.tif --stream --block-lines 7
+run stream64 --threads 1 --scene scene.tif --stream --block-lines 64
+run stream64-h90 --threads 2 --scene scene.tif --stream --block-lines 64 --radar fig45-h90.toml
+
+for d in */; do
+  d=${d%/}
+  for f in $(cd "$d" && find . -type f | sort); do
+    f=${f#./}
+    case "$f" in
+      *.tif | *.png)
+        gdal_translate -q -of ENVI "$d/$f" decoded.raw > /dev/null
+        echo "$d/$f $(md5sum < decoded.raw | cut -c1-32)"
+        rm -f decoded.raw decoded.hdr decoded.raw.aux.xml
+        ;;
+      metadata.json)
+        echo "$d/$f $(grep -v -E '"(version|seconds|elapsed|time|wall)[a-z_]*"' "$d/$f" | md5sum | cut -c1-32)"
+        ;;
+      *) echo "$d/$f $(md5sum < "$d/$f" | cut -c1-32)" ;;
+    esac
+  done
+done

@@ -1,0 +1,69 @@
+#include "ris/io/ellipsoidal_dem.h"
+
+#include <gtest/gtest.h>
+#include <ogr_spatialref.h>
+
+#include <cmath>
+#include <vector>
+
+#include "ris/io/gdal_util.h"
+#include "ris/io/raster_io.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+#include "test_util.h"
+
+namespace ris {
+namespace {
+
+std::string dem_path(const std::string& name) {
+  return std::string(RIS_TEST_DATA_DIR) + "/dem/" + name;
+}
+
+// Rome-30m-DEM.tif declares EGM96 heights (EPSG:4326+5773): PROJ adds the
+// geoid undulation, 48.613 m at 42.0 N 12.5 E (gdaltransform -s_srs
+// EPSG:4326+5773 -t_srs EPSG:4979 with Debian's egm96_15.gtx).
+TEST(EllipsoidalDem, GeoidHeightsBecomeEllipsoidal) {
+  const EllipsoidalDem dem = read_ellipsoidal_dem(dem_path("Rome-30m-DEM.tif"));
+  EXPECT_EQ(dem.cols, 360);
+  EXPECT_EQ(dem.rows, 360);
+  EXPECT_NE(dem.vertical_note.find("EGM96"), std::string::npos) << dem.vertical_note;
+  EXPECT_NEAR(dem.geoid_offset_mean_m, 48.6, 0.3);
+  const RasterF64 raw = read_raster_f64(dem_path("Rome-30m-DEM.tif"));
+  // The cell whose centre is nearest 42.0 N 12.5 E.
+  const int c = static_cast<int>(
+      std::lround((12.5 - raw.georef.geotransform[0]) / raw.georef.geotransform[1] - 0.5));
+  const int r = static_cast<int>(
+      std::lround((42.0 - raw.georef.geotransform[3]) / raw.georef.geotransform[5] - 0.5));
+  EXPECT_NEAR(dem.at(r, c) - raw.data[static_cast<std::size_t>(r) * 360 + c], 48.613, 0.01);
+}
+
+TEST(EllipsoidalDem, NoVerticalDatumAndNoData) {
+  const EllipsoidalDem dem = read_ellipsoidal_dem(dem_path("winnipeg_dem.tif"));
+  EXPECT_NE(dem.vertical_note.find("no vertical datum"), std::string::npos);
+  EXPECT_EQ(dem.geoid_offset_mean_m, 0.0);
+  // Bilinear lookup at a cell centre returns the cell; outside: NaN.
+  EXPECT_FLOAT_EQ(static_cast<float>(dem.height_at(dem.lat0_rad + 10 * dem.dlat_rad,
+                                                   dem.lon0_rad + 20 * dem.dlon_rad)),
+                  dem.at(10, 20));
+  EXPECT_TRUE(std::isnan(dem.height_at(dem.lat0_rad - 1.0, dem.lon0_rad)));
+}
+
+TEST(EllipsoidalDem, RefusesProjectedDems) {
+  test::TempDir tmp;
+  OGRSpatialReference utm;
+  utm.importFromEPSG(32633);
+  Georef g;
+  g.geotransform = {300000.0, 30.0, 0.0, 4650000.0, 0.0, -30.0};
+  g.crs_wkt = wkt_of(utm);
+  std::vector<float> h(100, 10.0F);
+  write_geotiff<float>(tmp / "utm.tif", h.data(), 10, 10, &g);
+  try {
+    read_ellipsoidal_dem(tmp / "utm.tif");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("EPSG:4326"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace ris

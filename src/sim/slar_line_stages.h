@@ -1,0 +1,81 @@
+// Internal: the line engine (sim/slar_line_engine.h)'s per-line stages,
+// shared by every line source (along a grid axis: slar_line_blocks.cpp; any
+// other heading: slar_oblique_lines.cpp): per-thread line scratch, the
+// line's look geometry, and radiometry and image formation of the line's
+// elements into its range profile. They run the same code as the stage path
+// (compute_slar_geometry + form_slar_image), so the products are the same
+// bytes.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernels/image/slar_element.h"
+#include "ris/geometry/line_scan.h"
+#include "ris/geometry/scene_geometry_maps.h"
+#include "ris/geometry/slar_geometry.h"
+#include "ris/image/slar_image.h"
+#include "ris/sim/slar_line_parts.h"
+
+namespace ris::detail {
+
+// One thread's line scratch, allocated once per run() call and thread.
+struct LineScratch {
+  std::vector<float> u, height, dz_dx, dz_dy, range, incidence, local_incidence, area, near_end,
+      far_end, dh_du;
+  std::vector<std::uint16_t> category;
+  std::vector<std::uint8_t> flags;
+  std::vector<std::uint8_t> unseen;      // kUnseen where u <= 0 (the same for every line)
+  std::vector<std::uint8_t> none_valid;  // a row of no-data cells, beyond the scene's edge
+  std::vector<float> none_z;
+  SlarLineAccumulator acc;
+  LineElementScratch elements;
+  LineScratch(const SlarGeometry& g, int bins)
+      : u(static_cast<std::size_t>(g.samples)),
+        height(u.size()),
+        dz_dx(u.size()),
+        dz_dy(u.size()),
+        range(u.size()),
+        incidence(u.size()),
+        local_incidence(u.size()),
+        area(u.size()),
+        near_end(u.size()),
+        far_end(u.size()),
+        dh_du(u.size()),
+        category(u.size()),
+        flags(u.size()),
+        unseen(u.size()),
+        none_valid(u.size(), 0),
+        none_z(u.size(), 0.0f),
+        acc(bins),
+        elements(g.samples, bins) {
+    for (int j = 0; j < g.samples; ++j) {
+      u[static_cast<std::size_t>(j)] = float(g.sample_u_m(j));
+      unseen[static_cast<std::size_t>(j)] = g.sample_u_m(j) > 0.0 ? 0 : sample_flag::kUnseen;
+    }
+  }
+};
+
+// The look geometry, element ends, cast shadow and layover of a line whose
+// terrain is in the scratch (MODEL.md section 2; the code the stage path
+// runs: ris/geometry/line_scan.h).
+void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_incidence,
+                   LineScratch& s);
+
+// Image formation's per-line step (as form_slar_image): the line's elements
+// into its range profile row; counts into `counts`. Returns the number of
+// elements whose centre falls in a bin. first_sample: the line's sample
+// index of the scratch's element 0, when it holds a span of the line
+// (LineElements::first_index; the same bytes as the whole line then).
+std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
+                             SlarLineProfiles& prof, int line, SlarLineCounts& counts,
+                             double range_window_bins, int first_sample = 0);
+
+// The fused run for a heading off the grid axes (slar_oblique_lines.cpp):
+// fills prof (allocated), maps (sized to the scene) and counts.
+void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
+                       const SlarImagingParams& p, const std::string& radar_file,
+                       SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts);
+
+}  // namespace ris::detail
