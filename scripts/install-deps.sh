@@ -13,7 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcairo2-dev fonts-dejavu-core
   libkissfft-dev
-  clang-format ccache
+  clang-format ccache python3 hyperfine
 )
 
 missing=()
