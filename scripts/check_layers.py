@@ -33,7 +33,7 @@ def kernel_layer(folder):
 
 def layer_of(path: pathlib.Path, root: pathlib.Path):
     parts = path.relative_to(root).parts
-    if parts[0] == "apps":
+    if parts[0] in ("apps", "python"):  # the CLI and the Python module sit on top
         return "apps"
     if parts[:2] == ("src", "kernels") and len(parts) > 3:
         return kernel_layer(parts[2])
@@ -48,7 +48,7 @@ def layer_of(path: pathlib.Path, root: pathlib.Path):
 
 def main() -> int:
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
-    files = [p for d in ("src", "include", "apps") for p in (root / d).rglob("*")
+    files = [p for d in ("src", "include", "apps", "python") for p in (root / d).rglob("*")
              if p.suffix in (".h", ".hpp", ".cpp") and not p.name.endswith("_test.cpp")]
     errors = []
     for path in sorted(files):

@@ -14,6 +14,8 @@ packages=(
   libcairo2-dev fonts-dejavu-core
   libkissfft-dev
   clang-format ccache python3 hyperfine
+  # The Python module (import ris, docs/python.md) and its tests
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-gdal
 )
 
 missing=()
