@@ -46,7 +46,8 @@ def radar_at(depression_deg, scene_width_m, near_edge_m=4000.0):
         "sweep_delay": f"{2 * near_r / C_M_PER_S:.9e} s",
         "sweep_length": f"{2 * (far_r - near_r) / C_M_PER_S:.9e} s",
         "azimuth_beamwidth": "5 mrad",
-        "track": {"altitude": f"{altitude_m:.3f} m", "near_edge_distance": f"{near_edge_m} m"},
+        "track": {"altitude": f"{altitude_m:.3f} m", "heading": "0 deg",
+                  "near_edge_distance": f"{near_edge_m} m"},
     })
 
 
@@ -65,9 +66,10 @@ def main(out_dir):
         b = int(np.argmin(np.abs(result.slant_range_m - mid_r)))
         power = result.mean_power_w[:, b]
         lines = power.size
-        # Lines well inside each strip (the beam footprint is tens of metres).
-        wheat = np.mean(power[lines // 8: 3 * lines // 8])
-        corn = np.mean(power[5 * lines // 8: 7 * lines // 8])
+        # Lines well inside each strip (the beam footprint is tens of metres);
+        # the track flies north, so the first lines image the southern strip.
+        corn = np.mean(power[lines // 8: 3 * lines // 8])
+        wheat = np.mean(power[5 * lines // 8: 7 * lines // 8])
         incidence_deg = 90.0 - depression_deg  # mid-swath, flat ground
         s_wheat = ris.sigma0(WHEAT, incidence_deg, 9.4e9, "HH")
         s_corn = ris.sigma0(CORN, incidence_deg, 9.4e9, "HH")

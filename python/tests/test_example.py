@@ -17,7 +17,7 @@ def test_sweep_example_runs(tmp_path):
     # On flat ground both strips share every geometric factor, so their
     # contrast in a range bin is the sigma0 ratio at that bin's incidence;
     # the bin centre is within half a bin (7.5 m slant) of mid-swath, where
-    # sigma0 is evaluated. Tolerance: MEASURED.
+    # sigma0 is evaluated. Measured 0.0063 dB worst; about 3 times that.
     for r in rows:
         image, model = float(r["image_contrast_db"]), float(r["sigma0_contrast_db"])
-        assert abs(image - model) < 0.05, r
+        assert abs(image - model) < 0.02, r

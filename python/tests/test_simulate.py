@@ -137,7 +137,7 @@ def test_flat_plane_pixel_power_follows_the_radar_equation(tmp_path):
     w = R phi (SLAR)."""
     gamma_db = -10.0
     (tmp_path / "lib.toml").write_text(
-        '[library]\nname = "flat"\n[[category]]\nid = 1\nname = "plane"\n'
+        '[library]\nname = "flat"\n[[category]]\nid = 1\nname = "plane"\ncolour = "#808080"\n'
         f'[category.model]\nname = "constant_gamma"\ngamma_db = {gamma_db}\n')
     radar = dict(SMALL_RADAR, transmit_power="1000 W", antenna_gain_db=25.0,
                  elevation_pattern={"shape": "uniform"})
@@ -158,9 +158,9 @@ def test_flat_plane_pixel_power_follows_the_radar_equation(tmp_path):
     # Lines well inside the track (the footprint stays on the scene).
     got = r.mean_power_w[40:80]
     rel = np.abs(got / expected - 1.0)
-    # Measured 2.0e-4 worst (elements' ranges and angles spread over a bin
-    # against the bin centre's, as slar_image_test.cpp): 3 times that.
-    assert np.nanmax(rel) < 6e-4, np.nanmax(rel)
+    # Measured 1.6e-4 worst (elements' ranges and angles spread over a bin
+    # against the bin centre's, as slar_image_test.cpp): about 3 times that.
+    assert np.nanmax(rel) < 5e-4, np.nanmax(rel)
     assert not np.any(np.isnan(got))
 
 
