@@ -6,12 +6,14 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libgdal-dev gdal-bin
+  # PROJ's grids: EGM96 geoid heights to ellipsoidal heights (ris topo, docs/geometry.md)
+  proj-data
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libfmt-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcairo2-dev fonts-dejavu-core
   libkissfft-dev
-  clang-format ccache
+  clang-format ccache python3 hyperfine
 )
 
 missing=()

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "ris/io/raster_io.h"
-#include "ris/io/scene_io.h"
 #include "ris/scene/scene_builder.h"
+#include "ris/scene/scene_io.h"
 #include "test_util.h"
 
 namespace ris {

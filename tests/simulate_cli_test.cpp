@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -10,8 +11,8 @@
 #include <vector>
 
 #include "ris/io/raster_io.h"
-#include "ris/io/scene_io.h"
 #include "ris/scene/scene.h"
+#include "ris/scene/scene_io.h"
 #include "test_inputs.h"
 #include "test_util.h"
 
@@ -189,6 +190,48 @@ TEST(SimulateCli, NanElevationsAreCountedAsNoData) {
   const RasterF64 mask = read_raster_f64(work / "out" / "scene_mask.tif");
   EXPECT_EQ(static_cast<int>(mask.data[static_cast<std::size_t>(47 * 200 + 33)]) & 4, 4);
   EXPECT_EQ(static_cast<int>(mask.data[static_cast<std::size_t>(47 * 200 + 40)]) & 4, 0);
+}
+
+}  // namespace
+}  // namespace ris
+
+namespace ris {
+namespace {
+
+// --products writes only the listed products (metadata.json always, listing
+// them); --compress changes the files, not the pixels; bad values fail
+// before anything is written, naming the option and the allowed values.
+TEST(SimulateCli, ProductsAndCompressOptions) {
+  const Inputs in(small_scene());
+  TempDir work;
+  const auto r =
+      run_ris(in.args(work / "some", "--products slant_range,mask_slant --compress small"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(work / "some"))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"mask_slant.tif", "metadata.json", "slant_range.png"}));
+  const nlohmann::json meta = nlohmann::json::parse(read_file(work / "some" / "metadata.json"));
+  EXPECT_EQ(meta["products"].size(), 3u);
+
+  ASSERT_EQ(run_ris(in.args(work / "all", "--compress none")).exit_code, 0);
+  const RasterF64 small = read_raster_f64(work / "some" / "mask_slant.tif");
+  const RasterF64 none = read_raster_f64(work / "all" / "mask_slant.tif");
+  EXPECT_EQ(small.data, none.data);
+  EXPECT_LT(fs::file_size(work / "some" / "mask_slant.tif"),
+            fs::file_size(work / "all" / "mask_slant.tif"));
+
+  for (const auto& [extra, text] :
+       {std::pair<std::string, std::string>{"--products slant_range,bscope", "\"bscope\""},
+        std::pair<std::string, std::string>{"--compress tiny", "\"fast\", \"small\" or \"none\""},
+        std::pair<std::string, std::string>{"--stream --compress small", "streamed run"}}) {
+    const auto bad = run_ris(in.args(work / "bad", extra));
+    EXPECT_EQ(bad.exit_code, 2) << extra << bad.output;
+    EXPECT_NE(bad.output.find(text), std::string::npos) << extra << bad.output;
+    EXPECT_FALSE(fs::exists(work / "bad")) << extra;
+  }
 }
 
 }  // namespace

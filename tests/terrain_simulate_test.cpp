@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "ris/io/dem_import.h"
-#include "ris/io/scene_io.h"
+#include "ris/scene/dem_import.h"
+#include "ris/scene/scene_io.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/slar_simulation.h"
 #include "slar_fixtures.h"

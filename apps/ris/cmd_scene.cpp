@@ -21,8 +21,8 @@
 
 #include "command_registry.h"
 #include "ris/image/scene_preview.h"
-#include "ris/io/scene_io.h"
 #include "ris/scene/scene_builder.h"
+#include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
 #include "ris/scene/scene_stats.h"
 #include "ris/util/error.h"

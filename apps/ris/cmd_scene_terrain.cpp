@@ -18,12 +18,12 @@
 #include <vector>
 
 #include "command_registry.h"
-#include "ris/io/dem_import.h"
-#include "ris/io/scene_io.h"
+#include "ris/scene/dem_import.h"
 #include "ris/scene/fractal_noise.h"
 #include "ris/scene/fractal_terrain.h"
 #include "ris/scene/geo_frame.h"
 #include "ris/scene/landcover.h"
+#include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
 #include "ris/util/error.h"
 #include "ris/util/progress.h"

@@ -4,7 +4,7 @@
 //
 //   ris simulate [--scene S] [--radar R] [--backscatter B] [--targets T]
 //                [--out DIR] [--seed N] [--threads N] [--quiet]
-//                [--stream] [--block-lines N]
+//                [--stream] [--block-lines N] [--products LIST] [--compress fast|small|none]
 //
 // With no arguments: the standard scene (built from its TOML description on
 // the fly) with the seed's figure-4-5 radar and the standard backscatter
@@ -14,116 +14,72 @@
 // streamed from its file in blocks of azimuth lines (ris/sim/slar_stream.h;
 // the same products, bounded memory); --stream or --block-lines N asks for
 // that on any scene raster (SLAR only).
+//
+// The run itself is the library's run_simulation (ris/sim/run.h), which the
+// server and the Python bindings call too; this file parses, calls, prints.
 #include <fmt/format.h>
-#include <omp.h>
-#include <spdlog/spdlog.h>
-#include <unistd.h>
 
-#include <chrono>
-#include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "command_registry.h"
-#include "ris/backscatter/library.h"
-#include "ris/io/dem_import.h"
-#include "ris/io/scene_stream.h"
-#include "ris/scene/scene_source.h"
-#include "ris/sensor/radar_config.h"
-#include "ris/sim/point_target.h"
-#include "ris/sim/point_target_irf.h"
 #include "ris/sim/ppi_products.h"
-#include "ris/sim/ppi_simulation.h"
-#include "ris/sim/sar_coherent.h"
+#include "ris/sim/run.h"
 #include "ris/sim/slar_products.h"
-#include "ris/sim/slar_simulation.h"
-#include "ris/sim/slar_stream.h"
-#include "ris/util/error.h"
 #include "ris/util/progress.h"
-#include "ris/util/units.h"
 
 namespace ris::app {
 namespace {
 
 struct SimulateArgs {
-  std::string scene;
-  std::string radar;
-  std::string backscatter;
+  RunRequest request;
   std::string out = "out";
-  std::string targets;
-  std::uint64_t seed = 1;
-  int threads = 0;
-  bool quiet = false;
-  bool stream = false;
-  int block_lines = 0;
+  std::vector<std::string> products;
+  std::string compress = "fast";
 };
 
-using StageFn = std::function<void(std::string_view, double)>;
-
-std::string absolute_out(const std::string& out) {
+std::string absolute_out(const std::filesystem::path& out) {
   return std::filesystem::absolute(out).lexically_normal().string();
 }
 
-// PPI: rays from a site, the B-scope and the scope (docs/modes.md).
-void run_ppi(const SimulateArgs& a, const Scene& scene, const RadarParams& radar,
-             const Sigma0Source& sigma0, const SlarOptions& options, const SlarRunInfo& info,
-             const StageFn& stage) {
-  const PpiSimulation ppi = simulate_ppi(scene, radar, sigma0, options);
-  for (const std::string& w : ppi.warnings) spdlog::warn("{}", w);
-  stage("speckle and greytones", 0.9);
-  const PpiPictures pic = render_ppi(ppi, a.seed);
-  stage("writing products", 0.95);
-  write_ppi_products(a.out, scene, ppi, pic, info);
-  stage("done", 1.0);
+void print_geometry_counts(const SlarGeometry& g) {
+  const double samples = double(g.lines) * double(g.samples);
+  fmt::print(
+      "  shadow {:.2f}%, layover {:.2f}%, back-facing {:.2f}% of samples; {} no-data cells\n",
+      100.0 * double(g.shadow_samples) / samples, 100.0 * double(g.layover_samples) / samples,
+      100.0 * double(g.back_facing_samples) / samples, g.nodata_cells);
+}
+
+void print_ppi(const RunRequest& r, const RunResult& res) {
+  const PpiSimulation& ppi = *res.ppi;
   const SlarGeometry& g = ppi.geometry.rays;
-  fmt::print("simulated {} ({} x {} cells) with {} (PPI)\n", a.scene, scene.cols, scene.rows,
-             a.radar);
+  fmt::print("simulated {} ({} x {} cells) with {} (PPI)\n", r.scene_path, res.scene->cols,
+             res.scene->rows, r.radar_path);
   fmt::print("  B-scope: {} rays x {} range bins; scope {} x {} pixels of {:.2f} m\n",
              ppi.bscope.lines, ppi.bscope.bins, ppi.scope_grid.size, ppi.scope_grid.size,
              ppi.scope_grid.pixel_m);
   fmt::print("  antenna at {:.1f} m (terrain {:.1f} m); shadow {:.2f}% of ray samples\n",
              ppi.geometry.altitude_m, ppi.geometry.site_ground_m,
              100.0 * double(g.shadow_samples) / (double(g.lines) * double(g.samples)));
-  if (!options.targets.empty()) {
+  if (res.has_targets) {
     fmt::print("  point targets: {} seen, {} hidden\n", ppi.point_returns.size(),
                ppi.hidden_targets.size());
   }
 }
 
-// SLAR and SAR (incoherent or coherent); point targets' impulse responses.
-void run_slar(const SimulateArgs& a, const Scene& scene, const RadarParams& radar,
-              const Sigma0Source& sigma0, const SlarOptions& options, const SlarRunInfo& info,
-              const StageFn& stage) {
-  const SlarSimulation sim = simulate_slar(scene, radar, sigma0, options);
-  for (const std::string& w : sim.warnings) spdlog::warn("{}", w);
-  stage("speckle and greytones", 0.9);
-  const bool coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
-  const SlarPictures pictures = coherent
-                                    ? render_slar(sim, a.seed, coherent_sar_intensity(sim, a.seed))
-                                    : render_slar(sim, a.seed);
-  nlohmann::json extra = nlohmann::json::object();
-  std::vector<PointTargetIrf> irfs;
-  if (!options.targets.empty()) {
-    irfs = measure_point_targets(sim, pictures, coherent);
-    extra["point_targets"] = point_target_irf_json(irfs, sim, a.targets, coherent);
-  }
-  stage("writing products", 0.95);
-  write_slar_products(a.out, scene, sim, pictures, info, extra);
-  stage("done", 1.0);
-
-  const SlarGeometry& g = sim.geometry;
-  const double samples = double(g.lines) * double(g.samples);
-  fmt::print("simulated {} ({} x {} cells) with {} ({})\n", a.scene, scene.cols, scene.rows,
-             a.radar, radar.mode == RadarMode::sar ? (coherent ? "coherent SAR" : "SAR") : "SLAR");
+void print_slar(const RunRequest& r, const RunResult& res) {
+  const SlarSimulation& sim = *res.slar;
+  const char* mode = res.kind == RunKind::coherent_sar ? "coherent SAR"
+                     : res.kind == RunKind::sar        ? "SAR"
+                                                       : "SLAR";
+  fmt::print("simulated {} ({} x {} cells) with {} ({})\n", r.scene_path, res.scene->cols,
+             res.scene->rows, r.radar_path, mode);
   fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
              sim.image.lines, sim.image.bins, sim.ground_grid.count);
-  fmt::print(
-      "  shadow {:.2f}%, layover {:.2f}%, back-facing {:.2f}% of samples; {} no-data cells\n",
-      100.0 * double(g.shadow_samples) / samples, 100.0 * double(g.layover_samples) / samples,
-      100.0 * double(g.back_facing_samples) / samples, g.nodata_cells);
-  for (const PointTargetIrf& t : irfs) {
+  print_geometry_counts(sim.geometry);
+  for (const PointTargetIrf& t : res.irfs) {
     fmt::print(
         "  target at R {:.1f} m, s {:.1f} m: 3 dB width {:.2f} m (range) x {:.2f} m (azimuth), "
         "PSLR {:.1f} dB, ISLR {:.1f} dB\n",
@@ -133,141 +89,79 @@ void run_slar(const SimulateArgs& a, const Scene& scene, const RadarParams& rada
   for (const std::string& h : sim.hidden_targets) fmt::print("  target {} hidden\n", h);
 }
 
-// Whether to stream: asked for, or a scene raster too large for memory
-// (only its header is read to decide).
-bool should_stream(const SimulateArgs& a) {
-  if (a.block_lines < 0) {
-    throw InputError("", "--block-lines",
-                     fmt::format("expected a positive number of lines, got {}", a.block_lines));
-  }
-  const bool is_raster = std::filesystem::path(a.scene).extension() != ".toml";
-  if (a.stream || a.block_lines > 0) {
-    if (!is_raster) {
-      throw InputError(a.scene, "--stream",
-                       "a streamed run reads a scene raster; build the description first with: "
-                       "ris scene build " +
-                           a.scene + " -o scene.tif");
-    }
-    return true;
-  }
-  if (!is_raster || dem_needs_import(a.scene)) return false;
-  const SceneStreamReader probe(a.scene);
-  if (!scene_needs_streaming(probe.grid().rows, probe.grid().cols)) return false;
-  spdlog::warn(
-      "{}: {} x {} cells is too large for an in-memory run; streaming it in blocks of "
-      "azimuth lines",
-      a.scene, probe.grid().cols, probe.grid().rows);
-  return true;
-}
-
-void run_streamed(const SimulateArgs& a, std::chrono::steady_clock::time_point t0) {
-  if (!a.targets.empty()) {
-    throw InputError(a.targets, "--targets",
-                     "a streamed run does not take point targets; run the scene in memory "
-                     "(a smaller scene or window) to add them");
-  }
-  const RadarParams radar = load_radar(a.radar);
-  const std::string backscatter =
-      a.backscatter.empty() ? default_sigma0_library_path() : a.backscatter;
-  const std::unique_ptr<Sigma0Source> sigma0 = load_sigma0_source(backscatter);
-  const SlarRunInfo info{a.scene, a.radar, backscatter, a.seed,
-                         a.threads > 0 ? a.threads : omp_get_max_threads()};
-  SlarStreamOptions o;
-  o.block_lines = a.block_lines;
-  o.quiet = a.quiet;
-  const SlarStreamSummary s = simulate_slar_streamed(a.scene, radar, *sigma0, info, a.out, o);
-  for (const std::string& w : s.sim.warnings) spdlog::warn("{}", w);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const SlarGeometry& g = s.sim.geometry;
-  const double samples = double(g.lines) * double(g.samples);
-  fmt::print("simulated {} ({} x {} cells, streamed in {} blocks of {} lines) with {}\n", a.scene,
-             s.grid.cols, s.grid.rows, s.blocks, s.block_lines, a.radar);
+void print_streamed(const RunRequest& r, const RunResult& res) {
+  const SlarStreamSummary& s = *res.streamed;
+  fmt::print("simulated {} ({} x {} cells, streamed in {} blocks of {} lines) with {}\n",
+             r.scene_path, s.grid.cols, s.grid.rows, s.blocks, s.block_lines, r.radar_path);
   fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
              s.sim.image.lines, s.sim.image.bins, s.sim.ground_grid.count);
-  fmt::print(
-      "  shadow {:.2f}%, layover {:.2f}%, back-facing {:.2f}% of samples; {} no-data cells\n",
-      100.0 * double(g.shadow_samples) / samples, 100.0 * double(g.layover_samples) / samples,
-      100.0 * double(g.back_facing_samples) / samples, g.nodata_cells);
+  print_geometry_counts(s.sim.geometry);
   for (const auto& [name, t] : s.stage_seconds) fmt::print("  {:.2f} s  {}\n", t, name);
-  fmt::print("  {:.2f} s; outputs in {}\n", seconds,
-             std::filesystem::absolute(a.out).lexically_normal().string());
 }
 
-void run_simulate(const SimulateArgs& a) {
-  if (a.threads < 0) {
-    throw InputError("", "--threads",
-                     fmt::format("expected 0 (all cores) or more, got {}", a.threads));
-  }
-  if (a.threads > 0) omp_set_num_threads(a.threads);
-  const auto t0 = std::chrono::steady_clock::now();
-  if (should_stream(a)) {
-    run_streamed(a, t0);
-    return;
-  }
-
+void run_simulate(SimulateArgs& a) {
+  RunRequest& r = a.request;
+  r.out_dir = a.out;
+  r.products.stems = a.products;
+  r.compression = parse_compression_preset(a.compress, "--compress");
   // Progress only on a terminal and without --quiet (ris/util/progress.h):
   // percent of the run by stage, rate and time remaining.
-  auto bar = std::make_shared<ProgressBar>("simulate", 100, "%", a.quiet);
+  auto bar = std::make_shared<ProgressBar>("simulate", 100, "%", r.quiet);
   auto done_pct = std::make_shared<std::int64_t>(0);
-  SlarOptions options;
+  RunCallbacks callbacks;
   if (bar->enabled()) {
-    options.progress = [bar, done_pct](std::string_view stage, double fraction) {
+    callbacks.progress = [bar, done_pct](std::string_view stage, double fraction) {
       const auto pct = static_cast<std::int64_t>(100.0 * fraction);
       bar->advance(pct - *done_pct);
       *done_pct = pct;
       bar->set_stage(std::string(stage));
     };
   }
-  const auto stage = [&](std::string_view name, double fraction) {
-    if (options.progress) options.progress(name, fraction);
-  };
-
-  stage("reading inputs", 0.0);
-  const RadarParams radar = load_radar(a.radar);
-  const Scene scene = load_scene_source(a.scene).scene;
-  const std::string backscatter =
-      a.backscatter.empty() ? default_sigma0_library_path() : a.backscatter;
-  const std::unique_ptr<Sigma0Source> sigma0 = load_sigma0_source(backscatter);
-  options.backscatter_file = backscatter;
-  if (!a.targets.empty()) options.targets = load_point_targets(a.targets);
-  const SlarRunInfo info{a.scene, a.radar, backscatter, a.seed,
-                         a.threads > 0 ? a.threads : omp_get_max_threads()};
-
-  if (radar.mode == RadarMode::ppi) {
-    run_ppi(a, scene, radar, *sigma0, options, info, stage);
+  const RunResult res = run_simulation(r, callbacks);
+  if (res.kind == RunKind::streamed) {
+    print_streamed(r, res);
   } else {
-    run_slar(a, scene, radar, *sigma0, options, info, stage);
+    bar->finish();
+    if (res.kind == RunKind::ppi) {
+      print_ppi(r, res);
+    } else {
+      print_slar(r, res);
+    }
   }
-  bar->finish();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  fmt::print("  {:.2f} s; outputs in {}\n", seconds, absolute_out(a.out));
+  fmt::print("  {:.2f} s; outputs in {}\n", res.seconds, absolute_out(a.out));
 }
 
 void add_simulate(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
-  args->scene = default_scene_path();
-  args->radar = default_radar_path();
+  RunRequest& r = args->request;
+  r.scene_path = default_scene_path();
+  r.radar_path = default_radar_path();
   auto* cmd = app.add_subcommand(
       "simulate", "Simulate a SLAR, SAR or PPI image of a scene (the radar file's mode)");
-  cmd->add_option("--scene", args->scene, "Scene: a .toml description or a raster")
+  cmd->add_option("--scene", r.scene_path, "Scene: a .toml description or a raster")
       ->capture_default_str();
-  cmd->add_option("--radar", args->radar, "Radar description (TOML)")->capture_default_str();
-  cmd->add_option("--backscatter", args->backscatter,
+  cmd->add_option("--radar", r.radar_path, "Radar description (TOML)")->capture_default_str();
+  cmd->add_option("--backscatter", r.backscatter_path,
                   "Backscatter library (.toml) or table (.csv); default: the standard library");
   cmd->add_option("--out", args->out, "Output folder (written as a whole)")->capture_default_str();
-  cmd->add_option("--targets", args->targets,
+  cmd->add_option("--targets", r.targets_path,
                   "Point targets (TOML, [[target]] tables): corner reflectors etc.");
-  cmd->add_option("--seed", args->seed, "Fading seed")->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
-  cmd->add_flag("--quiet", args->quiet, "No progress bar (it shows only on a terminal anyway)");
-  cmd->add_flag("--stream", args->stream,
+  cmd->add_option("--seed", r.seed, "Fading seed")->capture_default_str();
+  cmd->add_option("--threads", r.threads, "Threads (0: all cores)")->capture_default_str();
+  cmd->add_flag("--quiet", r.quiet, "No progress bar (it shows only on a terminal anyway)");
+  cmd->add_flag("--stream", r.stream,
                 "Stream the scene raster from its file in blocks of azimuth lines (bounded "
                 "memory; automatic when the scene is too large for memory)");
-  cmd->add_option("--block-lines", args->block_lines,
+  cmd->add_option("--block-lines", r.block_lines,
                   "Azimuth lines per streamed block (implies --stream; default: from a 512 MiB "
                   "budget)");
+  cmd->add_option("--products", args->products,
+                  "Write only these products, comma-separated file stems (docs/outputs.md; "
+                  "default: all; metadata.json always)")
+      ->delimiter(',');
+  cmd->add_option("--compress", args->compress,
+                  "Compression: fast (default), small (smallest files, slower), none")
+      ->capture_default_str();
   cmd->callback([args] { run_simulate(*args); });
 }
 

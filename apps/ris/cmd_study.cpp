@@ -23,9 +23,9 @@
 
 #include "command_registry.h"
 #include "ris/backscatter/library.h"
-#include "ris/io/config_table.h"
-#include "ris/io/scene_io.h"
 #include "ris/scene/scene_builder.h"
+#include "ris/scene/scene_io.h"
+#include "ris/sensor/radar_config.h"
 #include "ris/sim/study.h"
 #include "ris/util/error.h"
 
@@ -73,13 +73,13 @@ void run_study_command(const StudyArgs& a) {
       std::fflush(stderr);
     };
   }
-  const toml::table radar_doc = parse_toml_file(a.radar);
+  const RadarParams radar = load_radar(a.radar);
   const Scene scene = load_study_scene(a.scene);
   const std::string backscatter =
       a.backscatter.empty() ? default_sigma0_library_path() : a.backscatter;
   const std::unique_ptr<Sigma0Source> sigma0 = load_sigma0_source(backscatter);
 
-  const StudyResult r = run_study(scene, radar_doc, a.radar, *sigma0, backscatter, bands, options);
+  const StudyResult r = run_study(scene, radar, *sigma0, backscatter, bands, options);
   ContactSheetStyle style;
   style.max_panel_px = a.panel_px;
   write_study_products(a.out, r, StudyRunInfo{a.scene, a.radar, backscatter, a.seed}, style);

@@ -130,9 +130,10 @@ void run_topo(const TopoArgs& a) {
              w.size(), t.radar_seconds, t.unconverged, shadow, layover);
   fmt::print(
       "DEM pass: {} DEM cells x {}^2 facets = {} geo2rdr in {:.3f} s on {} threads: {:.1f} M "
-      "facets/s\n",
+      "facets/s ({:.1f} M per CPU-second)\n",
       t.dem_cells, t.oversample, t.dem_facets, t.dem_seconds, threads,
-      static_cast<double>(t.dem_facets) / std::max(t.dem_seconds, 1e-9) / 1e6);
+      static_cast<double>(t.dem_facets) / std::max(t.dem_seconds, 1e-9) / 1e6,
+      static_cast<double>(t.dem_facets) / std::max(t.dem_cpu_seconds, 1e-9) / 1e6);
   fmt::print("wrote {}\n", a.out);
 }
 

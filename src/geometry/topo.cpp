@@ -1,10 +1,12 @@
 #include "ris/geometry/topo.h"
 
+#include <fmt/format.h>
 #include <omp.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <limits>
 
 #include "ris/util/error.h"
@@ -51,12 +53,87 @@ Vec3 dem_normal(const EllipsoidalDem& dem, const Ellipsoid& e, double lat, doubl
   return (b.east * -ge + b.north * -gn + b.up).normalized();
 }
 
+// CPU time of the whole process (all threads), for throughput figures that
+// a busy machine does not distort.
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
 double heading_deg_of(const Ellipsoid& e, const OrbitState& s) {
   const Geodetic g = e.to_geodetic(s.position_m);
   const EnuBasis b = Ellipsoid::enu(g.lat_rad, g.lon_rad);
   double h = rad_to_deg(std::atan2(s.velocity_m_s.dot(b.east), s.velocity_m_s.dot(b.north)));
   return h < 0.0 ? h + 360.0 : h;
 }
+
+// geo2rdr for the DEM pass: one Newton step on the orbit's cubic Hermite
+// polynomial written, once per state-vector interval, in powers of
+// s = (t - t_i) / h (p = P0 + P1 s + P2 s^2 + P3 s^3: the same cubic as
+// Orbit::interpolate, so the same root up to rounding), with the interval
+// found by one multiplication on evenly spaced state vectors. The facet loop
+// makes no call; when the step is not below the tolerance (a poor guess,
+// uneven state vectors, the orbit's ends) it hands over to geo2rdr.
+class FacetLocator {
+ public:
+  FacetLocator(const Orbit& orbit, double tol_s) : orbit_(orbit), tol_s_(tol_s) {
+    const auto& sv = orbit.state_vectors();
+    const std::size_t n = sv.size();
+    t0_ = sv.front().time_s;
+    h_ = (sv.back().time_s - t0_) / static_cast<double>(n - 1);
+    uniform_ = true;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (std::abs(sv[i].time_s - sv[i - 1].time_s - h_) > 1e-9 * h_) uniform_ = false;
+    }
+    inv_h_ = 1.0 / h_;
+    // Hermite basis expanded: P0 = p0, P1 = h v0, P2 = 3 (p1 - p0) - h (2 v0 + v1),
+    // P3 = 2 (p0 - p1) + h (v0 + v1).
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      const StateVector& a = sv[i];
+      const StateVector& b = sv[i + 1];
+      Cubic c;
+      c.p0 = a.position_m;
+      c.p1 = a.velocity_m_s * h_;
+      c.p2 = (b.position_m - a.position_m) * 3.0 - (a.velocity_m_s * 2.0 + b.velocity_m_s) * h_;
+      c.p3 = (a.position_m - b.position_m) * 2.0 + (a.velocity_m_s + b.velocity_m_s) * h_;
+      cubics_.push_back(c);
+    }
+  }
+
+  RadarPoint locate(const Vec3& x, double t) const {
+    const double u = (t - t0_) * inv_h_;
+    if (!uniform_ || !(u >= 0.0) || u >= static_cast<double>(cubics_.size())) {
+      return geo2rdr(orbit_, x, t, tol_s_);
+    }
+    const auto i = static_cast<std::size_t>(u);
+    const Cubic& c = cubics_[i];
+    const double s = u - static_cast<double>(i);
+    const Vec3 p = ((c.p3 * s + c.p2) * s + c.p1) * s + c.p0;
+    const Vec3 v = ((c.p3 * (3.0 * s) + c.p2 * 2.0) * s + c.p1) * inv_h_;
+    const Vec3 acc = (c.p3 * (6.0 * s) + c.p2 * 2.0) * (inv_h_ * inv_h_);
+    const Vec3 d = x - p;
+    const double dt = -v.dot(d) / (acc.dot(d) - v.dot(v));
+    if (!(std::abs(dt) < tol_s_)) return geo2rdr(orbit_, x, t + dt, tol_s_);
+    RadarPoint r;
+    r.time_s = t + dt;
+    r.sensor_m = p + v * dt;
+    r.slant_range_m = (x - r.sensor_m).norm();
+    r.iterations = 1;
+    r.converged = orbit_.covers(r.time_s);
+    return r;
+  }
+
+ private:
+  struct Cubic {
+    Vec3 p0, p1, p2, p3;
+  };
+  const Orbit& orbit_;
+  double tol_s_;
+  double t0_ = 0.0, h_ = 1.0, inv_h_ = 1.0;
+  bool uniform_ = false;
+  std::vector<Cubic> cubics_;
+};
 
 }  // namespace
 
@@ -73,10 +150,24 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem, c
   std::size_t bad = 0;
   double h_min = std::numeric_limits<double>::infinity(), h_max = -h_min;
 
-  // rdr2geo of every bin on the DEM.
+  // rdr2geo of every bin on the DEM, each started from the look angle
+  // extrapolated from the two bins before it.
+  double look_last = kNan, look_step = 0.0;
+  double look_min = std::numeric_limits<double>::infinity(), look_max = -look_min;
+  int known = 0;
   for (int b = 0; b < w.bins; ++b) {
     const double r_m = g.range_of_bin(w.bin0 + b);
-    const GroundPoint p = rdr2geo(f, e, r_m, dem_h, h_guess);
+    const double look_guess = known == 0 ? kNan : known == 1 ? look_last : look_last + look_step;
+    const GroundPoint p = rdr2geo(f, e, r_m, dem_h, h_guess, look_guess);
+    if (p.converged) {
+      look_min = std::min(look_min, p.look_rad);
+      look_max = std::max(look_max, p.look_rad);
+      look_step = p.look_rad - look_last;
+      look_last = p.look_rad;
+      known = std::min(known + 1, 2);
+    } else {
+      known = 0;
+    }
     out.heading_deg[b] = heading;
     out.mask[b] = kMaskNone;
     if (!p.converged) {
@@ -104,32 +195,44 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem, c
   if (bad == static_cast<std::size_t>(w.bins)) return bad;
 
   // Layover and shadow from a dense terrain profile in this line's
-  // zero-Doppler plane: ground points every quarter range bin (on the
-  // ellipsoid at the line's mean height, then raised onto the DEM), in
-  // ground order from near to far. A point is in shadow when a nearer point
-  // is seen at a larger look angle; in layover when a nearer point is at a
-  // longer slant range or a farther one at a shorter (its range bin also
-  // holds other ground).
+  // zero-Doppler plane: ground points at evenly spaced look angles, on the
+  // ellipsoid raised to the line's mid height (ZeroDopplerFrame::
+  // range_to_ellipsoid) then moved onto the DEM along the normal, three
+  // per range bin on average, in ground order from near to far. A point is
+  // in shadow when a nearer point is seen at a larger look angle; in layover
+  // when a nearer point is at a longer slant range or a farther one at a
+  // shorter (its range bin also holds other ground).
   const double dr = g.range_spacing_m;
   const double margin = 2.0 * (h_max - h_min) + 4.0 * dr;
-  const double r_first = g.range_of_bin(w.bin0) - margin;
-  const double step = dr / 4.0;
-  const auto n =
-      static_cast<std::size_t>((g.range_of_bin(w.bin0 + w.bins - 1) + margin - r_first) / step) + 1;
+  const double h_ref = 0.5 * (h_min + h_max);
+  const double r_near_bin = g.range_of_bin(w.bin0);
+  const double r_near = r_near_bin - margin;
+  const double r_far = g.range_of_bin(w.bin0 + w.bins - 1) + margin;
+  // The look angles the line's ground spans, widened by the margin (as an
+  // angle at the near range), from nadir at the least.
+  const double look_pad = margin / r_near_bin;
+  const double look_lo = std::max(0.0, look_min - look_pad);
+  const double look_hi = look_max + look_pad;
+  const auto n = static_cast<std::size_t>((r_far - r_near) / (dr / 3.0)) + 2;
+  const double dlook = (look_hi - look_lo) / static_cast<double>(n - 1);
   sc.look_rad.resize(n);
   sc.range_m.resize(n);
   sc.flags.assign(n, 0);
-  const double h_ref = 0.5 * (h_min + h_max);
-  const auto flat = [h_ref](double, double) { return h_ref; };
+  const double ia2 = 1.0 / ((e.semi_major_m() + h_ref) * (e.semi_major_m() + h_ref));
+  const double ib2 = 1.0 / ((e.semi_minor_m() + h_ref) * (e.semi_minor_m() + h_ref));
   for (std::size_t k = 0; k < n; ++k) {
-    const GroundPoint p0 = rdr2geo(f, e, r_first + static_cast<double>(k) * step, flat, h_ref);
-    const double h = dem.height_at(p0.geodetic.lat_rad, p0.geodetic.lon_rad);
-    if (!p0.converged || !std::isfinite(h)) {
-      sc.look_rad[k] = kNan;
-      sc.range_m[k] = kNan;
-      continue;
-    }
-    const Vec3 d = e.to_ecef({p0.geodetic.lat_rad, p0.geodetic.lon_rad, h}) - f.sensor_m;
+    const double th = look_lo + static_cast<double>(k) * dlook;
+    const double t = f.range_to_ellipsoid(th, e, h_ref);
+    sc.look_rad[k] = kNan;
+    sc.range_m[k] = kNan;
+    if (!std::isfinite(t)) continue;
+    const Vec3 x0 = f.point(t, th);
+    const Geodetic q = e.to_geodetic(x0);
+    const double h = dem.height_at(q.lat_rad, q.lon_rad);
+    if (!std::isfinite(h)) continue;
+    // Up the normal of the inflated ellipsoid (its gradient: no trigonometry).
+    const Vec3 up = Vec3{x0.x * ia2, x0.y * ia2, x0.z * ib2}.normalized();
+    const Vec3 d = x0 + up * (h - q.height_m) - f.sensor_m;
     sc.look_rad[k] = std::atan2(d.dot(f.side), d.dot(f.nadir));
     sc.range_m[k] = d.norm();
   }
@@ -227,6 +330,18 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
                      "the DEM does not cover any pixel of the acquisition's radar grid");
   }
   const std::size_t np = w.size();
+  // Layers (53 bytes a pixel) and the DEM pass's sums (16 bytes a pixel per
+  // thread) live in memory: refuse a window that would not fit comfortably.
+  constexpr std::size_t kMaxPixels = 50'000'000;
+  if (np > kMaxPixels) {
+    throw InputError(
+        acq.source, options.full_grid ? "--full-grid" : "--dem",
+        fmt::format("the window is {} lines x {} bins ({:.0f} M pixels, about {:.1f} "
+                    "GiB of layers); at most {} M pixels: choose one burst "
+                    "(--burst), a smaller DEM, or drop --full-grid",
+                    w.lines, w.bins, static_cast<double>(np) / 1e6,
+                    static_cast<double>(np) * 90.0 / 1073741824.0, kMaxPixels / 1'000'000));
+  }
   t.lat_deg.resize(np);
   t.lon_deg.resize(np);
   for (auto* v :
@@ -261,6 +376,7 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
   t.unconverged = bad;
   const auto t1 = std::chrono::steady_clock::now();
   t.radar_seconds = std::chrono::duration<double>(t1 - t0).count();
+  const double cpu1 = process_cpu_seconds();
 
   // The DEM cells under the window (its ground points' extent plus a margin
   // for layover), and the facet size: below half a pixel on the ground.
@@ -313,20 +429,32 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
 
   // Pass 2: every DEM facet into the radar grid.
   const int nsub = (c1 - c0 + 1) * k;  // facets per facet row
-  std::vector<double> cos_lon(static_cast<std::size_t>(nsub) + 1), sin_lon(cos_lon.size());
+  // Per facet column: the DEM column, the bilinear weight, the longitude's
+  // cosine and sine (computed once for every facet row).
+  std::vector<int> col_of_corner(static_cast<std::size_t>(nsub) + 1);
+  std::vector<double> frac_of_corner(col_of_corner.size()), cos_lon(col_of_corner.size()),
+      sin_lon(col_of_corner.size());
   for (int j = 0; j <= nsub; ++j) {
-    const double lon = dem.lon0_rad + (c0 + static_cast<double>(j) / k) * dem.dlon_rad;
+    const double v = c0 + static_cast<double>(j) / k;
+    col_of_corner[j] = std::min(static_cast<int>(v), dem.cols - 2);
+    frac_of_corner[j] = v - col_of_corner[j];
+    const double lon = dem.lon0_rad + v * dem.dlon_rad;
     cos_lon[j] = std::cos(lon);
     sin_lon[j] = std::sin(lon);
   }
   // Facet normals point up when rows run south and columns east.
   const double orient = (dem.dlat_rad < 0 ? 1.0 : -1.0) * (dem.dlon_rad > 0 ? 1.0 : -1.0);
-  std::vector<std::int64_t> area_sum(np, 0), power_sum(np, 0);
+  // Area and power sums of a pixel side by side (one cache line for both).
+  std::vector<std::int64_t> sums(2 * np, 0);
   std::size_t facets = 0;
   const double t_mid = g.time_of_line(w.line0 + 0.5 * (w.lines - 1));
+  const FacetLocator locator(acq.orbit, kFacetTolerance_s);
+  const double inv_dt = 1.0 / g.line_interval_s, inv_dr = 1.0 / g.range_spacing_m;
+  const double line_origin = g.sensing_start_s + w.line0 * g.line_interval_s;
+  const double bin_origin = g.near_range_m + w.bin0 * g.range_spacing_m;
 #pragma omp parallel num_threads(threads) reduction(+ : facets)
   {
-    std::vector<std::int64_t> my_area(np, 0), my_power(np, 0);
+    std::vector<std::int64_t> my_sums(2 * np, 0);
     std::vector<Vec3> top(static_cast<std::size_t>(nsub) + 1), bottom(top.size());
     const auto corner_row = [&](double u, std::vector<Vec3>& out) {
       // Corner heights: bilinear in the DEM cell; positions: the closed-form
@@ -337,9 +465,8 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
       const double sl = std::sin(lat), cl = std::cos(lat);
       const double nr = e.prime_vertical_radius_m(lat);
       for (int j = 0; j <= nsub; ++j) {
-        const double v = c0 + static_cast<double>(j) / k;
-        const int cv = std::min(static_cast<int>(v), dem.cols - 2);
-        const double fv = v - cv;
+        const int cv = col_of_corner[j];
+        const double fv = frac_of_corner[j];
         const double h = (dem.at(ru, cv) * (1.0 - fv) + dem.at(ru, cv + 1) * fv) * (1.0 - fu) +
                          (dem.at(ru + 1, cv) * (1.0 - fv) + dem.at(ru + 1, cv + 1) * fv) * fu;
         const double rc = (nr + h) * cl;
@@ -368,7 +495,7 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
             continue;
           }
           const double t_guess = known == 0 ? t_mid : known == 1 ? t_last : t_last + t_step;
-          const RadarPoint p = geo2rdr(acq.orbit, centre, t_guess, kFacetTolerance_s);
+          const RadarPoint p = locator.locate(centre, t_guess);
           if (!p.converged) {
             known = 0;
             continue;
@@ -384,8 +511,8 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
           const double a_m2 = area.norm();
           const double power = muhleman_sigma0(proj / a_m2) * a_m2;
           // Bilinear spread over the four nearest pixels.
-          const double fl = g.line_of_time(p.time_s) - w.line0;
-          const double fb = g.bin_of_range(p.slant_range_m) - w.bin0;
+          const double fl = (p.time_s - line_origin) * inv_dt;
+          const double fb = (p.slant_range_m - bin_origin) * inv_dr;
           const double l0f = std::floor(fl), b0f = std::floor(fb);
           if (l0f < -1.0 || b0f < -1.0 || l0f >= w.lines || b0f >= w.bins) continue;
           const int l0 = static_cast<int>(l0f), b0 = static_cast<int>(b0f);
@@ -396,16 +523,16 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
             if (ls[q] < 0 || ls[q] >= w.lines || bs[q] < 0 || bs[q] >= w.bins) continue;
             const std::size_t o = static_cast<std::size_t>(ls[q]) * w.bins + bs[q];
             // Round half up (values are >= 0): no library call per sample.
-            my_area[o] += static_cast<std::int64_t>(proj * wts[q] * kFixedPerM2 + 0.5);
-            my_power[o] += static_cast<std::int64_t>(power * wts[q] * kFixedPerM2 + 0.5);
+            my_sums[2 * o] += static_cast<std::int64_t>(proj * wts[q] * kFixedPerM2 + 0.5);
+            my_sums[2 * o + 1] += static_cast<std::int64_t>(power * wts[q] * kFixedPerM2 + 0.5);
           }
         }
       }
     }
 #pragma omp critical
     for (std::size_t i = 0; i < np; ++i) {
-      area_sum[i] += my_area[i];
-      power_sum[i] += my_power[i];
+      sums[2 * i] += my_sums[2 * i];
+      sums[2 * i + 1] += my_sums[2 * i + 1];
     }
   }
   t.dem_facets = facets;
@@ -413,14 +540,15 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
   for (std::size_t i = 0; i < np; ++i) {
     const bool valid = std::isfinite(t.height_m[i]);
     t.gamma_area_m2[i] =
-        valid ? static_cast<float>(static_cast<double>(area_sum[i]) / kFixedPerM2) : kNanF;
-    const double beta0 = static_cast<double>(power_sum[i]) / kFixedPerM2 / t.beta_area_m2;
+        valid ? static_cast<float>(static_cast<double>(sums[2 * i]) / kFixedPerM2) : kNanF;
+    const double beta0 = static_cast<double>(sums[2 * i + 1]) / kFixedPerM2 / t.beta_area_m2;
     t.simulated_amplitude[i] = !valid ? kNanF
                                : (t.mask[i] & kMaskShadow) != 0
                                    ? 0.0F
                                    : static_cast<float>(std::sqrt(beta0));
   }
   t.dem_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  t.dem_cpu_seconds = process_cpu_seconds() - cpu1;
   return t;
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "acquisition_paths.h"
@@ -87,8 +88,10 @@ TEST(Topo, FlatGroundAreaAndAmplitudeAreAnalytic) {
       ++n;
     }
   }
-  EXPECT_NEAR(sum_ratio / n, 1.0, 0.01);  // measured MEAN_RATIO
-  EXPECT_NEAR(sum_amp / n, 1.0, 0.01);    // measured MEAN_AMP
+  std::printf("flat: gamma area / analytic %.5f, amplitude / analytic %.5f, local-inc %.2g deg\n",
+              sum_ratio / n, sum_amp / n, worst_local);
+  EXPECT_NEAR(sum_ratio / n, 1.0, 5e-4);  // measured 1.00004
+  EXPECT_NEAR(sum_amp / n, 1.0, 5e-4);    // measured 1.00003
   EXPECT_LT(worst_local, 1e-3);           // level ground: local = ellipsoid incidence
 }
 
@@ -113,7 +116,8 @@ TEST(Topo, EllipsoidIncidenceExceedsFlatEarthByGroundAngle) {
     EXPECT_GT(got_deg, 0.0);
     worst = std::max(worst, std::abs(got_deg - expected_deg) / expected_deg);
   }
-  EXPECT_LT(worst, 0.02);  // measured WORST_REL (ellipsoid vs sphere of radius sqrt(MN))
+  std::printf("incidence - look vs u/R: worst relative %.3g\n", worst);
+  EXPECT_LT(worst, 1e-3);  // measured 1.1e-4 (ellipsoid vs sphere of radius sqrt(MN))
 }
 
 // A steep ridge: its radar-facing slope (60 deg, steeper than any incidence
@@ -123,15 +127,21 @@ TEST(Topo, RidgeHasLayoverAndShadow) {
   const Acquisition a = small_airborne();
   const TopoLayers t = compute_topo(a, dem_for(a, 1500.0, 866.0), {});
   std::size_t shadow = 0, layover = 0;
+  double shadow_bin = 0.0, layover_bin = 0.0;
   for (std::size_t i = 0; i < t.mask.size(); ++i) {
     shadow += (t.mask[i] & kMaskShadow) != 0;
     layover += (t.mask[i] & kMaskLayover) != 0;
+    if ((t.mask[i] & kMaskShadow) != 0) shadow_bin += static_cast<double>(i % 300);
+    if ((t.mask[i] & kMaskLayover) != 0) layover_bin += static_cast<double>(i % 300);
     if ((t.mask[i] & kMaskShadow) != 0) {
       EXPECT_EQ(t.simulated_amplitude[i], 0.0F);
     }
   }
   EXPECT_GT(shadow, 60U * 10U);
   EXPECT_GT(layover, 60U * 10U);
+  // The crest is laid over towards near range, the shadow falls beyond it.
+  EXPECT_LT(layover_bin / static_cast<double>(layover), 150.0);
+  EXPECT_GT(shadow_bin / static_cast<double>(shadow), 150.0);
   const std::size_t mid = 30 * 300;
   EXPECT_EQ(t.mask[mid + 2], 0);    // near range, flat
   EXPECT_EQ(t.mask[mid + 297], 0);  // far range, beyond the shadow

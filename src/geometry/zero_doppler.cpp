@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ris {
 
@@ -53,8 +54,10 @@ LookAngles look_angles(const Ellipsoid& e, const Vec3& sensor_m, const Vec3& tar
 }
 
 ZeroDopplerFrame::ZeroDopplerFrame(const OrbitState& s, LookSide look, const Ellipsoid& e)
-    : sensor_m(s.position_m), velocity_m_s(s.velocity_m_s) {
-  const Geodetic g = e.to_geodetic(s.position_m);
+    : sensor_m(s.position_m),
+      velocity_m_s(s.velocity_m_s),
+      sensor_geodetic(e.to_geodetic(s.position_m)) {
+  const Geodetic& g = sensor_geodetic;
   nadir_normal = Ellipsoid::normal(g.lat_rad, g.lon_rad);
   const Vec3 vhat = s.velocity_m_s.normalized();
   const Vec3 down = -nadir_normal;
@@ -66,6 +69,19 @@ double ZeroDopplerFrame::look_on_sphere(double range_m, double rho_m) const {
   const double ps = sensor_m.norm();
   const double c = (ps * ps + range_m * range_m - rho_m * rho_m) / (2.0 * ps * range_m);
   return std::acos(std::clamp(c, -1.0, 1.0));
+}
+
+double ZeroDopplerFrame::range_to_ellipsoid(double look_rad, const Ellipsoid& e,
+                                            double height_m) const {
+  const double ia = 1.0 / (e.semi_major_m() + height_m);
+  const double ib = 1.0 / (e.semi_minor_m() + height_m);
+  const Vec3 u = nadir * std::cos(look_rad) + side * std::sin(look_rad);
+  const Vec3 du{u.x * ia, u.y * ia, u.z * ib};
+  const Vec3 dp{sensor_m.x * ia, sensor_m.y * ia, sensor_m.z * ib};
+  const double qa = du.dot(du), qb = dp.dot(du), qc = dp.dot(dp) - 1.0;
+  const double disc = qb * qb - qa * qc;
+  if (disc < 0.0) return std::numeric_limits<double>::quiet_NaN();
+  return (-qb - std::sqrt(disc)) / qa;
 }
 
 }  // namespace ris

@@ -4,6 +4,7 @@
 #include <ogr_spatialref.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <random>
 
@@ -41,10 +42,14 @@ void round_trip(const Acquisition& acq, double h_min, double h_max) {
     const GroundPoint back = rdr2geo(f2, acq.ellipsoid, r.slant_range_m, flat, 0.0);
     worst_m = std::max(worst_m, (back.ecef_m - p.ecef_m).norm());
   }
-  EXPECT_LT(worst_doppler, 1e-6);  // measured below 1e-9
-  EXPECT_LT(worst_m, 1e-3);        // measured below 1e-5 m
-  EXPECT_LT(worst_dt, 1e-7);
-  EXPECT_LT(worst_dr, 1e-4);
+  std::printf("round trip: Doppler/PRF %.2g, |dX| %.2g m, |dt| %.2g s, |dR| %.2g m\n",
+              worst_doppler, worst_m, worst_dt, worst_dr);
+  // The limits; measured: Doppler 3.3e-11 of the PRF, 1.3e-8 m,
+  // 5.8e-11 s, 2.9e-9 m (winnipeg, 700 km example, Sentinel-1 burst).
+  EXPECT_LT(worst_doppler, 1e-6);
+  EXPECT_LT(worst_m, 1e-3);
+  EXPECT_LT(worst_dt, 1e-8);
+  EXPECT_LT(worst_dr, 1e-6);
 }
 
 TEST(ZeroDoppler, RoundTripWinnipegAirborne) {
@@ -108,7 +113,8 @@ void incidence_against_proj(const Acquisition& acq, double h) {
       worst = std::max(worst, std::abs(a.incidence_deg - inc_proj));
     }
   }
-  EXPECT_LT(worst, 0.001);  // measured below 1e-7 deg
+  std::printf("incidence vs PROJ: %.2g deg\n", worst);
+  EXPECT_LT(worst, 0.001);  // the limit; measured 2.3e-8 deg
 }
 
 TEST(ZeroDoppler, IncidenceAgainstProjAirborne) {

@@ -8,6 +8,15 @@
 
 namespace ris {
 
+std::string quoted_alternatives(const std::vector<std::string_view>& texts) {
+  std::string out;
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    if (i > 0) out += i + 1 == texts.size() ? " or " : ", ";
+    out += "\"" + std::string(texts[i]) + "\"";
+  }
+  return out;
+}
+
 toml::table parse_toml_file(const std::string& path) {
   try {
     return toml::parse_file(path);

@@ -2,6 +2,7 @@
 
 #include <cpl_error.h>
 #include <fmt/format.h>
+#include <gdal_frmts.h>
 #include <gdal_utils.h>
 #include <ogr_spatialref.h>
 #include <spdlog/spdlog.h>
@@ -22,12 +23,21 @@ void CPL_STDCALL gdal_error_handler(CPLErr level, CPLErrorNum, const char* messa
 }
 }  // namespace
 
-void ensure_gdal_registered() {
+void ensure_gdal_writers_registered() {
   static std::once_flag once;
   std::call_once(once, [] {
-    GDALAllRegister();
     CPLSetErrorHandler(gdal_error_handler);
+    GDALRegister_GTiff();
+    GDALRegister_PNG();
+    GDALRegister_MEM();
   });
+}
+
+void ensure_gdal_registered() {
+  ensure_gdal_writers_registered();
+  // GDALAllRegister skips the drivers already registered.
+  static std::once_flag once;
+  std::call_once(once, [] { GDALAllRegister(); });
 }
 
 std::string last_gdal_error() {

@@ -52,7 +52,7 @@ GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int
       rows_(rows),
       bands_(static_cast<int>(band_descriptions.size())),
       order_(order) {
-  ensure_gdal_registered();
+  ensure_gdal_writers_registered();
   RIS_CHECK(bands_ > 0 && cols > 0 && rows > 0);
   GDALDriverH driver = GDALGetDriverByName("GTiff");
   RIS_CHECK(driver != nullptr);

@@ -36,10 +36,10 @@ template <typename T>
 void write_geotiff(const std::filesystem::path& path, const T* data, int cols, int rows,
                    const Georef* georef, std::optional<double> nodata,
                    const RasterMetadata& metadata, const std::string& band_description,
-                   BlockOrder order) {
+                   BlockOrder order, const GeoTiffCompression* compression) {
   RIS_CHECK(cols > 0 && rows > 0);
-  GeoTiffBlockWriter<T> writer(path, cols, rows, {band_description}, georef, nodata, metadata, {},
-                               order);
+  GeoTiffBlockWriter<T> writer(path, cols, rows, {band_description}, georef, nodata, metadata,
+                               compression != nullptr ? *compression : GeoTiffCompression{}, order);
   const bool by_rows = order == BlockOrder::top_down || order == BlockOrder::bottom_up;
   writer.write(data, by_rows ? rows : cols, static_cast<std::size_t>(cols));
   writer.close();
@@ -48,7 +48,7 @@ void write_geotiff(const std::filesystem::path& path, const T* data, int cols, i
 #define RIS_INSTANTIATE_GEOTIFF(T)                                                                 \
   template void write_geotiff<T>(const std::filesystem::path&, const T*, int, int, const Georef*,  \
                                  std::optional<double>, const RasterMetadata&, const std::string&, \
-                                 BlockOrder);                                                      \
+                                 BlockOrder, const GeoTiffCompression*);                           \
   template void write_geotiff_bands<T>(const std::filesystem::path&,                               \
                                        const std::vector<BandView<T>>&, int, int, const Georef*,   \
                                        std::optional<double>, const RasterMetadata&);
@@ -63,22 +63,25 @@ namespace {
 
 // GDAL's PNG driver reads the source row by row (bounded memory for a file
 // source). PAM is off so no .aux.xml appears beside the temporary name.
-void png_copy(const std::filesystem::path& path, GDALDatasetH src) {
+void png_copy(const std::filesystem::path& path, GDALDatasetH src, int zlevel) {
   GDALDriverH png = GDALGetDriverByName("PNG");
   RIS_CHECK(png != nullptr);
+  RIS_CHECK(zlevel >= 1 && zlevel <= 9);  // GDAL's PNG driver range
   AtomicPath out(path);
+  char** options = CSLSetNameValue(nullptr, "ZLEVEL", std::to_string(zlevel).c_str());
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
   GDALDatasetH dst =
-      GDALCreateCopy(png, out.temp_path().c_str(), src, FALSE, nullptr, nullptr, nullptr);
+      GDALCreateCopy(png, out.temp_path().c_str(), src, FALSE, options, nullptr, nullptr);
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
+  CSLDestroy(options);
   if (dst == nullptr) throw InputError(path.string(), "", "cannot write PNG: " + last_gdal_error());
   GDALClose(dst);
   out.commit();
 }
 
 void write_png(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows,
-               int channels) {
-  ensure_gdal_registered();
+               int channels, int zlevel) {
+  ensure_gdal_writers_registered();
   RIS_CHECK(cols > 0 && rows > 0);
   GDALDriverH mem = GDALGetDriverByName("MEM");
   RIS_CHECK(mem != nullptr);
@@ -91,25 +94,26 @@ void write_png(const std::filesystem::path& path, const std::uint8_t* data, int 
                               cols, rows, GDT_Byte, channels, cols * channels);
     RIS_CHECK(err == CE_None);
   }
-  png_copy(path, handle(src));
+  png_copy(path, handle(src), zlevel);
 }
 }  // namespace
 
 void write_png_gray_from_raster(const std::filesystem::path& path,
-                                const std::filesystem::path& source) {
+                                const std::filesystem::path& source, int zlevel) {
   GdalDataset src = open_raster(source.string());
   RIS_CHECK(GDALGetRasterCount(handle(src)) == 1 &&
             GDALGetRasterDataType(GDALGetRasterBand(handle(src), 1)) == GDT_Byte);
-  png_copy(path, handle(src));
+  png_copy(path, handle(src), zlevel);
 }
 
-void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols,
-                    int rows) {
-  write_png(path, data, cols, rows, 1);
+void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows,
+                    int zlevel) {
+  write_png(path, data, cols, rows, 1, zlevel);
 }
 
-void write_png_rgb(const std::filesystem::path& path, const std::uint8_t* rgb, int cols, int rows) {
-  write_png(path, rgb, cols, rows, 3);
+void write_png_rgb(const std::filesystem::path& path, const std::uint8_t* rgb, int cols, int rows,
+                   int zlevel) {
+  write_png(path, rgb, cols, rows, 3, zlevel);
 }
 
 RasterF64 read_raster_f64(const std::filesystem::path& path) {

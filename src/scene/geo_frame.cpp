@@ -21,7 +21,7 @@ struct GeoFrame::Impl {
 
 GeoFrame::GeoFrame(const std::string& scene_crs_wkt, const std::string& source)
     : impl_(std::make_unique<Impl>()) {
-  ensure_gdal_registered();
+  ensure_gdal_writers_registered();
   impl_->source = source;
   if (scene_crs_wkt.empty()) {
     throw InputError(source, "crs",
@@ -89,7 +89,7 @@ const std::string& GeoFrame::scene_crs_name() const {
 }
 
 std::string utm_wkt_for(double lon_deg, double lat_deg) {
-  ensure_gdal_registered();
+  ensure_gdal_writers_registered();
   double lon = std::fmod(lon_deg + 180.0, 360.0);
   if (lon < 0.0) lon += 360.0;
   const int zone = std::clamp(static_cast<int>(std::floor(lon / 6.0)) + 1, 1, 60);

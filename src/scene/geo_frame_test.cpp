@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "ris/io/dem_import.h"
+#include "ris/scene/dem_import.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 

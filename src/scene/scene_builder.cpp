@@ -20,7 +20,7 @@ namespace {
 
 // A CRS written any way GDAL understands ("EPSG:32614", WKT, PROJ string) as WKT.
 std::string crs_to_wkt(const std::string& text, ConfigTable& grid) {
-  ensure_gdal_registered();
+  ensure_gdal_writers_registered();
   OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
   std::string wkt;
   if (OSRSetFromUserInput(srs, text.c_str()) == OGRERR_NONE) {

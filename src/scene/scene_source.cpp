@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "ris/io/gdal_util.h"
-#include "ris/io/scene_io.h"
 #include "ris/scene/scene_builder.h"
+#include "ris/scene/scene_io.h"
 #include "ris/util/error.h"
 
 namespace ris {

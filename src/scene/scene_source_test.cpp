@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "ris/io/raster_io.h"
-#include "ris/io/scene_io.h"
+#include "ris/scene/scene_io.h"
 #include "ris/util/error.h"
 #include "test_util.h"
 

@@ -85,14 +85,8 @@ double get_area_m2(ConfigTable& t, const std::string& key) {
 
 void parse_track(ConfigTable& t, TrackSpec& spec) {
   spec.altitude_m = get_positive(t, "altitude", Quantity::length, "m");
-  const std::string look = t.get_string_or("look_side", "right");
-  if (look == "right") {
-    spec.look_side = LookSide::right;
-  } else if (look == "left") {
-    spec.look_side = LookSide::left;
-  } else {
-    t.fail("look_side", fmt::format("expected \"right\" or \"left\", got \"{}\"", look));
-  }
+  spec.look_side = t.get_enum_or<LookSide>(
+      "look_side", {{"right", LookSide::right}, {"left", LookSide::left}}, LookSide::right);
   if (parse_geo_track(t, spec)) return;  // latitude/longitude: ris/sensor/geo_track.h
   const bool endpoints = t.has("start") || t.has("end");
   const bool heading = t.has("heading") || t.has("near_edge_distance");
@@ -207,14 +201,9 @@ void parse_scan(std::optional<ConfigTable>& t, RadarParams& r, const std::string
       p.ring_spacing_m = get_positive(*t, "range_rings", Quantity::length, "m");
     }
     if (t->has("pixel")) p.scope_pixel_m = get_positive(*t, "pixel", Quantity::length, "m");
-    const std::string pres = t->get_string_or("presentation", "slant");
-    if (pres == "slant") {
-      p.presentation = PpiPresentation::slant;
-    } else if (pres == "ground") {
-      p.presentation = PpiPresentation::ground;
-    } else {
-      t->fail("presentation", fmt::format("expected \"slant\" or \"ground\", got \"{}\"", pres));
-    }
+    p.presentation = t->get_enum_or<PpiPresentation>(
+        "presentation", {{"slant", PpiPresentation::slant}, {"ground", PpiPresentation::ground}},
+        PpiPresentation::slant);
     t->finish();
   }
   if (p.scope_pixel_m <= 0.0) p.scope_pixel_m = r.range_bin_m;
@@ -227,20 +216,13 @@ void parse_scan(std::optional<ConfigTable>& t, RadarParams& r, const std::string
 }
 
 void parse_pattern(ConfigTable& t, ElevationPattern& p, double default_boresight_rad) {
-  const std::string shape = t.get_string_or("shape", "uniform");
-  if (shape == "uniform") {
-    p.kind = ElevationPattern::Kind::uniform;
-  } else if (shape == "sinc2") {
-    p.kind = ElevationPattern::Kind::sinc2;
-  } else if (shape == "gaussian") {
-    p.kind = ElevationPattern::Kind::gaussian;
-  } else if (shape == "table") {
-    p.kind = ElevationPattern::Kind::table;
-  } else {
-    t.fail("shape",
-           fmt::format("expected \"uniform\", \"sinc2\", \"gaussian\" or \"table\", got \"{}\"",
-                       shape));
-  }
+  using Kind = ElevationPattern::Kind;
+  p.kind = t.get_enum_or<Kind>("shape",
+                               {{"uniform", Kind::uniform},
+                                {"sinc2", Kind::sinc2},
+                                {"gaussian", Kind::gaussian},
+                                {"table", Kind::table}},
+                               Kind::uniform);
   if (p.kind == ElevationPattern::Kind::sinc2 || p.kind == ElevationPattern::Kind::gaussian) {
     p.beamwidth_rad = get_positive(t, "beamwidth", Quantity::angle, "rad");
     if (p.beamwidth_rad >= kPi) t.fail("beamwidth", "expected a beamwidth below 180 deg");
@@ -281,14 +263,9 @@ void parse_film(ConfigTable& t, FilmParams& f, GreytoneSwitches& sw, FadingLaw& 
   f.k2 = positive(t, "k_simulated", t.get_double_or("k_simulated", f.k2), "");
   f.m1 = positive(t, "m_reference", t.get_double_or("m_reference", f.m1), "");
   f.m2 = positive(t, "m_simulated", t.get_double_or("m_simulated", f.m2), "");
-  const std::string fading = t.get_string_or("fading", "exact");
-  if (fading == "exact") {
-    law = FadingLaw::exact_gamma;
-  } else if (fading == "seed") {
-    law = FadingLaw::seed_eq21;
-  } else {
-    t.fail("fading", fmt::format("expected \"exact\" or \"seed\", got \"{}\"", fading));
-  }
+  law = t.get_enum_or<FadingLaw>(
+      "fading", {{"exact", FadingLaw::exact_gamma}, {"seed", FadingLaw::seed_eq21}},
+      FadingLaw::exact_gamma);
   if (auto terms = t.subtable("terms")) {
     sw.transmit_power = terms->get_bool_or("transmit_power", true);
     sw.wavelength = terms->get_bool_or("wavelength", true);
@@ -358,6 +335,7 @@ void parse_reference(std::optional<ConfigTable>& t, const RadarParams& r, Refere
   if (t->has("area")) ref.area_m2 = get_area_m2(*t, "area");
   if (auto g = linear_or_db(*t, "gain")) ref.gain = *g;
   const std::string wl = one_of(*t, {"wavelength", "frequency"}, false);
+  ref.wavelength_given = !wl.empty();
   if (wl == "wavelength") ref.wavelength_m = get_positive(*t, "wavelength", Quantity::length, "m");
   if (wl == "frequency") {
     ref.wavelength_m =
@@ -377,47 +355,10 @@ void parse_reference(std::optional<ConfigTable>& t, const RadarParams& r, Refere
 
 }  // namespace
 
-RadarParams radar_from_toml(const toml::table& doc, const std::string& source_file) {
-  ConfigTable t(doc, source_file, "");
-  RadarParams r;
-  r.source_file = source_file;
-  r.name = t.get_string_or("name", "");
-
-  const std::string mode = t.get_string("mode");
-  if (mode == "slar") {
-    r.mode = RadarMode::slar;
-  } else if (mode == "sar") {
-    r.mode = RadarMode::sar;
-  } else if (mode == "ppi") {
-    r.mode = RadarMode::ppi;
-  } else {
-    t.fail("mode", fmt::format("expected \"slar\", \"sar\" or \"ppi\", got \"{}\"", mode));
-  }
-  const bool sar = r.mode == RadarMode::sar;
+// The slant-range window: near and far range and the number of whole bins
+// (r.range_bin_m set before).
+void parse_range_window(ConfigTable& t, RadarParams& r) {
   const bool ppi = r.mode == RadarMode::ppi;
-
-  r.frequency_hz = get_positive(t, "frequency", Quantity::frequency, "Hz");
-  try {
-    r.polarisation = parse_polarisation(t.get_string("polarisation"));
-  } catch (const std::invalid_argument& e) {
-    t.fail("polarisation", e.what());
-  }
-  // SAR: the range resolution comes from the chirp bandwidth, so the pulse
-  // width is optional; the [sar] table is read first for the default bin.
-  if (sar) {
-    if (t.has("pulse_width")) r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
-    auto st = t.subtable("sar");
-    if (!st) t.fail("sar", "mode = \"sar\" needs a [sar] table (bandwidth, antenna_length, ...)");
-    parse_sar(*st, r);
-  } else {
-    if (t.has("sar")) t.fail("sar", "a [sar] table needs mode = \"sar\"");
-    r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
-  }
-  const double default_bin_m =
-      sar ? r.sar.range_resolution_m : kSpeedOfLight_m_per_s * r.pulse_width_s / 2.0;
-  r.range_bin_m = t.get_quantity_or("range_bin", Quantity::length, default_bin_m);
-  positive(t, "range_bin", r.range_bin_m, "m");
-
   // Near range: R_near = c t_delay / 2 (MODEL.md section 2), or given.
   // A PPI sweep may start at zero range (a ground radar sees from its mast).
   const auto non_negative = [&](const char* key, Quantity q) {
@@ -468,6 +409,42 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
     if (bins > 1e6) t.fail(far_key, "more than 1000000 range bins");
     r.range_bins = static_cast<int>(bins);
   }
+}
+
+RadarParams radar_from_toml(const toml::table& doc, const std::string& source_file) {
+  ConfigTable t(doc, source_file, "");
+  RadarParams r;
+  r.source_file = source_file;
+  r.name = t.get_string_or("name", "");
+
+  r.mode = t.get_enum<RadarMode>(
+      "mode", {{"slar", RadarMode::slar}, {"sar", RadarMode::sar}, {"ppi", RadarMode::ppi}});
+  const bool sar = r.mode == RadarMode::sar;
+  const bool ppi = r.mode == RadarMode::ppi;
+
+  r.frequency_hz = get_positive(t, "frequency", Quantity::frequency, "Hz");
+  try {
+    r.polarisation = parse_polarisation(t.get_string("polarisation"));
+  } catch (const std::invalid_argument& e) {
+    t.fail("polarisation", e.what());
+  }
+  // SAR: the range resolution comes from the chirp bandwidth, so the pulse
+  // width is optional; the [sar] table is read first for the default bin.
+  if (sar) {
+    if (t.has("pulse_width")) r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
+    auto st = t.subtable("sar");
+    if (!st) t.fail("sar", "mode = \"sar\" needs a [sar] table (bandwidth, antenna_length, ...)");
+    parse_sar(*st, r);
+  } else {
+    if (t.has("sar")) t.fail("sar", "a [sar] table needs mode = \"sar\"");
+    r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
+  }
+  const double default_bin_m =
+      sar ? r.sar.range_resolution_m : kSpeedOfLight_m_per_s * r.pulse_width_s / 2.0;
+  r.range_bin_m = t.get_quantity_or("range_bin", Quantity::length, default_bin_m);
+  positive(t, "range_bin", r.range_bin_m, "m");
+
+  parse_range_window(t, r);
 
   // SAR: the real antenna's beamwidth defaults to lambda / L (lambda / (2
   // rho_a) when only the resolution is given); it sets the elevation-free
@@ -475,6 +452,7 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
   if (sar && !t.has("azimuth_beamwidth")) {
     const double length_m =
         r.sar.antenna_length_m > 0.0 ? r.sar.antenna_length_m : 2.0 * r.sar.azimuth_resolution_m;
+    r.beamwidth_antenna_length_m = length_m;  // followed by radar_at_band
     r.azimuth_beamwidth_rad = r.wavelength_m() / length_m;
   } else {
     r.azimuth_beamwidth_rad = get_positive(t, "azimuth_beamwidth", Quantity::angle, "rad");

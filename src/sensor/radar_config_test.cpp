@@ -1,5 +1,6 @@
 #include "ris/sensor/radar_config.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <string>
 
 #include "radar_test_util.h"
+#include "ris/io/config_table.h"
 #include "ris/sensor/elevation_gain.h"
 #include "ris/sensor/radar_derived.h"
 #include "ris/sensor/radar_json.h"
@@ -356,6 +358,63 @@ TEST(RadarJson, RecordsInputsDerivedAndSwitches) {
   EXPECT_NEAR(d["near_depression_rad"].get<double>(), deg_to_rad(19.983), 1e-4);
   EXPECT_EQ(d["range_bins"], 241);
   EXPECT_NO_THROW((void)j.dump());
+}
+
+}  // namespace
+}  // namespace ris
+
+namespace ris {
+namespace {
+
+// radar_at_band gives what the file gives with `frequency` and
+// `polarisation` replaced (the study used to rewrite the TOML that way): for
+// every shipped radar, and for a reference with its own wavelength, at two
+// bands. Exact: the same arithmetic on the same inputs.
+TEST(RadarAtBand, SameAsTheFileWithFrequencyAndPolarisationReplaced) {
+  std::vector<std::pair<std::string, toml::table>> docs;
+  for (const char* name :
+       {"seed-fig4-5.toml", "seed-fig4-6.toml", "seed-fig7.toml", "sar-x-band-stripmap.toml",
+        "ppi-ground-mast-30m.toml", "ppi-airborne-nav-10000ft.toml"}) {
+    docs.emplace_back(radar_file(name), parse_toml_file(radar_file(name)));
+  }
+  toml::table own_wavelength = toml::parse(kMinimal);
+  own_wavelength.insert_or_assign("reference", toml::table{{"wavelength", "0.05 m"}});
+  docs.emplace_back("own-wavelength.toml", own_wavelength);
+  for (const auto& [file, doc] : docs) {
+    const RadarParams base = radar_from_toml(doc, file);
+    for (const auto& [f_hz, pol] :
+         {std::pair{1.25e9, Polarisation::HV}, std::pair{13e9, Polarisation::VV}}) {
+      toml::table rewritten = doc;
+      rewritten.insert_or_assign("frequency", fmt::format("{:.12g} Hz", f_hz));
+      rewritten.insert_or_assign("polarisation", std::string(to_string(pol)));
+      const RadarParams want = radar_from_toml(rewritten, file);
+      const RadarParams got = radar_at_band(base, f_hz, pol);
+      EXPECT_EQ(got.frequency_hz, want.frequency_hz) << file;
+      EXPECT_EQ(got.polarisation, want.polarisation) << file;
+      EXPECT_EQ(got.reference.wavelength_m, want.reference.wavelength_m) << file;
+      EXPECT_EQ(got.azimuth_beamwidth_rad, want.azimuth_beamwidth_rad) << file;
+      EXPECT_EQ(radar_to_json(got).dump(), radar_to_json(want).dump()) << file;
+      EXPECT_EQ(derived_to_json(derive(got)).dump(), derived_to_json(derive(want)).dump()) << file;
+    }
+  }
+  // The reference's own wavelength stays; a SAR's lambda / L follows.
+  const RadarParams own = radar_from_toml(own_wavelength, "own.toml");
+  EXPECT_DOUBLE_EQ(radar_at_band(own, 1e9, Polarisation::HH).reference.wavelength_m, 0.05);
+  const RadarParams sar = load_radar(radar_file("sar-x-band-stripmap.toml"));
+  EXPECT_NEAR(radar_at_band(sar, 1e9, Polarisation::HH).azimuth_beamwidth_rad,
+              kSpeedOfLight_m_per_s / 1e9 / (2.0 * 7.5), 1e-15);
+}
+
+TEST(RadarAtBand, BeamwidthPast180DegreesNamesFileAndKey) {
+  RadarParams sar = load_radar(radar_file("sar-x-band-stripmap.toml"));
+  sar.beamwidth_antenna_length_m = 0.05;  // lambda / L > pi at 1 GHz (0.3 m / 0.05 m)
+  try {
+    radar_at_band(sar, 1e9, Polarisation::HH);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "azimuth_beamwidth");
+    EXPECT_NE(std::string(e.what()).find("sar-x-band-stripmap.toml"), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -3,12 +3,17 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <string_view>
+#include <vector>
 
 #include "ris/io/atomic_file.h"
+#include "ris/io/compression_preset.h"
 #include "ris/io/raster_io.h"
 #include "ris/sensor/radar_json.h"
 #include "ris/sim/run_metadata.h"
+#include "ris/util/concurrent_tasks.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -61,7 +66,15 @@ nlohmann::json ppi_metadata(const Scene& scene, const PpiSimulation& sim, const 
              {"speckled_power_bscope.tif", "float32 power after fading (W)"},
              {"mask_bscope.tif", "uint8 B-scope mask: 1 shadow, 2 layover, 4 no data"},
              {"metadata.json", "this file"}}}});
+  out["products"] = selected_products(out["products"], info.products);
   return out;
+}
+
+const std::vector<std::string_view>& ppi_product_stems() {
+  static const std::vector<std::string_view> stems = {
+      "ppi_scope",         "ppi_scope_power",       "ppi_scope_mask", "bscope",
+      "mean_power_bscope", "speckled_power_bscope", "mask_bscope"};
+  return stems;
 }
 
 void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene,
@@ -69,23 +82,14 @@ void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene
   StagedDirectory dir(out_dir);
   const SlarImage& b = sim.bscope;
   const PpiScopeGrid& sg = sim.scope_grid;
+  const int png_level = png_compression_level(info.compression);
+  const GeoTiffCompression float_tif = geotiff_compression(info.compression, true);
+  const GeoTiffCompression int_tif = geotiff_compression(info.compression, false);
   const RasterMetadata bmeta = {{"RIS_ROWS", "rays, clockwise from the scan start"},
                                 {"RIS_COLUMNS", "slant-range bins, near first"},
                                 {"RIS_NEAR_SLANT_RANGE_M", fmt::format("{:.6f}", b.range.near_m)},
                                 {"RIS_RANGE_BIN_M", fmt::format("{:.6f}", b.range.bin_m)},
                                 {"RIS_VERSION", RIS_VERSION}};
-  write_png_gray(dir.path("ppi_scope.png"), pic.scope_grey.data(), sg.size, sg.size);
-  write_png_gray(dir.path("bscope.png"), pic.bscope_grey.data(), b.bins, b.lines);
-  std::vector<float> mean(b.mean_power_w.begin(), b.mean_power_w.end());
-  for (std::size_t i = 0; i < mean.size(); ++i)
-    if (b.mask[i] & pixel_flag::kNoData) mean[i] = std::numeric_limits<float>::quiet_NaN();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  write_geotiff<float>(dir.path("mean_power_bscope.tif"), mean.data(), b.bins, b.lines, nullptr,
-                       nan, bmeta, "mean_power_w");
-  write_geotiff<float>(dir.path("speckled_power_bscope.tif"), pic.speckled_power_w.data(), b.bins,
-                       b.lines, nullptr, nan, bmeta, "speckled_power_w");
-  write_geotiff<std::uint8_t>(dir.path("mask_bscope.tif"), b.mask.data(), b.bins, b.lines, nullptr,
-                              std::nullopt, bmeta, "mask");
   // The ground presentation is a map: georeference it like the scene.
   const double half = 0.5 * sg.size * sg.pixel_m;
   const Georef georef{{sim.geometry.site_x_m - half, sg.pixel_m, 0.0, sim.geometry.site_y_m + half,
@@ -97,12 +101,50 @@ void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene
                                                                      : "radius = ground range"},
       {"RIS_PIXEL_M", fmt::format("{:.6f}", sg.pixel_m)},
       {"RIS_VERSION", RIS_VERSION}};
-  write_geotiff<float>(dir.path("ppi_scope_power.tif"), pic.scope_power_w.data(), sg.size, sg.size,
-                       scope_ref, nan, smeta, "speckled_power_w");
-  write_geotiff<std::uint8_t>(dir.path("ppi_scope_mask.tif"), pic.scope_mask.data(), sg.size,
-                              sg.size, scope_ref, std::nullopt, smeta, "mask");
-  write_text_file_atomic(dir.path("metadata.json"),
-                         ppi_metadata(scene, sim, pic, info).dump(2) + "\n");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // One task per file, run concurrently (each opens its own GDAL dataset).
+  std::vector<std::function<void()>> tasks;
+  const auto task = [&](std::string_view stem, std::function<void()> f) {
+    if (info.products.wants(stem)) tasks.push_back(std::move(f));
+  };
+  task("ppi_scope", [&] {
+    write_png_gray(dir.path("ppi_scope.png"), pic.scope_grey.data(), sg.size, sg.size, png_level);
+  });
+  task("bscope", [&] {
+    write_png_gray(dir.path("bscope.png"), pic.bscope_grey.data(), b.bins, b.lines, png_level);
+  });
+  task("mean_power_bscope", [&] {
+    std::vector<float> mean(b.mean_power_w.begin(), b.mean_power_w.end());
+    for (std::size_t i = 0; i < mean.size(); ++i)
+      if (b.mask[i] & pixel_flag::kNoData) mean[i] = std::numeric_limits<float>::quiet_NaN();
+    write_geotiff<float>(dir.path("mean_power_bscope.tif"), mean.data(), b.bins, b.lines, nullptr,
+                         nan, bmeta, "mean_power_w", BlockOrder::top_down, &float_tif);
+  });
+  task("speckled_power_bscope", [&] {
+    write_geotiff<float>(dir.path("speckled_power_bscope.tif"), pic.speckled_power_w.data(), b.bins,
+                         b.lines, nullptr, nan, bmeta, "speckled_power_w", BlockOrder::top_down,
+                         &float_tif);
+  });
+  task("mask_bscope", [&] {
+    write_geotiff<std::uint8_t>(dir.path("mask_bscope.tif"), b.mask.data(), b.bins, b.lines,
+                                nullptr, std::nullopt, bmeta, "mask", BlockOrder::top_down,
+                                &int_tif);
+  });
+  task("ppi_scope_power", [&] {
+    write_geotiff<float>(dir.path("ppi_scope_power.tif"), pic.scope_power_w.data(), sg.size,
+                         sg.size, scope_ref, nan, smeta, "speckled_power_w", BlockOrder::top_down,
+                         &float_tif);
+  });
+  task("ppi_scope_mask", [&] {
+    write_geotiff<std::uint8_t>(dir.path("ppi_scope_mask.tif"), pic.scope_mask.data(), sg.size,
+                                sg.size, scope_ref, std::nullopt, smeta, "mask",
+                                BlockOrder::top_down, &int_tif);
+  });
+  tasks.emplace_back([&] {
+    write_text_file_atomic(dir.path("metadata.json"),
+                           ppi_metadata(scene, sim, pic, info).dump(2) + "\n");
+  });
+  run_concurrently(tasks, info.threads);  // --threads bounds the writers too
   dir.commit();
 }
 

@@ -1,6 +1,7 @@
 #include "ris/sim/run_metadata.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <limits>
 
 #include "ris/sensor/radar_json.h"
@@ -55,6 +56,16 @@ json run_inputs_json(const SceneSummary& s, const RadarParams& radar,
       {"backscatter", {{"path", info.backscatter_path}, {"description", backscatter_description}}},
       {"seed", info.seed},
       {"threads", info.threads}};
+}
+
+nlohmann::json selected_products(const nlohmann::json& products,
+                                 const ProductSelection& selection) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [file, description] : products.items()) {
+    const std::string stem = std::filesystem::path(file).stem().string();
+    if (file == "metadata.json" || selection.wants(stem)) out[file] = description;
+  }
+  return out;
 }
 
 }  // namespace ris

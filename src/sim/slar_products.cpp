@@ -4,16 +4,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <type_traits>
 
 #include "ris/image/geocode.h"
 #include "ris/image/shadow_map.h"
 #include "ris/io/atomic_file.h"
+#include "ris/io/compression_preset.h"
 #include "ris/io/raster_io.h"
 #include "ris/scene/geo_frame.h"
 #include "ris/sensor/radar_json.h"
 #include "ris/sim/run_metadata.h"
 #include "ris/sim/sar_coherent.h"
+#include "ris/util/concurrent_tasks.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -227,7 +231,16 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
          "uint8 greytones on the scene grid (map geometry, scene CRS), 0 no pixel"},
         {"shadowmap.txt", "the seed's shadow map: 9 no data, 0 shadow, 1-8 count, # more"},
         {"metadata.json", "this file"}}}});
+  out["products"] = selected_products(out["products"], info.products);
   return out;
+}
+
+const std::vector<std::string_view>& slar_product_stems() {
+  static const std::vector<std::string_view> stems = {
+      "slant_range",   "ground_range", "mean_power_slant",    "speckled_power_slant",
+      "mask_slant",    "scene_mask",   "local_incidence_deg", "geocoded_power",
+      "geocoded_grey", "shadowmap"};
+  return stems;
 }
 
 void write_slar_products(const std::filesystem::path& out_dir, const Scene& scene,
@@ -235,47 +248,78 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
                          const SlarRunInfo& info, const json& extra_metadata) {
   StagedDirectory dir(out_dir);
   const SlarImage& img = sim.image;
+  const ProductSelection& want = info.products;
+  const int png_level = png_compression_level(info.compression);
+  const GeoTiffCompression float_tif = geotiff_compression(info.compression, true);
+  const GeoTiffCompression int_tif = geotiff_compression(info.compression, false);
+  // One task per file, run concurrently (each opens its own GDAL dataset),
+  // the largest first; every file is complete before the folder commits.
+  std::vector<std::function<void()>> tasks;
   // The pictures: PNG, or a tiled GeoTIFF when too large for one.
   const auto picture = [&](const std::string& stem, const std::uint8_t* grey, int cols, int rows) {
-    const std::string file = picture_file(stem, cols, rows, info.max_png_pixels);
-    if (file.ends_with(".png")) {
-      write_png_gray(dir.path(file), grey, cols, rows);
-    } else {
-      const SlarRasterSpec spec = slar_raster_spec(file, img);
-      write_geotiff(dir.path(file), grey, cols, rows, nullptr, spec.nodata, spec.metadata,
-                    spec.band);
-    }
+    if (!want.wants(stem)) return;
+    tasks.emplace_back([&, stem, grey, cols, rows] {
+      const std::string file = picture_file(stem, cols, rows, info.max_png_pixels);
+      if (file.ends_with(".png")) {
+        write_png_gray(dir.path(file), grey, cols, rows, png_level);
+      } else {
+        const SlarRasterSpec spec = slar_raster_spec(file, img);
+        write_geotiff(dir.path(file), grey, cols, rows, nullptr, spec.nodata, spec.metadata,
+                      spec.band, BlockOrder::top_down, &int_tif);
+      }
+    });
   };
-  picture("slant_range", pic.slant_grey.data(), img.bins, img.lines);
-  picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines);
-  // No-data pixels are NaN in the power rasters (the files' no-data value).
-  std::vector<float> mean(img.mean_power_w.begin(), img.mean_power_w.end());
-  for (std::size_t i = 0; i < mean.size(); ++i)
-    if (img.mask[i] & pixel_flag::kNoData) mean[i] = std::numeric_limits<float>::quiet_NaN();
   const Georef georef{scene.geotransform(), scene.crs_wkt};
   const auto write = [&](const std::string& file, const auto* data, int cols, int rows,
                          BlockOrder order = BlockOrder::top_down) {
     const SlarRasterSpec spec = slar_raster_spec(file, img);
+    using T = std::remove_cvref_t<decltype(*data)>;
     write_geotiff(dir.path(file), data, cols, rows, spec.georeferenced ? &georef : nullptr,
-                  spec.nodata, spec.metadata, spec.band, order);
+                  spec.nodata, spec.metadata, spec.band, order,
+                  std::is_floating_point_v<T> ? &float_tif : &int_tif);
   };
-  write("mean_power_slant.tif", mean.data(), img.bins, img.lines);
-  write("speckled_power_slant.tif", pic.speckled_power_w.data(), img.bins, img.lines);
-  write("mask_slant.tif", img.mask.data(), img.bins, img.lines);
+  const auto task = [&](const std::string& stem, std::function<void()> f) {
+    if (want.wants(stem)) tasks.push_back(std::move(f));
+  };
+  // The scene-grid products first (the scene is usually the largest grid).
+  task("geocoded_power", [&] {
+    write("geocoded_power.tif",
+          geocode_slant_image(scene, sim.track, img, pic.speckled_power_w).data(), scene.cols,
+          scene.rows);
+  });
+  task("geocoded_grey", [&] {
+    write("geocoded_grey.tif", geocode_slant_grey(scene, sim.track, img, pic.slant_grey).data(),
+          scene.cols, scene.rows);
+  });
   // Scene-grid maps in the order a streamed run computes them (line by line).
   const BlockOrder line_order = scene_line_order(sim.track);
-  write("scene_mask.tif", sim.scene_maps.mask.data(), scene.cols, scene.rows, line_order);
-  write("local_incidence_deg.tif", sim.scene_maps.local_incidence_deg.data(), scene.cols,
-        scene.rows, line_order);
-  // The image on the scene grid, georeferenced like the scene (ris/image/geocode.h).
-  write("geocoded_power.tif",
-        geocode_slant_image(scene, sim.track, img, pic.speckled_power_w).data(), scene.cols,
-        scene.rows);
-  write("geocoded_grey.tif", geocode_slant_grey(scene, sim.track, img, pic.slant_grey).data(),
-        scene.cols, scene.rows);
-  write_text_file_atomic(dir.path("shadowmap.txt"), shadow_map_text(img));
-  write_text_file_atomic(dir.path("metadata.json"),
-                         slar_metadata(scene, sim, pic, info, extra_metadata).dump(2) + "\n");
+  task("local_incidence_deg", [&] {
+    write("local_incidence_deg.tif", sim.scene_maps.local_incidence_deg.data(), scene.cols,
+          scene.rows, line_order);
+  });
+  task("scene_mask", [&] {
+    write("scene_mask.tif", sim.scene_maps.mask.data(), scene.cols, scene.rows, line_order);
+  });
+  task("mean_power_slant", [&] {
+    // No-data pixels are NaN in the power rasters (the files' no-data value).
+    std::vector<float> mean(img.mean_power_w.begin(), img.mean_power_w.end());
+    for (std::size_t i = 0; i < mean.size(); ++i)
+      if (img.mask[i] & pixel_flag::kNoData) mean[i] = std::numeric_limits<float>::quiet_NaN();
+    write("mean_power_slant.tif", mean.data(), img.bins, img.lines);
+  });
+  task("speckled_power_slant", [&] {
+    write("speckled_power_slant.tif", pic.speckled_power_w.data(), img.bins, img.lines);
+  });
+  picture("slant_range", pic.slant_grey.data(), img.bins, img.lines);
+  picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines);
+  task("mask_slant", [&] { write("mask_slant.tif", img.mask.data(), img.bins, img.lines); });
+  task("shadowmap",
+       [&] { write_text_file_atomic(dir.path("shadowmap.txt"), shadow_map_text(img)); });
+  tasks.emplace_back([&] {
+    write_text_file_atomic(dir.path("metadata.json"),
+                           slar_metadata(scene, sim, pic, info, extra_metadata).dump(2) + "\n");
+  });
+  run_concurrently(tasks, info.threads);  // --threads bounds the writers too
   dir.commit();
 }
 

@@ -26,7 +26,7 @@
 #include "ris/io/atomic_file.h"
 #include "ris/io/gdal_util.h"
 #include "ris/io/geotiff_block_writer.h"
-#include "ris/io/scene_stream.h"
+#include "ris/scene/scene_stream.h"
 #include "ris/sensor/radar_derived.h"
 #include "ris/sim/radiometry_setup.h"
 #include "ris/sim/slar_line_blocks.h"

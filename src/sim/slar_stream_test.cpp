@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "ris/io/scene_io.h"
 #include "ris/perf/bench_setup.h"
+#include "ris/scene/scene_io.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"

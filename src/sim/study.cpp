@@ -11,7 +11,7 @@
 #include "ris/image/contact_sheet.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/raster_io.h"
-#include "ris/sensor/radar_config.h"
+#include "ris/sensor/radar_params.h"
 #include "ris/sim/slar_products.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
@@ -125,12 +125,8 @@ void check_study_bands(const std::vector<StudyBand>& bands, const Sigma0Source& 
   }
 }
 
-RadarParams radar_for_band(const toml::table& radar_doc, const std::string& radar_file,
-                           const StudyBand& band) {
-  toml::table doc = radar_doc;
-  doc.insert_or_assign("frequency", fmt::format("{:.12g} Hz", band.frequency_hz));
-  doc.insert_or_assign("polarisation", std::string(to_string(band.polarisation)));
-  return radar_from_toml(doc, radar_file);
+RadarParams radar_for_band(const RadarParams& radar, const StudyBand& band) {
+  return radar_at_band(radar, band.frequency_hz, band.polarisation);
 }
 
 std::vector<std::int32_t> pure_category_map(const SlarSimulation& sim) {
@@ -306,8 +302,7 @@ void choose_best(StudyResult& r) {
   }
 }
 
-StudyResult run_study(const Scene& scene, const toml::table& radar_doc,
-                      const std::string& radar_file, const Sigma0Source& sigma0,
+StudyResult run_study(const Scene& scene, const RadarParams& base_radar, const Sigma0Source& sigma0,
                       const std::string& backscatter_file, const std::vector<StudyBand>& bands,
                       const StudyOptions& options) {
   if (bands.empty()) throw InputError("", "--bands", "no bands to study");
@@ -334,7 +329,7 @@ StudyResult run_study(const Scene& scene, const toml::table& radar_doc,
         options.progress(fmt::format("{} ({})", band.label(), stage), (double(i) + f) / n_bands);
       };
     }
-    const RadarParams radar = radar_for_band(radar_doc, radar_file, band);
+    const RadarParams radar = radar_for_band(base_radar, band);
     const SlarSimulation sim = simulate_slar(scene, radar, sigma0, slar);
     const SlarPictures pic = render_slar(sim, options.seed);
     // The geometry, hence the attribution, is the same in every band.
@@ -356,7 +351,7 @@ StudyResult run_study(const Scene& scene, const toml::table& radar_doc,
         p.pairs.push_back(study_contrast(p.stats[a], p.stats[b]));
       }
     }
-    SlarRunInfo info{options.scene_path, radar_file, backscatter_file, options.seed, 0};
+    SlarRunInfo info{options.scene_path, base_radar.source_file, backscatter_file, options.seed, 0};
     p.simulation = slar_metadata(scene, sim, pic, info);
     result.panels.push_back(std::move(p));
   }

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "ris/backscatter/library.h"
+#include "ris/sensor/radar_config.h"
 #include "ris/util/error.h"
 #include "test_util.h"
 
@@ -192,7 +193,7 @@ gamma_db = -9.0
 struct Synthetic {
   TempDir dir;
   std::string library = (dir / "three.toml").string();
-  toml::table radar = toml::parse(kRadar);
+  RadarParams radar = radar_from_toml(toml::parse(kRadar), "radar.toml");
   Synthetic() { write_file(library, kLibrary); }
 };
 
@@ -201,7 +202,7 @@ TEST(Study, SyntheticSceneTheKnownBandAndPairWin) {
   const auto sigma0 = load_sigma0_source(in.library);
   const Scene scene = three_blocks();
   const auto bands = parse_study_bands("1.25 GHz:HH, 8.6 GHz:HH, 13 GHz:HH", "--bands");
-  const StudyResult r = run_study(scene, in.radar, "radar.toml", *sigma0, in.library, bands);
+  const StudyResult r = run_study(scene, in.radar, *sigma0, in.library, bands);
   ASSERT_EQ(r.panels.size(), 3u);
   EXPECT_EQ(r.categories, (std::vector<std::uint16_t>{1, 2, 3}));
   EXPECT_EQ(r.best_panel, 1);
@@ -238,7 +239,7 @@ TEST(Study, AttributionLeavesBlockBoundariesOut) {
   const Synthetic in;
   const auto sigma0 = load_sigma0_source(in.library);
   const Scene scene = three_blocks();
-  const RadarParams radar = radar_for_band(in.radar, "radar.toml", {8.6e9, Polarisation::HH});
+  const RadarParams radar = radar_for_band(in.radar, {8.6e9, Polarisation::HH});
   EXPECT_DOUBLE_EQ(radar.frequency_hz, 8.6e9);
   SlarOptions keep;
   keep.keep_geometry = true;  // pure_category_map reads the per-sample geometry
@@ -272,7 +273,7 @@ TEST(Study, BandOutsideTheLibraryNamesBandAndCategory) {
   const Scene scene = three_blocks();
   const auto bands = parse_study_bands("8.6 GHz:HH, 20 GHz:VV", "--bands");
   const std::string e =
-      input_error([&] { run_study(scene, in.radar, "radar.toml", *sigma0, in.library, bands); });
+      input_error([&] { run_study(scene, in.radar, *sigma0, in.library, bands); });
   EXPECT_NE(e.find("20 GHz VV"), std::string::npos) << e;
   EXPECT_NE(e.find("grass"), std::string::npos) << e;
   EXPECT_NE(e.find("--bands"), std::string::npos) << e;

@@ -21,8 +21,8 @@
 #include <limits>
 #include <vector>
 
+#include "ris/geometry/slant_range_bins.h"
 #include "ris/geometry/slar_geometry.h"
-#include "ris/image/slar_image.h"
 #include "ris/scene/scene.h"
 #include "ris/util/default_init_allocator.h"
 #include "ris/util/units.h"

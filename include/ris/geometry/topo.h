@@ -61,11 +61,12 @@ struct TopoLayers {
   std::vector<float> simulated_amplitude;       // sqrt(beta0) of a Muhleman surface
   // Statistics of the run.
   int oversample = 1;
-  std::size_t dem_cells = 0;   // DEM cells placed by the DEM pass
-  std::size_t dem_facets = 0;  // geo2rdr evaluations (cells x oversample^2)
-  double radar_seconds = 0.0, dem_seconds = 0.0;
-  std::size_t unconverged = 0;  // bins whose rdr2geo did not converge (no data)
-  double beta_area_m2 = 0.0;    // slant range spacing x mid-swath ground azimuth spacing
+  std::size_t dem_cells = 0;                      // DEM cells placed by the DEM pass
+  std::size_t dem_facets = 0;                     // geo2rdr evaluations (cells x oversample^2)
+  double radar_seconds = 0.0, dem_seconds = 0.0;  // wall clock
+  double dem_cpu_seconds = 0.0;                   // CPU time of all threads
+  std::size_t unconverged = 0;                    // bins whose rdr2geo did not converge (no data)
+  double beta_area_m2 = 0.0;  // slant range spacing x mid-swath ground azimuth spacing
 };
 
 // Per-line geometry of one radar line: what a line source of the simulation

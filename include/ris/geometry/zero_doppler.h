@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "ris/sensor/orbit.h"
 #include "ris/sensor/radar_grid.h"
@@ -61,6 +62,7 @@ struct ZeroDopplerFrame {
   Vec3 nadir;         // c1
   Vec3 side;          // c2
   Vec3 nadir_normal;  // the ellipsoid normal under the sensor (up)
+  Geodetic sensor_geodetic;
 
   ZeroDopplerFrame(const OrbitState& s, LookSide look, const Ellipsoid& e);
   Vec3 point(double range_m, double look_rad) const {
@@ -69,6 +71,12 @@ struct ZeroDopplerFrame {
   // The look angle at which a sphere of radius rho_m about the Earth's centre
   // is reached at slant range range_m (law of cosines), for initial guesses.
   double look_on_sphere(double range_m, double rho_m) const;
+  // The slant range at which the ray at look angle look_rad meets the
+  // ellipsoid inflated by height_m (axes a + h, b + h: within millimetres of
+  // the surface at height h for the heights of terrain), the nearer root of
+  // |D (p + t u)|^2 = 1, D = diag(1/(a+h), 1/(a+h), 1/(b+h)); NaN when the
+  // ray misses it.
+  double range_to_ellipsoid(double look_rad, const Ellipsoid& e, double height_m) const;
 };
 
 struct GroundPoint {
@@ -85,14 +93,19 @@ struct GroundPoint {
 // lookup inlines into the loop (no virtual call per sample).
 template <typename HeightFn>
 GroundPoint rdr2geo(const ZeroDopplerFrame& f, const Ellipsoid& e, double range_m,
-                    HeightFn&& height_fn, double h_guess_m, double tol_m = 1e-5,
-                    int max_iter = 40) {
+                    HeightFn&& height_fn, double h_guess_m,
+                    double look_guess_rad = std::numeric_limits<double>::quiet_NaN(),
+                    double tol_m = 1e-5, int max_iter = 40) {
   GroundPoint out;
-  // Initial look angle: the sphere through the ellipsoid point under the
-  // sensor, raised by the guessed height.
-  const Geodetic sub = e.to_geodetic(f.sensor_m);
-  const double rho = e.to_ecef({sub.lat_rad, sub.lon_rad, h_guess_m}).norm();
-  double th0 = f.look_on_sphere(range_m, rho);
+  // Initial look angle: the caller's (a neighbouring pixel's), else the
+  // sphere through the ellipsoid point under the sensor raised by the
+  // guessed height.
+  double th0 = look_guess_rad;
+  if (!std::isfinite(th0)) {
+    const Geodetic& sub = f.sensor_geodetic;
+    const double rho = e.to_ecef({sub.lat_rad, sub.lon_rad, h_guess_m}).norm();
+    th0 = f.look_on_sphere(range_m, rho);
+  }
   // g(theta) = ellipsoidal height of X(theta) - model height there.
   const auto g = [&](double th, GroundPoint& gp) {
     gp.ecef_m = f.point(range_m, th);

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "ris/backscatter/sigma0_lut.h"
+#include "ris/geometry/slant_range_bins.h"
 #include "ris/geometry/slar_geometry.h"
 #include "ris/util/default_init_allocator.h"
 #include "ris/util/units.h"
@@ -51,15 +52,6 @@ struct PointReturn {
   double slant_range_m = 0.0;
   double look_rad = 0.0;  // look angle from nadir, for the elevation gain
   double rcs_m2 = 0.0;
-};
-
-// Slant-range bins: bin k holds near_m + k bin_m <= R < near_m + (k + 1) bin_m.
-struct SlantRangeBins {
-  double near_m = 0.0;
-  double bin_m = 0.0;
-  int count = 0;
-  double centre_m(int k) const { return near_m + (k + 0.5) * bin_m; }
-  double far_m() const { return near_m + count * bin_m; }
 };
 
 struct SlarImagingParams {

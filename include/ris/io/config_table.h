@@ -16,6 +16,8 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -23,6 +25,14 @@
 #include "ris/util/units.h"
 
 namespace ris {
+
+// An enum's values as written in a file, each with its text: {"slar",
+// RadarMode::slar}, ...
+template <typename E>
+using EnumChoices = std::initializer_list<std::pair<std::string_view, E>>;
+
+// The allowed texts for a message: "\"a\", \"b\" or \"c\"".
+std::string quoted_alternatives(const std::vector<std::string_view>& texts);
 
 // Parses a TOML file; a syntax error becomes an InputError with line/column.
 toml::table parse_toml_file(const std::string& path);
@@ -49,6 +59,17 @@ class ConfigTable {
   // An array of numbers (or quantities).
   std::vector<double> get_double_array(const std::string& key);
   std::vector<double> get_quantity_array(const std::string& key, Quantity q);
+
+  // One of a fixed set of strings, as its enum value; anything else throws
+  // InputError "expected \"a\", \"b\" or \"c\", got \"x\"".
+  template <typename E>
+  E get_enum(const std::string& key, EnumChoices<E> choices) {
+    return enum_from(key, get_string(key), choices);
+  }
+  template <typename E>
+  E get_enum_or(const std::string& key, EnumChoices<E> choices, E fallback) {
+    return has(key) ? get_enum(key, choices) : fallback;
+  }
 
   // Optional values: return the default (or nullopt) when absent.
   double get_double_or(const std::string& key, double fallback);
@@ -80,6 +101,15 @@ class ConfigTable {
 
  private:
   const toml::node& require(const std::string& key);
+  template <typename E>
+  E enum_from(const std::string& key, const std::string& text, EnumChoices<E> choices) const {
+    std::vector<std::string_view> texts;
+    for (const auto& [t, value] : choices) {
+      if (t == text) return value;
+      texts.push_back(t);
+    }
+    fail(key, "expected " + quoted_alternatives(texts) + ", got \"" + text + "\"");
+  }
 
   const toml::table* table_;
   std::string file_;

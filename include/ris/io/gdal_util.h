@@ -13,8 +13,14 @@ class OGRSpatialReference;
 namespace ris {
 
 // Registers GDAL's drivers once (thread-safe) and routes GDAL's own error
-// messages to spdlog at debug level (ris reports errors itself).
+// messages to spdlog at debug level (ris reports errors itself). For
+// opening a raster of any format.
 void ensure_gdal_registered();
+// Only what writing products and handling CRSs need: the error routing and
+// the GTiff, PNG and MEM drivers. Registering every driver costs some 8 ms
+// of CPU (docs/performance.md, "Whole process") that a run reading no raster
+// (a scene description) need not pay; ensure_gdal_registered adds the rest.
+void ensure_gdal_writers_registered();
 
 struct GdalCloser {
   void operator()(void* ds) const {

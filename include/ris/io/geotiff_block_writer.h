@@ -35,15 +35,19 @@
 namespace ris {
 
 // Compression of the tiles (GDAL GTiff creation options). The products use
-// the defaults: DEFLATE (readable everywhere) at level 1, which on ris's
-// rasters is 3 times faster than level 6 for 3% more bytes, with GDAL's
-// compression threads (the bytes do not depend on them: tested). Big scene
-// files use ZSTD with the floating-point predictor.
+// the defaults: ZSTD level 1 without a predictor, measured on ris's products
+// (docs/performance.md, "Product writing") 1.7x (standard scene) to 4x (a
+// 2048 x 2048 scene) faster than DEFLATE level 1 for the same bytes within
+// 1% (predictors made the noisy power rasters larger); read by GDAL 2.3 and
+// later (QGIS, rasterio, ISCE3). GDAL's compression threads (the bytes do
+// not depend on them: tested). Big scene files use ZSTD with the
+// floating-point predictor. `ris simulate --compress` chooses others
+// (ris/io/compression_preset.h).
 struct GeoTiffCompression {
-  std::string method = "DEFLATE";  // COMPRESS=
-  int level = 1;                   // ZLEVEL= (DEFLATE) or ZSTD_LEVEL= (ZSTD)
-  int predictor = 1;               // PREDICTOR= (1 none, 2 integer, 3 floating point)
-  bool all_threads = true;         // NUM_THREADS=ALL_CPUS
+  std::string method = "ZSTD";  // COMPRESS=
+  int level = 1;                // ZLEVEL= (DEFLATE) or ZSTD_LEVEL= (ZSTD)
+  int predictor = 1;            // PREDICTOR= (1 none, 2 integer, 3 floating point)
+  bool all_threads = true;      // NUM_THREADS=ALL_CPUS
 };
 
 template <typename T>

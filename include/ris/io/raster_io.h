@@ -1,7 +1,8 @@
 // Writing rasters through GDAL: GeoTIFF products and PNG pictures.
 //
 // Every writer is atomic (temporary name, then rename). GeoTIFFs are tiled
-// and DEFLATE-compressed; PNGs are made through GDAL's PNG driver from an
+// and compressed (ZSTD level 1 unless told: ris/io/geotiff_block_writer.h);
+// PNGs are made through GDAL's PNG driver from an
 // in-memory dataset.
 //
 // Example:
@@ -18,6 +19,8 @@
 #include <vector>
 
 namespace ris {
+
+struct GeoTiffCompression;  // ris/io/geotiff_block_writer.h
 
 // Georeferencing of a raster: a GDAL geotransform and a CRS (WKT, may be empty).
 struct Georef {
@@ -43,12 +46,14 @@ struct BandView {
 enum class BlockOrder { top_down, bottom_up, left_right, right_left };
 
 // Single-band GeoTIFF of float, uint8_t, uint16_t or int32_t samples.
-// georef may be null (no georeferencing: pixel coordinates).
+// georef may be null (no georeferencing: pixel coordinates); compression
+// null: GeoTiffCompression{}.
 template <typename T>
 void write_geotiff(const std::filesystem::path& path, const T* data, int cols, int rows,
                    const Georef* georef, std::optional<double> nodata = std::nullopt,
                    const RasterMetadata& metadata = {}, const std::string& band_description = "",
-                   BlockOrder order = BlockOrder::top_down);
+                   BlockOrder order = BlockOrder::top_down,
+                   const GeoTiffCompression* compression = nullptr);
 
 // Multi-band GeoTIFF, every band of type T.
 template <typename T>
@@ -57,17 +62,25 @@ void write_geotiff_bands(const std::filesystem::path& path, const std::vector<Ba
                          std::optional<double> nodata = std::nullopt,
                          const RasterMetadata& metadata = {});
 
-// 8-bit greyscale PNG (0 black, 255 white).
-void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols,
-                    int rows);
+// PNG zlib level when none is given: 1, measured faster than GDAL's default
+// 6 (3x on the standard scene's pictures) and smaller (GDAL's row filters
+// leave little for the higher levels; docs/performance.md, "Product
+// writing").
+inline constexpr int kDefaultPngLevel = 1;
+
+// 8-bit greyscale PNG (0 black, 255 white); zlevel: zlib level 1 (fastest)
+// to 9.
+void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows,
+                    int zlevel = kDefaultPngLevel);
 // 8-bit greyscale PNG of a one-band Byte raster file (e.g. a GeoTIFF written
 // block by block, ris/io/geotiff_block_writer.h): GDAL reads the source row
 // by row, so memory stays bounded; the same bytes as write_png_gray of the
 // same pixels.
 void write_png_gray_from_raster(const std::filesystem::path& path,
-                                const std::filesystem::path& source);
+                                const std::filesystem::path& source, int zlevel = kDefaultPngLevel);
 // 8-bit RGB PNG from interleaved r,g,b samples (cols*rows*3).
-void write_png_rgb(const std::filesystem::path& path, const std::uint8_t* rgb, int cols, int rows);
+void write_png_rgb(const std::filesystem::path& path, const std::uint8_t* rgb, int cols, int rows,
+                   int zlevel = kDefaultPngLevel);
 
 // A raster read back as float64, for tests and small tools.
 struct RasterF64 {

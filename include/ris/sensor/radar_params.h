@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "ris/backscatter/polarisation.h"
+#include "ris/sensor/polarisation.h"
 
 namespace ris {
 
@@ -80,7 +80,10 @@ struct ReferenceCell {
   double area_m2 = 0.0;           // dA_1
   double gain = 1.0;              // G_1 (one-way, linear)
   double wavelength_m = 0.0;      // lambda_1
-  double range_m = 0.0;           // R_1
+  // The file gave wavelength or frequency: lambda_1 stays when the radar is
+  // retuned (radar_at_band); otherwise it is the radar's own wavelength.
+  bool wavelength_given = false;
+  double range_m = 0.0;  // R_1
   // Added (backward compatible): P_ref given directly instead of through the
   // factors above (the factors still serve switched-off terms).
   std::optional<double> mean_power_w;
@@ -164,6 +167,9 @@ struct RadarParams {
   double range_bin_m = 0.0;            // dr, default c tau / 2
   int range_bins = 0;                  // floor((far - near) / dr): whole bins only
   double azimuth_beamwidth_rad = 0.0;  // phi
+  // SAR without azimuth_beamwidth: phi = lambda / this length (the antenna
+  // length, or 2 rho_a), recomputed by radar_at_band; 0 when phi was given.
+  double beamwidth_antenna_length_m = 0.0;
   ElevationPattern elevation_pattern;
   double transmit_power_w = 0.0;  // P_t
   double peak_gain = 1.0;         // boresight one-way gain (linear), scales G_e
@@ -184,5 +190,13 @@ struct RadarParams {
 
   double wavelength_m() const;
 };
+
+// The radar at another frequency and polarisation, as if its file said so:
+// the defaults that follow the wavelength (the reference cell's lambda_1, a
+// SAR's real-antenna beamwidth lambda / L) follow it, everything the file
+// gave stays. Throws InputError (naming the radar file) when the retuned
+// beamwidth reaches 180 deg. The frequency/polarisation study runs each band
+// through this (ris/sim/study.h).
+RadarParams radar_at_band(const RadarParams& radar, double frequency_hz, Polarisation polarisation);
 
 }  // namespace ris

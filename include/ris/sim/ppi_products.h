@@ -18,6 +18,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -30,6 +32,11 @@ namespace ris {
 nlohmann::json ppi_metadata(const Scene& scene, const PpiSimulation& sim, const PpiPictures& pic,
                             const SlarRunInfo& info);
 
+// The product stems of a PPI run (ProductSelection; docs/outputs.md).
+const std::vector<std::string_view>& ppi_product_stems();
+
+// Writes the products info.products selects (all by default) with
+// info.compression, concurrently.
 void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene,
                         const PpiSimulation& sim, const PpiPictures& pic, const SlarRunInfo& info);
 

@@ -17,7 +17,7 @@
 
 #include "ris/scene/scene.h"
 #include "ris/sensor/radar_params.h"
-#include "ris/sim/slar_products.h"
+#include "ris/sim/run_info.h"
 
 namespace ris {
 
@@ -40,5 +40,9 @@ nlohmann::json run_inputs_json(const SceneSummary& scene, const RadarParams& rad
                                const std::vector<std::uint16_t>& categories,
                                const std::vector<std::string>& category_names,
                                const std::string& backscatter_description, const SlarRunInfo& info);
+
+// metadata.json's "products" (file -> description) with only the files of
+// the selected products (and metadata.json itself).
+nlohmann::json selected_products(const nlohmann::json& products, const ProductSelection& selection);
 
 }  // namespace ris

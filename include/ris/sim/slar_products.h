@@ -22,6 +22,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <optional>
 
@@ -29,28 +31,15 @@
 
 #include "ris/io/raster_io.h"
 #include "ris/scene/scene.h"
+#include "ris/sim/run_info.h"
 #include "ris/sim/slar_simulation.h"
 
 namespace ris {
 
-// The pictures (slant_range, ground_range) are PNG up to kMaxPngPixels
-// pixels and tiled compressed GeoTIFFs of the same greytones above (a PNG is
-// one zlib stream: slow to write and to open at that size, where a tiled
-// GeoTIFF opens at any zoom in a GIS). picture_file gives the file name.
-inline constexpr std::int64_t kMaxPngPixels = std::int64_t(1) << 28;  // 268 M, 16384^2
+// The file name of a picture `stem` of cols x rows pixels: .png up to
+// max_png_pixels, .tif above (kMaxPngPixels, ris/sim/run_info.h).
 std::string picture_file(const std::string& stem, int cols, int rows,
                          std::int64_t max_png_pixels = kMaxPngPixels);
-
-// Where the inputs came from, for metadata.json.
-struct SlarRunInfo {
-  std::string scene_path;
-  std::string radar_path;
-  std::string backscatter_path;
-  std::uint64_t seed = 0;
-  int threads = 0;
-  // Pictures larger than this are GeoTIFFs (picture_file; tests lower it).
-  std::int64_t max_png_pixels = kMaxPngPixels;
-};
 
 // metadata.json's content.
 // extra (added, backward compatible): merged into the top level (SAR:
@@ -83,6 +72,11 @@ SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img);
 // down otherwise.
 BlockOrder scene_line_order(const Track& track);
 
+// The product stems of a SLAR or SAR run (ProductSelection; docs/outputs.md).
+const std::vector<std::string_view>& slar_product_stems();
+
+// Writes the products info.products selects (all by default) with
+// info.compression, concurrently (one thread per file at a time).
 void write_slar_products(const std::filesystem::path& out_dir, const Scene& scene,
                          const SlarSimulation& sim, const SlarPictures& pictures,
                          const SlarRunInfo& info,

@@ -36,8 +36,8 @@
 //
 // Example:
 //   auto bands = ris::parse_study_bands("1.25 GHz:HH, 8.6 GHz:VV", "--bands");
-//   ris::StudyResult r = ris::run_study(scene, radar_doc, "radar.toml", *sigma0,
-//                                       "lib.toml", bands, 1);
+//   ris::StudyResult r = ris::run_study(scene, ris::load_radar("radar.toml"), *sigma0,
+//                                       "lib.toml", bands);
 //   ris::write_study_products("study", r, info);
 #pragma once
 
@@ -49,7 +49,6 @@
 #include <string_view>
 #include <vector>
 
-#include <toml++/toml.h>
 #include <nlohmann/json.hpp>
 
 #include "ris/backscatter/polarisation.h"
@@ -90,9 +89,10 @@ void check_study_bands(const std::vector<StudyBand>& bands, const Sigma0Source& 
                        const std::vector<std::uint16_t>& categories,
                        const std::string& backscatter_file);
 
-// The radar document with `frequency` and `polarisation` replaced, parsed.
-RadarParams radar_for_band(const toml::table& radar_doc, const std::string& radar_file,
-                           const StudyBand& band);
+// The radar at the band's frequency and polarisation (radar_at_band,
+// ris/sensor/radar_params.h): what its file would give with `frequency` and
+// `polarisation` replaced.
+RadarParams radar_for_band(const RadarParams& radar, const StudyBand& band);
 
 // lines x bins: the category a slant-range pixel is attributed to, or -1
 // (see the header comment).
@@ -153,8 +153,8 @@ struct StudyOptions {
 
 // Runs the study. Throws InputError for bad input (see check_study_bands and
 // simulate_slar).
-StudyResult run_study(const Scene& scene, const toml::table& radar_doc,
-                      const std::string& radar_file, const Sigma0Source& sigma0,
+// radar: as loaded (its source_file is named in each panel's metadata).
+StudyResult run_study(const Scene& scene, const RadarParams& radar, const Sigma0Source& sigma0,
                       const std::string& backscatter_file, const std::vector<StudyBand>& bands,
                       const StudyOptions& options = {});
 

@@ -32,12 +32,10 @@ SoilPermittivity read_soil_permittivity(ConfigTable& params, const std::string& 
   }
   std::optional<ConfigTable> t = params.subtable(key);
   if (!t) params.fail(key, "expected \"eps' - eps''j\" (e.g. \"15 - 4j\") or a dielectric table");
-  const std::string name = t->get_string("model");
-  const std::optional<DielectricModel> model = parse_dielectric_model(name);
-  if (!model) {
-    t->fail("model", "unknown dielectric model \"" + name +
-                         "\" (known: dobson1985, hallikainen1985, mironov2009)");
-  }
+  const DielectricModel model =
+      t->get_enum<DielectricModel>("model", {{"dobson1985", DielectricModel::dobson1985},
+                                             {"hallikainen1985", DielectricModel::hallikainen1985},
+                                             {"mironov2009", DielectricModel::mironov2009}});
   SoilComposition soil;
   soil.moisture_m3_m3 = t->get_double("moisture");
   soil.clay_fraction = t->get_double("clay");
@@ -54,7 +52,7 @@ SoilPermittivity read_soil_permittivity(ConfigTable& params, const std::string& 
   if (soil.clay_fraction + soil.sand_fraction > 1.0 + 1e-9) {
     t->fail("sand", "clay + sand exceeds 1 (they are mass fractions of the same soil)");
   }
-  if (*model == DielectricModel::dobson1985) {
+  if (model == DielectricModel::dobson1985) {
     soil.bulk_density_g_cm3 = t->get_double_or("bulk_density", soil.bulk_density_g_cm3);
     soil.temperature_c = t->get_double_or("temperature", soil.temperature_c);
     if (!(soil.bulk_density_g_cm3 > 0.0 && soil.bulk_density_g_cm3 < 2.66)) {
@@ -62,7 +60,7 @@ SoilPermittivity read_soil_permittivity(ConfigTable& params, const std::string& 
     }
   }
   t->finish();
-  return SoilPermittivity(*model, soil, ctx, params.key_path(key));
+  return SoilPermittivity(model, soil, ctx, params.key_path(key));
 }
 
 }  // namespace ris::detail

@@ -103,10 +103,9 @@ std::unique_ptr<BackscatterModel> make_spm(ConfigTable& params, const ModelConte
   if (!(s_m > 0.0)) params.fail("rms_height", "expected an rms height > 0");
   const double l_m = params.get_quantity("correlation_length", Quantity::length);
   if (!(l_m > 0.0)) params.fail("correlation_length", "expected a correlation length > 0");
-  const std::string corr = params.get_string("correlation");
-  if (corr != "gaussian" && corr != "exponential") {
-    params.fail("correlation", "expected \"gaussian\" or \"exponential\", got \"" + corr + "\"");
-  }
+  // Gaussian (true) or exponential (false) correlation function.
+  const bool gaussian =
+      params.get_enum<bool>("correlation", {{"gaussian", true}, {"exponential", false}});
   const double slope = std::sqrt(2.0) * s_m / l_m;
   if (slope > 0.3) {
     report_out_of_validity(ctx, params.key_path("correlation_length"),
@@ -116,7 +115,7 @@ std::unique_ptr<BackscatterModel> make_spm(ConfigTable& params, const ModelConte
   }
   SoilPermittivity eps = read_soil_permittivity(params, "permittivity", ctx);
   params.finish();
-  return std::make_unique<Spm>(s_m, l_m, corr == "gaussian", std::move(eps), ctx,
+  return std::make_unique<Spm>(s_m, l_m, gaussian, std::move(eps), ctx,
                                params.key_path("rms_height"));
 }
 

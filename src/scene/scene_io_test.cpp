@@ -1,4 +1,4 @@
-#include "ris/io/scene_io.h"
+#include "ris/scene/scene_io.h"
 
 #include <gtest/gtest.h>
 

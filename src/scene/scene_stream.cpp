@@ -1,4 +1,4 @@
-#include "ris/io/scene_stream.h"
+#include "ris/scene/scene_stream.h"
 
 #include <cpl_conv.h>
 #include <fmt/format.h>
@@ -10,8 +10,8 @@
 #include <limits>
 #include <vector>
 
-#include "ris/io/dem_import.h"
 #include "ris/io/gdal_util.h"
+#include "ris/scene/dem_import.h"
 #include "ris/util/error.h"
 
 namespace ris {

@@ -1,4 +1,4 @@
-#include "ris/io/scene_io.h"
+#include "ris/scene/scene_io.h"
 
 #include <fmt/format.h>
 #include <gdal.h>
@@ -9,10 +9,10 @@
 #include <limits>
 #include <vector>
 
-#include "ris/io/dem_import.h"
 #include "ris/io/gdal_util.h"
 #include "ris/io/raster_io.h"
-#include "ris/io/scene_stream.h"
+#include "ris/scene/dem_import.h"
+#include "ris/scene/scene_stream.h"
 #include "ris/util/error.h"
 
 namespace ris {

@@ -1,4 +1,4 @@
-#include "ris/io/scene_stream.h"
+#include "ris/scene/scene_stream.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "ris/io/raster_io.h"
-#include "ris/io/scene_io.h"
+#include "ris/scene/scene_io.h"
 #include "ris/util/error.h"
 #include "test_util.h"
 

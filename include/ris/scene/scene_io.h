@@ -9,7 +9,7 @@
 // Any other GDAL raster is read as an elevation model (band 1) with every
 // cell of category 0, or with categories from a second raster on exactly the
 // same grid. A DEM in a geographic CRS (or in feet) is imported on the fly
-// with import_dem (ris/io/dem_import.h): reprojected into the UTM zone of its
+// with import_dem (ris/scene/dem_import.h): reprojected into the UTM zone of its
 // centre at the default cell size.
 //
 // Example:
@@ -31,7 +31,7 @@
 namespace ris {
 
 // extra_metadata: items added to the file's metadata (provenance such as
-// RIS_SOURCE_DEM, RIS_FRAME; see ris/io/dem_import.h).
+// RIS_SOURCE_DEM, RIS_FRAME; see ris/scene/dem_import.h).
 void write_scene_geotiff(const Scene& scene, const std::filesystem::path& path,
                          const RasterMetadata& extra_metadata = {});
 

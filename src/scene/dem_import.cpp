@@ -1,4 +1,4 @@
-#include "ris/io/dem_import.h"
+#include "ris/scene/dem_import.h"
 
 #include <cpl_string.h>
 #include <fmt/format.h>

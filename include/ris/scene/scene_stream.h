@@ -5,7 +5,7 @@
 // (or strips) it touches, through GDAL's block cache (bounded by
 // bound_gdal_cache()).
 //
-// The cells are exactly what read_scene (ris/io/scene_io.h) gives, which is
+// The cells are exactly what read_scene (ris/scene/scene_io.h) gives, which is
 // built on this reader: a ris scene GeoTIFF (band 1 elevation, band 2
 // category, NaN no-data) or any other raster as an elevation model of
 // category 0, optionally with categories from a second raster on the same

@@ -1,4 +1,4 @@
-#include "ris/io/dem_import.h"
+#include "ris/scene/dem_import.h"
 
 #include <cpl_string.h>
 #include <fmt/format.h>
@@ -12,8 +12,8 @@
 
 #include "ris/io/gdal_util.h"
 #include "ris/io/raster_io.h"
-#include "ris/io/scene_io.h"
 #include "ris/scene/geo_frame.h"
+#include "ris/scene/scene_io.h"
 #include "ris/util/error.h"
 #include "test_util.h"
 

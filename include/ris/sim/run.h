@@ -1,0 +1,119 @@
+// One simulation run, as `ris simulate` does it, callable from the command
+// line, the HTTP server (`ris serve`) and the Python bindings alike: choose
+// the mode from the radar (SLAR, SAR, coherent SAR, PPI), load what was given
+// as paths, stream a scene raster too large for memory (or when asked), run,
+// render speckle and greytones, measure point targets' impulse responses and
+// write the products (docs/outputs.md) into one staged folder.
+//
+// Inputs come as paths or as objects already in memory (a server keeps its
+// scene, radar and backscatter source loaded between runs); an object given
+// wins over its path, and the path is still what metadata.json names.
+//
+// The result keeps the in-memory simulation (mean power, masks, geometry
+// maps), so fading and film can be rendered again with another seed or film
+// (rerender) without recomputing geometry.
+//
+// Example:
+//   ris::RunRequest r;
+//   r.scene_path = "scene.toml";  r.radar_path = "radar.toml";  r.out_dir = "out";
+//   ris::RunResult res = ris::run_simulation(r);
+//   ris::rerender(res, 7);  ris::write_run_products(res, "out-seed7");
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ris/backscatter/sigma0_source.h"
+#include "ris/scene/scene.h"
+#include "ris/sensor/radar_params.h"
+#include "ris/sim/point_target.h"
+#include "ris/sim/point_target_irf.h"
+#include "ris/sim/ppi_simulation.h"
+#include "ris/sim/run_info.h"
+#include "ris/sim/slar_simulation.h"
+#include "ris/sim/slar_stream.h"
+
+namespace ris {
+
+struct RunRequest {
+  // The scene: a .toml description or a raster (ris/scene/scene_source.h).
+  std::string scene_path;
+  std::shared_ptr<const Scene> scene;  // loaded already (not streamed)
+  // The radar description (TOML).
+  std::string radar_path;
+  std::optional<RadarParams> radar;
+  // The backscatter library or table; empty path: the standard library.
+  std::string backscatter_path;
+  std::shared_ptr<const Sigma0Source> sigma0;
+  // Point targets (TOML, [[target]] tables); none when both are empty.
+  std::string targets_path;
+  std::optional<std::vector<PointTarget>> targets;
+
+  // Where the products go (one folder, written as a whole); empty: nothing
+  // is written (the result holds the images).
+  std::filesystem::path out_dir;
+  std::uint64_t seed = 1;  // fading
+  int threads = 0;         // OpenMP threads; 0: all cores
+  // Stream the scene raster in blocks of azimuth lines (SLAR); also chosen
+  // when the raster is too large for memory. block_lines > 0 implies it.
+  bool stream = false;
+  int block_lines = 0;
+  bool quiet = false;  // no progress bar in a streamed run
+  // Which products and how compressed (ris/sim/run_info.h).
+  ProductSelection products;
+  CompressionPreset compression = CompressionPreset::fast;
+};
+
+struct RunCallbacks {
+  // At the start of each stage: its name and the fraction of the run done.
+  std::function<void(std::string_view, double)> progress;
+  // A warning for the user (SAR resolution finer than the scene, ...);
+  // default: spdlog::warn.
+  std::function<void(const std::string&)> warning;
+};
+
+enum class RunKind { slar, sar, coherent_sar, ppi, streamed };
+
+struct RunResult {
+  RunKind kind = RunKind::slar;
+  RadarParams radar;
+  SlarRunInfo info;  // paths, seed, threads, products, compression
+  // In-memory runs: the scene (shared with the request when it gave one).
+  std::shared_ptr<const Scene> scene;
+  // SLAR and SAR.
+  std::optional<SlarSimulation> slar;
+  std::optional<SlarPictures> slar_pictures;
+  bool has_targets = false;          // point targets were given
+  std::string targets_path;          // where from (metadata.json)
+  std::vector<PointTargetIrf> irfs;  // point targets' impulse responses
+  // PPI.
+  std::optional<PpiSimulation> ppi;
+  std::optional<PpiPictures> ppi_pictures;
+  // A streamed run (no arrays kept: the products are on disk).
+  std::optional<SlarStreamSummary> streamed;
+  // Wall time: the whole run, and writing the products.
+  double seconds = 0.0;
+  double write_seconds = 0.0;
+};
+
+// Runs one simulation. Throws InputError for bad input (naming the file or
+// option and what was expected); nothing is written then.
+RunResult run_simulation(const RunRequest& request, const RunCallbacks& callbacks = {});
+
+// Speckle and greytones again on the kept simulation with another seed and,
+// when given, other film constants (equation 15's X, gamma, k, m); point
+// targets are measured again. The geometry and mean power are not
+// recomputed. Not for a streamed run (InputError).
+void rerender(RunResult& result, std::uint64_t seed, const FilmParams* film = nullptr);
+
+// Writes the result's products into out_dir (as run_simulation does);
+// returns the seconds taken. Not for a streamed run (InputError).
+double write_run_products(const RunResult& result, const std::filesystem::path& out_dir);
+
+}  // namespace ris

@@ -1,0 +1,226 @@
+#include "ris/sim/run.h"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+
+#include "ris/backscatter/library.h"
+#include "ris/scene/dem_import.h"
+#include "ris/scene/scene_source.h"
+#include "ris/scene/scene_stream.h"
+#include "ris/sensor/radar_config.h"
+#include "ris/sim/ppi_products.h"
+#include "ris/sim/sar_coherent.h"
+#include "ris/sim/slar_products.h"
+#include "ris/util/error.h"
+
+namespace ris {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+void warn(const RunCallbacks& cb, const std::string& message) {
+  if (cb.warning) {
+    cb.warning(message);
+  } else {
+    spdlog::warn("{}", message);
+  }
+}
+
+// Whether to stream: asked for, or a scene raster too large for memory
+// (only its header is read to decide).
+bool should_stream(const RunRequest& r, const RunCallbacks& cb) {
+  if (r.block_lines < 0) {
+    throw InputError("", "--block-lines",
+                     fmt::format("expected a positive number of lines, got {}", r.block_lines));
+  }
+  const bool is_raster = std::filesystem::path(r.scene_path).extension() != ".toml";
+  if (r.stream || r.block_lines > 0) {
+    if (r.scene != nullptr || !is_raster) {
+      throw InputError(r.scene_path, "--stream",
+                       "a streamed run reads a scene raster; build the description first with: "
+                       "ris scene build " +
+                           r.scene_path + " -o scene.tif");
+    }
+    return true;
+  }
+  if (r.scene != nullptr || !is_raster || dem_needs_import(r.scene_path)) return false;
+  const SceneStreamReader probe(r.scene_path);
+  if (!scene_needs_streaming(probe.grid().rows, probe.grid().cols)) return false;
+  warn(cb, fmt::format("{}: {} x {} cells is too large for an in-memory run; streaming it in "
+                       "blocks of azimuth lines",
+                       r.scene_path, probe.grid().cols, probe.grid().rows));
+  return true;
+}
+
+// The backscatter source, loaded unless given (default: the standard
+// library).
+struct LoadedSigma0 {
+  std::string path;
+  std::shared_ptr<const Sigma0Source> source;
+};
+
+LoadedSigma0 load_sigma0(const RunRequest& r) {
+  LoadedSigma0 in;
+  in.path = r.backscatter_path.empty() && r.sigma0 == nullptr ? default_sigma0_library_path()
+                                                              : r.backscatter_path;
+  in.source = r.sigma0 != nullptr ? r.sigma0 : load_sigma0_source(in.path);
+  return in;
+}
+
+RadarParams load_radar_of(const RunRequest& r) {
+  return r.radar ? *r.radar : load_radar(r.radar_path);
+}
+
+SlarRunInfo run_info(const RunRequest& r, const std::string& backscatter_path) {
+  SlarRunInfo info{r.scene_path, r.radar_path, backscatter_path, r.seed,
+                   r.threads > 0 ? r.threads : omp_get_max_threads()};
+  info.products = r.products;
+  info.compression = r.compression;
+  return info;
+}
+
+void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
+  if (!r.targets_path.empty() || (r.targets && !r.targets->empty())) {
+    throw InputError(r.targets_path, "--targets",
+                     "a streamed run does not take point targets; run the scene in memory "
+                     "(a smaller scene or window) to add them");
+  }
+  if (!r.products.stems.empty() || r.compression != CompressionPreset::fast) {
+    throw InputError(r.scene_path, r.products.stems.empty() ? "--compress" : "--products",
+                     "a streamed run writes every product with the default compression; drop "
+                     "the option or run the scene in memory");
+  }
+  res.kind = RunKind::streamed;
+  res.radar = load_radar_of(r);
+  const LoadedSigma0 sigma0 = load_sigma0(r);
+  res.info = run_info(r, sigma0.path);
+  SlarStreamOptions o;
+  o.block_lines = r.block_lines;
+  o.quiet = r.quiet;
+  res.streamed =
+      simulate_slar_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
+  for (const std::string& w : res.streamed->sim.warnings) warn(cb, w);
+}
+
+// Speckle, greytones and point-target measurements of a kept SLAR/SAR run.
+void render_slar_run(RunResult& res, std::uint64_t seed) {
+  const SlarSimulation& sim = *res.slar;
+  const bool coherent = res.kind == RunKind::coherent_sar;
+  res.slar_pictures =
+      coherent ? render_slar(sim, seed, coherent_sar_intensity(sim, seed)) : render_slar(sim, seed);
+  res.irfs.clear();
+  if (res.has_targets) {
+    res.irfs = measure_point_targets(sim, *res.slar_pictures, coherent);
+  }
+}
+
+}  // namespace
+
+RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
+  if (r.threads < 0) {
+    throw InputError("", "--threads",
+                     fmt::format("expected 0 (all cores) or more, got {}", r.threads));
+  }
+  if (r.threads > 0) omp_set_num_threads(r.threads);
+  const Clock::time_point t0 = Clock::now();
+  RunResult res;
+  if (should_stream(r, cb)) {
+    run_streamed(r, cb, res);
+    res.seconds = seconds_since(t0);
+    return res;
+  }
+  const auto stage = [&](std::string_view name, double fraction) {
+    if (cb.progress) cb.progress(name, fraction);
+  };
+  stage("reading inputs", 0.0);
+  // In the order the command line has always read them (the first bad input
+  // is the one reported).
+  const RadarParams radar = load_radar_of(r);
+  res.radar = radar;
+  check_product_selection(r.products,
+                          radar.mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems(),
+                          "--products");
+  res.scene = r.scene != nullptr
+                  ? r.scene
+                  : std::make_shared<const Scene>(load_scene_source(r.scene_path).scene);
+  const LoadedSigma0 sigma0 = load_sigma0(r);
+  res.info = run_info(r, sigma0.path);
+  SlarOptions options;
+  options.backscatter_file = sigma0.path;
+  options.progress = cb.progress;
+  if (r.targets) {
+    options.targets = *r.targets;
+  } else if (!r.targets_path.empty()) {
+    options.targets = load_point_targets(r.targets_path);
+  }
+  res.has_targets = !options.targets.empty();
+  res.targets_path = r.targets_path;
+
+  if (radar.mode == RadarMode::ppi) {
+    res.kind = RunKind::ppi;
+    res.ppi = simulate_ppi(*res.scene, radar, *sigma0.source, options);
+    for (const std::string& w : res.ppi->warnings) warn(cb, w);
+    stage("speckle and greytones", 0.9);
+    res.ppi_pictures = render_ppi(*res.ppi, r.seed);
+  } else {
+    const bool coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
+    res.kind = radar.mode == RadarMode::slar ? RunKind::slar
+               : coherent                    ? RunKind::coherent_sar
+                                             : RunKind::sar;
+    res.slar = simulate_slar(*res.scene, radar, *sigma0.source, options);
+    for (const std::string& w : res.slar->warnings) warn(cb, w);
+    stage("speckle and greytones", 0.9);
+    render_slar_run(res, r.seed);
+  }
+  if (!r.out_dir.empty()) {
+    stage("writing products", 0.95);
+    res.write_seconds = write_run_products(res, r.out_dir);
+  }
+  stage("done", 1.0);
+  res.seconds = seconds_since(t0);
+  return res;
+}
+
+void rerender(RunResult& res, std::uint64_t seed, const FilmParams* film) {
+  if (res.kind == RunKind::streamed) {
+    throw InputError(res.info.scene_path, "",
+                     "a streamed run keeps no images in memory to render again");
+  }
+  res.info.seed = seed;
+  if (res.kind == RunKind::ppi) {
+    if (film != nullptr) res.ppi->radar.film = *film;
+    res.ppi_pictures = render_ppi(*res.ppi, seed);
+    return;
+  }
+  if (film != nullptr) res.slar->radar.film = *film;
+  render_slar_run(res, seed);
+}
+
+double write_run_products(const RunResult& res, const std::filesystem::path& out_dir) {
+  if (res.kind == RunKind::streamed) {
+    throw InputError(res.info.scene_path, "",
+                     "a streamed run writes its products while it runs; none are kept");
+  }
+  const Clock::time_point t0 = Clock::now();
+  if (res.kind == RunKind::ppi) {
+    write_ppi_products(out_dir, *res.scene, *res.ppi, *res.ppi_pictures, res.info);
+  } else {
+    nlohmann::json extra = nlohmann::json::object();
+    if (res.has_targets) {
+      extra["point_targets"] = point_target_irf_json(res.irfs, *res.slar, res.targets_path,
+                                                     res.kind == RunKind::coherent_sar);
+    }
+    write_slar_products(out_dir, *res.scene, *res.slar, *res.slar_pictures, res.info, extra);
+  }
+  return seconds_since(t0);
+}
+
+}  // namespace ris

@@ -1,0 +1,23 @@
+#include "ris/sim/run_info.h"
+
+#include <algorithm>
+
+#include "ris/util/error.h"
+
+namespace ris {
+
+bool ProductSelection::wants(std::string_view stem) const {
+  return stems.empty() || std::find(stems.begin(), stems.end(), stem) != stems.end();
+}
+
+void check_product_selection(const ProductSelection& selection,
+                             const std::vector<std::string_view>& allowed, const std::string& key) {
+  for (const std::string& s : selection.stems) {
+    if (std::find(allowed.begin(), allowed.end(), s) != allowed.end()) continue;
+    std::string list;
+    for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    throw InputError("", key, "unknown product \"" + s + "\" (expected one of: " + list + ")");
+  }
+}
+
+}  // namespace ris
