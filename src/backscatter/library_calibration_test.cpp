@@ -11,6 +11,7 @@
 #include "ris/backscatter/backscatter_model.h"
 #include "ris/backscatter/library.h"
 #include "ris/io/config_table.h"
+#include "ris/util/error.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -53,6 +54,29 @@ TEST(LibraryCalibration, GenericTerrainIsWithinOneDbOfItsHandbookClass) {
               << lib->category_name(c.id) << " vs " << c.terrain << " at " << f / 1e9 << " GHz "
               << to_string(p) << " " << deg << " deg";
         }
+      }
+    }
+  }
+}
+
+// `ris sigma0 --library data/backscatter/ulaby-dobson-1989.toml` resolves
+// every handbook class at L, S and C band (shrubs: L and C; its S rows are not
+// shipped), each equal to the class's ulaby_dobson model.
+TEST(LibraryCalibration, HandbookLibraryResolvesEveryClassAtLSAndC) {
+  auto lib = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/ulaby-dobson-1989.toml");
+  const char* classes[] = {"soil", "grass", "short_vegetation", "shrubs", "dry_snow", "wet_snow"};
+  ASSERT_EQ(lib->category_ids().size(), 6u);
+  for (std::uint16_t id = 40; id <= 45; ++id) {
+    auto ref = handbook_class(classes[id - 40]);
+    for (double f : {1.25e9, 3.2e9, 5.3e9}) {
+      for (Polarisation p : {Polarisation::HH, Polarisation::HV, Polarisation::VV}) {
+        const RadarBand band{f, p};
+        if (id == 43 && f == 3.2e9) {
+          EXPECT_THROW(lib->sigma0(id, deg_to_rad(30.0), band), InputError);
+          continue;
+        }
+        EXPECT_EQ(lib->sigma0(id, deg_to_rad(30.0), band), ref->sigma0(deg_to_rad(30.0), band))
+            << id << " " << f;
       }
     }
   }
