@@ -45,7 +45,7 @@ SoilPermittivity read_soil_permittivity(ConfigTable& params, const std::string& 
   soil.clay_fraction = t->get_double("clay");
   // Mironov 2009 depends on clay only: sand is optional there (accepted and
   // checked, so a library can state its soil's texture, but never used).
-  const bool needs_sand = *model != DielectricModel::mironov2009;
+  const bool needs_sand = model != DielectricModel::mironov2009;
   soil.sand_fraction = needs_sand ? t->get_double("sand") : t->get_double_or("sand", 0.0);
   if (!(soil.moisture_m3_m3 >= 0.0 && soil.moisture_m3_m3 <= 1.0)) {
     t->fail("moisture", "expected a volumetric water content in [0, 1] m3/m3");
