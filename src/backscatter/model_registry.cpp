@@ -27,6 +27,7 @@ constexpr std::array kModels = {
     Entry{"constant_gamma", detail::make_constant_gamma, "gamma cos t (Clapp)"},
     Entry{"lambert", detail::make_lambert, "gamma cos^2 t"},
     Entry{"oh1992", detail::make_oh1992, "bare soil, Oh, Sarabandi & Ulaby 1992"},
+    Entry{"oh2004", detail::make_oh2004, "bare soil from moisture and ks, Oh 2004"},
     Entry{"ulaby_dobson", detail::make_ulaby_dobson,
           "P1 + P2 exp(-P3 t) + P4 cos(P5 t + P6) dB, Ulaby & Dobson 1989"},
     Entry{"dubois1995", detail::make_dubois1995, "bare soil HH/VV, Dubois, van Zyl & Engman 1995"},

@@ -145,65 +145,6 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   return sim;
 }
 
-namespace {
-
-// render_slar's steps for one line (each pixel's own: any line order gives
-// the same bytes).
-struct LineRenderer {
-  const SlarImage& img;
-  std::span<const float> coherent_intensity;  // empty: the mean power, faded
-  const FadingField* fading;                  // null: no fading
-  const GreytoneMap& map;
-  const GroundRangeResampler& ground;
-  SlarPictures& pic;
-
-  void line(int line) const {
-    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-    const auto b_count = static_cast<std::size_t>(img.bins);
-    const std::size_t at = static_cast<std::size_t>(line) * b_count;
-    const std::uint8_t* mask = img.mask.data() + at;
-    float* speckled = pic.speckled_power_w.data() + at;
-    if (!coherent_intensity.empty()) {
-      std::copy_n(coherent_intensity.data() + at, b_count, speckled);
-    } else {
-      const float* mean = img.mean_power_w.data() + at;
-      for (std::size_t b = 0; b < b_count; ++b)
-        speckled[b] = (mask[b] & pixel_flag::kNoData) ? kNaN : mean[b];
-      if (fading) fading->apply_line(speckled, line);
-    }
-    // The line's bins from its first to its last number: outside them every
-    // pixel is NaN, whose greytone is the no-data one whatever the mask, and
-    // so are the ground pixels whose two bins lie outside (an oblique track's
-    // lines are about half no data at their ends). Steps below skip them:
-    // the same bytes.
-    std::size_t first = 0, end = b_count;
-    while (first < end && std::isnan(speckled[first])) ++first;
-    while (end > first && std::isnan(speckled[end - 1])) --end;
-    std::uint8_t* slant_grey = pic.slant_grey.data() + at;
-    std::fill(slant_grey, slant_grey + first, std::uint8_t{0});
-    greytone_line(map, speckled + first, mask + first, pixel_flag::kNoData, end - first,
-                  slant_grey + first);
-    std::fill(slant_grey + end, slant_grey + b_count, std::uint8_t{0});
-    // Ground range: the speckled power resampled, the mask's nearest bin,
-    // then the same greytone map.
-    const std::size_t cols = static_cast<std::size_t>(ground.columns());
-    const std::size_t g_at = static_cast<std::size_t>(line) * cols;
-    float* ground_power = pic.ground_power_w.data() + g_at;
-    std::uint8_t* ground_mask = pic.ground_mask.data() + g_at;
-    std::uint8_t* ground_grey = pic.ground_grey.data() + g_at;
-    const GroundRangeResampler::Columns run =
-        ground.columns_within(static_cast<int>(first), static_cast<int>(end));
-    ground.resample_line(speckled, ground_power, run);
-    ground.nearest_line(mask, ground_mask, pixel_flag::kNoData);
-    std::fill(ground_grey, ground_grey + run.begin, std::uint8_t{0});
-    greytone_line(map, ground_power + run.begin, ground_mask + run.begin, pixel_flag::kNoData,
-                  run.end - run.begin, ground_grey + run.begin);
-    std::fill(ground_grey + run.end, ground_grey + cols, std::uint8_t{0});
-  }
-};
-
-}  // namespace
-
 SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed,
                          std::span<const float> coherent_intensity) {
   const SlarImage& img = sim.image;
@@ -238,19 +179,59 @@ SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed,
   // ground-range power, mask and greytones. One parallel region instead of
   // seven, and each line stays in cache between the steps.
   const GroundRangeResampler ground(img.range, sim.ground_grid);
-  const std::size_t n_ground =
-      static_cast<std::size_t>(lines) * static_cast<std::size_t>(ground.columns());
+  const std::size_t cols = static_cast<std::size_t>(ground.columns());
+  const std::size_t n_ground = static_cast<std::size_t>(lines) * cols;
   pic.speckled_power_w.resize(n_pix);
   pic.slant_grey.resize(n_pix);
   pic.ground_power_w.resize(n_ground);
   pic.ground_mask.resize(n_ground);
   pic.ground_grey.resize(n_ground);
-  const LineRenderer render{img, coherent_intensity, fading ? &*fading : nullptr, map, ground, pic};
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  const auto b_count = static_cast<std::size_t>(bins);
   // Dynamic blocks of lines: on a shared machine, when one thread loses its
   // core the other takes its lines instead of waiting at the barrier (each
   // line is independent: the same bytes for any schedule).
 #pragma omp parallel for schedule(dynamic, 16)
-  for (int line = 0; line < lines; ++line) render.line(line);
+  for (int line = 0; line < lines; ++line) {
+    const std::size_t at = static_cast<std::size_t>(line) * b_count;
+    const std::uint8_t* mask = img.mask.data() + at;
+    float* speckled = pic.speckled_power_w.data() + at;
+    if (coherent) {
+      std::copy_n(coherent_intensity.data() + at, b_count, speckled);
+    } else {
+      const float* mean = img.mean_power_w.data() + at;
+      for (std::size_t b = 0; b < b_count; ++b)
+        speckled[b] = (mask[b] & pixel_flag::kNoData) ? kNaN : mean[b];
+      if (fading) fading->apply_line(speckled, line);
+    }
+    // The line's bins from its first to its last number: outside them every
+    // pixel is NaN, whose greytone is the no-data one whatever the mask, and
+    // so are the ground pixels whose two bins lie outside (an oblique track's
+    // lines are about half no data at their ends). Steps below skip them:
+    // the same bytes.
+    std::size_t first = 0, end = b_count;
+    while (first < end && std::isnan(speckled[first])) ++first;
+    while (end > first && std::isnan(speckled[end - 1])) --end;
+    std::uint8_t* slant_grey = pic.slant_grey.data() + at;
+    std::fill(slant_grey, slant_grey + first, std::uint8_t{0});
+    greytone_line(map, speckled + first, mask + first, pixel_flag::kNoData, end - first,
+                  slant_grey + first);
+    std::fill(slant_grey + end, slant_grey + b_count, std::uint8_t{0});
+    // Ground range: the speckled power resampled, the mask's nearest bin,
+    // then the same greytone map.
+    const std::size_t g_at = static_cast<std::size_t>(line) * cols;
+    float* ground_power = pic.ground_power_w.data() + g_at;
+    std::uint8_t* ground_mask = pic.ground_mask.data() + g_at;
+    std::uint8_t* ground_grey = pic.ground_grey.data() + g_at;
+    const GroundRangeResampler::Columns run =
+        ground.columns_within(static_cast<int>(first), static_cast<int>(end));
+    ground.resample_line(speckled, ground_power, run);
+    ground.nearest_line(mask, ground_mask, pixel_flag::kNoData);
+    std::fill(ground_grey, ground_grey + run.begin, std::uint8_t{0});
+    greytone_line(map, ground_power + run.begin, ground_mask + run.begin, pixel_flag::kNoData,
+                  run.end - run.begin, ground_grey + run.begin);
+    std::fill(ground_grey + run.end, ground_grey + cols, std::uint8_t{0});
+  }
   return pic;
 }
 

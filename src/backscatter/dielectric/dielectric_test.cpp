@@ -61,13 +61,33 @@ TEST(Dobson1985, DrySoilLimit) {
   EXPECT_EQ(eps.imag(), 0.0);
 }
 
-TEST(DielectricModels, AgreeWithEachOtherForLoam) {
-  // Dobson (1985) and Hallikainen (1985) were both fitted to the measurements of
-  // Hallikainen et al. (1985); Mironov (2009) to those and others. For the loam
-  // soil their eps' agree within 25 % across 1.4-18 GHz and mv 0.1-0.3 (the
-  // largest gap, Dobson 24 % above Hallikainen at 1.4 GHz and mv = 0.1, is the
-  // known L-band bias that Peplinski et al. 1995 corrected): a cross-check
-  // that catches a wrong coefficient or unit.
+TEST(Dobson1985, MoistSoilClosedFormValues) {
+  // Dobson et al. (1985) eqs. 22, 23, 28 with Stogryn's free water (the
+  // formulas at the top of dobson1985.cpp), evaluated independently in Python
+  // (double precision) for sand 30.6 %, clay 13.5 %, rho_b = 1.5 g/cm3, 20 C:
+  //   mv 0.2,  5 GHz:  10.44569 - 1.60308j
+  //   mv 0.3,  1.4 GHz: 16.87544 - 2.56076j
+  //   mv 0.1, 10 GHz:   5.52669 - 0.70759j
+  // Tolerance 1e-4: the rounding (5e-6) with margin; the expression is closed-form.
+  struct Case {
+    double mv, f, re, im;
+  };
+  for (const Case& c : {Case{0.2, 5e9, 10.44569, 1.60308}, Case{0.3, 1.4e9, 16.87544, 2.56076},
+                        Case{0.1, 10e9, 5.52669, 0.70759}}) {
+    const SoilComposition loam{c.mv, 0.135, 0.306, 1.5, 20.0};
+    const std::complex<double> eps = dobson1985_permittivity(loam, c.f);
+    EXPECT_NEAR(eps.real(), c.re, 1e-4) << c.mv << " " << c.f;
+    EXPECT_NEAR(eps.imag(), -c.im, 1e-4) << c.mv << " " << c.f;
+  }
+}
+
+TEST(DielectricModels, SpreadBetweenModelsForLoamIsTheKnownOne) {
+  // Not an accuracy test (each model has its own anchor above): the spread
+  // between models fitted to the same measurements (Hallikainen et al. 1985),
+  // bounded just above what it is, so a wrong coefficient or unit in any one
+  // model shows. Measured over 1.4-18 GHz, mv 0.1-0.3 (ris dielectric --format
+  // csv): |Dobson/Hallikainen - 1| <= 0.239 (1.4 GHz, mv 0.1: the L-band bias
+  // Peplinski et al. 1995 corrected), |Mironov/Hallikainen - 1| <= 0.107.
   for (double f : {1.4e9, 4e9, 6e9, 10e9, 14e9, 18e9}) {
     for (double mv : {0.1, 0.2, 0.3}) {
       const SoilComposition loam{mv, 0.135, 0.306, 1.5, 20.0};
@@ -75,7 +95,7 @@ TEST(DielectricModels, AgreeWithEachOtherForLoam) {
       const double h = hallikainen1985_permittivity(loam, f).real();
       const double m = mironov2009_permittivity(loam, f).real();
       EXPECT_NEAR(d / h, 1.0, 0.25) << f << " " << mv;
-      EXPECT_NEAR(m / h, 1.0, 0.25) << f << " " << mv;
+      EXPECT_NEAR(m / h, 1.0, 0.12) << f << " " << mv;
       // Convention: eps'' >= 0, stored as a negative imaginary part.
       EXPECT_LT(dobson1985_permittivity(loam, f).imag(), 0.0);
       EXPECT_LT(hallikainen1985_permittivity(loam, f).imag(), 0.0);

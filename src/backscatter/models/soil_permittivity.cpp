@@ -19,6 +19,10 @@ void SoilPermittivity::check_band(double frequency_hz) const {
 
 std::string SoilPermittivity::describe() const {
   if (!model_) return fmt::format("{:g} - {:g}j", fixed_.real(), -fixed_.imag());
+  if (*model_ == DielectricModel::mironov2009) {
+    return fmt::format("{} (mv = {:g}, clay = {:g})", to_string(*model_), soil_.moisture_m3_m3,
+                       soil_.clay_fraction);
+  }
   return fmt::format("{} (mv = {:g}, clay = {:g}, sand = {:g})", to_string(*model_),
                      soil_.moisture_m3_m3, soil_.clay_fraction, soil_.sand_fraction);
 }
@@ -39,7 +43,10 @@ SoilPermittivity read_soil_permittivity(ConfigTable& params, const std::string& 
   SoilComposition soil;
   soil.moisture_m3_m3 = t->get_double("moisture");
   soil.clay_fraction = t->get_double("clay");
-  soil.sand_fraction = t->get_double("sand");
+  // Mironov 2009 depends on clay only: sand is optional there (accepted and
+  // checked, so a library can state its soil's texture, but never used).
+  const bool needs_sand = model != DielectricModel::mironov2009;
+  soil.sand_fraction = needs_sand ? t->get_double("sand") : t->get_double_or("sand", 0.0);
   if (!(soil.moisture_m3_m3 >= 0.0 && soil.moisture_m3_m3 <= 1.0)) {
     t->fail("moisture", "expected a volumetric water content in [0, 1] m3/m3");
   }
