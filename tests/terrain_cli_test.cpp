@@ -128,8 +128,20 @@ end_latlon = [34.22, -118.55]
   EXPECT_EQ(geo.cols, scene.cols);
   EXPECT_EQ(geo.georef.geotransform, scene.georef.geotransform);
   EXPECT_NE(geo.georef.crs_wkt.find("UTM zone 11N"), std::string::npos);
-  std::size_t imaged = 0;
-  for (double v : geo.data) imaged += v > 0.0;
+  // A cell with data has geocoded power exactly when the scene mask says it
+  // was imaged (not outside the swath, 16); most of the DEM is. (No-data
+  // cells, 4, take the power of the pixel their position maps to.)
+  const RasterF64 mask = read_raster_f64(out / "scene_mask.tif");
+  ASSERT_EQ(mask.data.size(), geo.data.size());
+  std::size_t imaged = 0, disagree = 0;
+  for (std::size_t i = 0; i < geo.data.size(); ++i) {
+    const int bits = static_cast<int>(mask.data[i]);
+    if (bits & 4) continue;
+    const bool in = (bits & 16) == 0;
+    imaged += in;
+    disagree += in != std::isfinite(geo.data[i]);
+  }
+  EXPECT_EQ(disagree, 0u);
   EXPECT_GT(imaged, static_cast<std::size_t>(geo.cols * geo.rows) / 2);
   // The track in metadata also in latitude/longitude, back where it was given.
   const auto meta = nlohmann::json::parse(test::read_file(out / "metadata.json"));
