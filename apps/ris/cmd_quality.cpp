@@ -89,6 +89,47 @@ nlohmann::json speckle_json(const SpeckleSummary& s, bool automatic, int window)
                                      : std::string("--regions")}};
 }
 
+// The measures as a summary on stdout.
+void print_quality(const nlohmann::json& out, const IntensityImage& img,
+                   const IntensityHistogram& h, int mask_bit) {
+  fmt::print("image: {} ({} x {} pixels, read as {})\n", img.source, img.cols, img.rows,
+             img.read_as);
+  const nlohmann::json& s = out["speckle"];
+  fmt::print(
+      "speckle: ENL {:.3f}, CV {:.3f}, radiometric resolution {:.2f} dB over {} regions "
+      "({} pixels; {})\n",
+      s["enl"].get<double>(), s["cv"].get<double>(), s["radiometric_resolution_db"].get<double>(),
+      s["regions"].get<int>(), s["pixels"].get<std::int64_t>(),
+      s["regions_from"].get<std::string>());
+  fmt::print("histogram: p1 {:.2f} dB, median {:.2f} dB, p99 {:.2f} dB; dynamic range {:.2f} dB\n",
+             h.p1_db, h.p50_db, h.p99_db, h.dynamic_range_db());
+  if (out.contains("categories")) {
+    fmt::print("categories: {:>8} {:>9} {:>9} {:>8} {:>12}\n", "category", "pixels", "mean dB",
+               "std dB", "<I> dB");
+    for (const auto& c : out["categories"]) {
+      fmt::print("            {:>8} {:>9} {:>9.2f} {:>8.2f} {:>12.2f}\n",
+                 c["category"].get<std::int64_t>(), c["pixels"].get<std::int64_t>(),
+                 c["mean_db"].get<double>(), c["std_db"].get<double>(),
+                 c["mean_intensity_db"].get<double>());
+    }
+    fmt::print("pairs:      {:>4} {:>4} {:>12} {:>13} {:>6}\n", "a", "b", "contrast dB",
+               "Bhattacharyya", "JM");
+    for (const auto& p : out["pairs"]) {
+      fmt::print("            {:>4} {:>4} {:>12.2f} {:>13.3f} {:>6.3f}\n",
+                 p["a"].get<std::int64_t>(), p["b"].get<std::int64_t>(),
+                 p["contrast_db"].get<double>(), p["bhattacharyya"].get<double>(),
+                 p["jeffries_matusita"].get<double>());
+    }
+  }
+  if (out.contains("edges")) {
+    fmt::print("edges: {} edges of mask bit {}, 10-90% width {:.2f} pixels\n",
+               out["edges"]["edges"].get<int>(), mask_bit, out["edges"]["width_px"].get<double>());
+  }
+  if (out.contains("targets")) {
+    for (const auto& t : out["targets"]) fmt::print("target: {}\n", t.dump());
+  }
+}
+
 void run_quality(const QualityArgs& a) {
   if (a.window < 4) {
     throw InputError("", "--window", fmt::format("expected 4 or more pixels, got {}", a.window));
@@ -201,43 +242,7 @@ void run_quality(const QualityArgs& a) {
     fmt::print("{}\n", out.dump(1));
     return;
   }
-  fmt::print("image: {} ({} x {} pixels, read as {})\n", img.source, img.cols, img.rows,
-             img.read_as);
-  const nlohmann::json& s = out["speckle"];
-  fmt::print(
-      "speckle: ENL {:.3f}, CV {:.3f}, radiometric resolution {:.2f} dB over {} regions "
-      "({} pixels; {})\n",
-      s["enl"].get<double>(), s["cv"].get<double>(), s["radiometric_resolution_db"].get<double>(),
-      s["regions"].get<int>(), s["pixels"].get<std::int64_t>(),
-      s["regions_from"].get<std::string>());
-  fmt::print("histogram: p1 {:.2f} dB, median {:.2f} dB, p99 {:.2f} dB; dynamic range {:.2f} dB\n",
-             h.p1_db, h.p50_db, h.p99_db, h.dynamic_range_db());
-  if (out.contains("categories")) {
-    fmt::print("categories: {:>8} {:>9} {:>9} {:>8} {:>12}\n", "category", "pixels", "mean dB",
-               "std dB", "<I> dB");
-    for (const auto& c : out["categories"]) {
-      fmt::print("            {:>8} {:>9} {:>9.2f} {:>8.2f} {:>12.2f}\n",
-                 c["category"].get<std::int64_t>(), c["pixels"].get<std::int64_t>(),
-                 c["mean_db"].get<double>(), c["std_db"].get<double>(),
-                 c["mean_intensity_db"].get<double>());
-    }
-    fmt::print("pairs:      {:>4} {:>4} {:>12} {:>13} {:>6}\n", "a", "b", "contrast dB",
-               "Bhattacharyya", "JM");
-    for (const auto& p : out["pairs"]) {
-      fmt::print("            {:>4} {:>4} {:>12.2f} {:>13.3f} {:>6.3f}\n",
-                 p["a"].get<std::int64_t>(), p["b"].get<std::int64_t>(),
-                 p["contrast_db"].get<double>(), p["bhattacharyya"].get<double>(),
-                 p["jeffries_matusita"].get<double>());
-    }
-  }
-  if (out.contains("edges")) {
-    fmt::print("edges: {} edges of mask bit {}, 10-90% width {:.2f} pixels\n",
-               out["edges"]["edges"].get<int>(), a.mask_bit,
-               out["edges"]["width_px"].get<double>());
-  }
-  if (out.contains("targets")) {
-    for (const auto& t : out["targets"]) fmt::print("target: {}\n", t.dump());
-  }
+  print_quality(out, img, h, a.mask_bit);
 }
 
 void add_quality(CLI::App& app) {
