@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "command_registry.h"
+#include "number_list.h"
 #include "ris/backscatter/dielectric.h"
 #include "ris/image/line_chart.h"
 #include "ris/io/atomic_file.h"
@@ -30,6 +31,9 @@
 namespace {
 
 using ris::InputError;
+using ris::app::parse_double;
+using ris::app::parse_number_list;
+using ris::app::split;
 
 struct Options {
   std::string models = "all";
@@ -45,46 +49,9 @@ struct Options {
   bool allow_extrapolation = false;
 };
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(s);
-  while (std::getline(in, item, sep)) {
-    const auto a = item.find_first_not_of(" \t");
-    const auto b = item.find_last_not_of(" \t");
-    if (a != std::string::npos) out.push_back(item.substr(a, b - a + 1));
-  }
-  return out;
-}
-
-double parse_double(const std::string& text, const std::string& option) {
-  try {
-    size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument("");
-    return v;
-  } catch (const std::exception&) {
-    throw InputError("", option, "expected a number, got \"" + text + "\"");
-  }
-}
-
 // "0.05:0.45:0.05" (inclusive) or "0.1,0.2", volumetric water content m3/m3.
 std::vector<double> parse_moisture(const std::string& text) {
-  std::vector<double> out;
-  if (text.find(':') != std::string::npos) {
-    const auto parts = split(text, ':');
-    if (parts.size() != 3) throw InputError("", "--moisture", "expected start:stop:step in m3/m3");
-    const double a = parse_double(parts[0], "--moisture");
-    const double b = parse_double(parts[1], "--moisture");
-    const double step = parse_double(parts[2], "--moisture");
-    if (!(step > 0.0) || b < a) {
-      throw InputError("", "--moisture", "expected start <= stop and step > 0");
-    }
-    const auto n = static_cast<long>(std::floor((b - a) / step + 1e-9));
-    for (long i = 0; i <= n; ++i) out.push_back(a + static_cast<double>(i) * step);
-  } else {
-    for (const auto& s : split(text, ',')) out.push_back(parse_double(s, "--moisture"));
-  }
+  std::vector<double> out = parse_number_list(text, "--moisture", "m3/m3");
   if (out.empty()) throw InputError("", "--moisture", "no moisture given");
   for (double mv : out) {
     if (mv < 0.0 || mv > 1.0) {

@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "command_registry.h"
+#include "number_list.h"
 #include "ris/backscatter/backscatter_model.h"
 #include "ris/backscatter/library.h"
 #include "ris/image/line_chart.h"
@@ -30,6 +31,8 @@
 namespace {
 
 using ris::InputError;
+using ris::app::parse_number_list;
+using ris::app::split;
 
 // Values below this are written as this (a table file needs finite numbers;
 // sigma0 is exactly 0 at grazing incidence for most models).
@@ -49,46 +52,9 @@ struct Options {
   bool list_models = false;
 };
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(s);
-  while (std::getline(in, item, sep)) {
-    const auto a = item.find_first_not_of(" \t");
-    const auto b = item.find_last_not_of(" \t");
-    if (a != std::string::npos) out.push_back(item.substr(a, b - a + 1));
-  }
-  return out;
-}
-
-double parse_double(const std::string& text, const std::string& option) {
-  try {
-    size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument("");
-    return v;
-  } catch (const std::exception&) {
-    throw InputError("", option, "expected a number, got \"" + text + "\"");
-  }
-}
-
 // "0:90:5" (inclusive) or "10,20,30", in degrees.
 std::vector<double> parse_angles_deg(const std::string& text) {
-  std::vector<double> out;
-  if (text.find(':') != std::string::npos) {
-    const auto parts = split(text, ':');
-    if (parts.size() != 3) throw InputError("", "--angles", "expected start:stop:step in degrees");
-    const double a = parse_double(parts[0], "--angles");
-    const double b = parse_double(parts[1], "--angles");
-    const double step = parse_double(parts[2], "--angles");
-    if (!(step > 0.0) || b < a) {
-      throw InputError("", "--angles", "expected start <= stop and step > 0");
-    }
-    const auto n = static_cast<long>(std::floor((b - a) / step + 1e-9));
-    for (long i = 0; i <= n; ++i) out.push_back(a + static_cast<double>(i) * step);
-  } else {
-    for (const auto& s : split(text, ',')) out.push_back(parse_double(s, "--angles"));
-  }
+  std::vector<double> out = parse_number_list(text, "--angles", "degrees");
   for (double d : out) {
     if (d < 0.0 || d > 90.0) {
       throw InputError("", "--angles", fmt::format("{:g} deg is outside [0, 90] deg", d));
