@@ -19,6 +19,7 @@
 #include "ris/sensor/radar_derived.h"
 #include "ris/sim/radiometry_setup.h"
 #include "ris/sim/slar_line_blocks.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/units.h"
 
 namespace {
@@ -30,7 +31,8 @@ struct FusedFixture {
   FusedFixture()
       : scene(ris::make_bench_scene(2000, 2000, 6.096, 7)),
         sigma0(ris::load_sigma0_source(ris::default_sigma0_library_path())) {
-    const ris::RadarParams base = ris::load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+    const ris::RadarParams base =
+        ris::load_radar((ris::data_dir() / "radars/seed-fig4-5.toml").string());
     radar[0] = ris::bench_radar(base, scene, 0.0);
     radar[1] = ris::bench_radar(base, scene, ris::deg_to_rad(30.0));
   }

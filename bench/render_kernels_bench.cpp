@@ -12,12 +12,14 @@
 
 #include "ris/image/greytone.h"
 #include "ris/sensor/radar_config.h"
+#include "ris/util/data_dir.h"
 
 namespace {
 
 void BM_GreytoneLine(benchmark::State& state) {
   constexpr int kPixels = 1 << 16;
-  const ris::RadarParams radar = ris::load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+  const ris::RadarParams radar =
+      ris::load_radar((ris::data_dir() / "radars/seed-fig4-5.toml").string());
   const ris::GreytoneMap map(radar, 1e-9, 128.0);
   std::mt19937 rng(3);
   std::normal_distribution<double> db(0.0, 8.0);

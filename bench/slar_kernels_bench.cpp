@@ -22,6 +22,7 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_derived.h"
 #include "ris/sim/slar_simulation.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/float_select.h"
 #include "ris/util/memory_reuse.h"
 #include "ris/util/units.h"
@@ -35,7 +36,8 @@ struct Fixture {
   explicit Fixture(int n)
       : scene(ris::make_bench_scene(n, n, 6.096, 7)),
         sigma0(ris::load_sigma0_source(ris::default_sigma0_library_path())) {
-    const ris::RadarParams base = ris::load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+    const ris::RadarParams base =
+        ris::load_radar((ris::data_dir() / "radars/seed-fig4-5.toml").string());
     along = ris::bench_radar(base, scene, 0.0);
     oblique = ris::bench_radar(base, scene, ris::deg_to_rad(30.0));
   }

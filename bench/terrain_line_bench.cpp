@@ -13,6 +13,7 @@
 #include "ris/geometry/terrain_line.h"
 #include "ris/perf/bench_setup.h"
 #include "ris/sensor/radar_config.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/units.h"
 
 namespace {
@@ -22,7 +23,8 @@ struct LineFixture {
   ris::SlarGeometry g;
   ris::TerrainTexels tex;
   explicit LineFixture(double heading_deg) {
-    const ris::RadarParams base = ris::load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+    const ris::RadarParams base =
+        ris::load_radar((ris::data_dir() / "radars/seed-fig4-5.toml").string());
     const ris::RadarParams radar = ris::bench_radar(base, scene, ris::deg_to_rad(heading_deg));
     g = ris::slar_geometry_layout(scene, ris::resolve_track(radar.track, scene, "bench"), 0.0);
     tex = ris::terrain_texels(scene);

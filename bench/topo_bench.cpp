@@ -10,12 +10,13 @@
 #include <cmath>
 
 #include "ris/geometry/topo.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/units.h"
 
 namespace {
 
 ris::Acquisition small_airborne() {
-  ris::Acquisition a = ris::read_acquisition(std::string(RIS_DATA_DIR) +
+  ris::Acquisition a = ris::read_acquisition(ris::data_dir().string() +
                                              "/acquisitions/airborne-l-band-flight-line.toml");
   a.grid.lines = 60;
   a.grid.line_interval_s = 0.1;

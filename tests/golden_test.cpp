@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "test_util.h"
 
 namespace ris {
@@ -40,7 +41,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const fs::path kRoot = RIS_SOURCE_DIR;
+const fs::path kRoot = ris::test::source_dir();
 const fs::path kGoldenDir = kRoot / "tests" / "golden";
 
 bool env_set(const char* name) {

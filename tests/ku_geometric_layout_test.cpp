@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "build_paths.h"
 #include "ris/geometry/slar_geometry.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/sensor/radar_config.h"
@@ -32,7 +33,8 @@ struct LayoutCheck {
 // another solid or its layover, and no layover zones merge.
 LayoutCheck check_layout(const std::string& radar_file) {
   const RadarParams radar = load_radar(radar_file);
-  const Scene scene = build_scene_file(std::string(RIS_DATA_DIR) + "/scenes/ku-geometric.toml");
+  const Scene scene =
+      build_scene_file(std::string(ris::test::data_dir()) + "/scenes/ku-geometric.toml");
   const Track track = resolve_track(radar.track, scene, radar.source_file);
   const SlarGeometry g = compute_slar_geometry(scene, track, 0.0, radar.source_file);
   LayoutCheck out;
@@ -78,7 +80,7 @@ LayoutCheck check_layout(const std::string& radar_file) {
 }
 
 void expect_clean_layout(const std::string& radar_name) {
-  const LayoutCheck c = check_layout(std::string(RIS_DATA_DIR) + "/radars/" + radar_name);
+  const LayoutCheck c = check_layout(std::string(ris::test::data_dir()) + "/radars/" + radar_name);
   // Every one of the 700 lines but the 80-row checkerboard band and the
   // gaps between lanes crosses a solid; at least the four lanes' worth.
   EXPECT_GT(c.lines_with_solids, 400) << radar_name;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "ris/io/raster_io.h"
 #include "ris/scene/scene.h"
 #include "ris/scene/scene_io.h"
@@ -154,7 +155,7 @@ TEST(ModesCli, BadPpiSiteAndOffSceneTargetLeaveNothingBehind) {
 
 TEST(ModesCli, ShippedSarAndPpiRadarsRunOnTheStandardScene) {
   TempDir dir;
-  const std::string data = RIS_DATA_DIR;
+  const std::string data = ris::test::data_dir();
   // The example SAR with the example corner reflectors: every reflector seen
   // and measured at the design resolution, 2 looks x 7.5 m = 15 m, within 10%.
   const fs::path sar_out = dir / "sar";

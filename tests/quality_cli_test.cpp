@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "build_paths.h"
 #include "test_util.h"
 
 namespace ris {
@@ -42,7 +43,7 @@ TEST(QualityCli, SimulatedGeocodedProductWithCategoriesAndMask) {
 }
 
 TEST(QualityCli, RealNisarProductsSlcLayer) {
-  const std::string h5 = std::string(RIS_TEST_DATA_DIR) + "/real/winnipeg.h5";
+  const std::string h5 = std::string(ris::test::test_data_dir()) + "/real/winnipeg.h5";
   const auto r = test::run_ris("quality --json " + h5);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto j = nlohmann::json::parse(r.output);

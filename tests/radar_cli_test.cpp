@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "build_paths.h"
 #include "test_util.h"
 
 namespace ris {
@@ -17,7 +18,7 @@ TEST(RadarCli, InfoPrintsTheSeedFigure45Numbers) {
 }
 
 TEST(RadarCli, InfoShowsTheSarAndPpiParts) {
-  const std::string dir = std::string(RIS_DATA_DIR) + "/radars/";
+  const std::string dir = std::string(ris::test::data_dir()) + "/radars/";
   test::RunResult r = test::run_ris("radar info " + dir + "sar-x-band-stripmap.toml");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("mode                      sar,"), std::string::npos) << r.output;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "ris/io/raster_io.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/scene/scene_io.h"
@@ -186,7 +187,7 @@ TEST(SceneCli, ObjectsListsEveryType) {
 TEST(SceneCli, TheDocumentedExampleBuilds) {
   // The indented block under "## Example" in docs/scene-format.md.
   const std::string doc =
-      test::read_file(fs::path(RIS_DATA_DIR).parent_path() / "docs" / "scene-format.md");
+      test::read_file(fs::path(ris::test::data_dir()).parent_path() / "docs" / "scene-format.md");
   const std::size_t start = doc.find("## Example");
   ASSERT_NE(start, std::string::npos);
   const std::size_t end = doc.find("\n## ", start + 1);

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "test_util.h"
 
 namespace ris {
@@ -26,7 +27,7 @@ double peak_rss_mib(const std::vector<std::string>& args) {
   const pid_t pid = fork();
   if (pid == 0) {
     std::vector<char*> argv;
-    std::string exe = RIS_EXE;
+    std::string exe = ris::test::ris_exe();
     argv.push_back(exe.data());
     std::vector<std::string> copy = args;
     for (std::string& a : copy) argv.push_back(a.data());
@@ -68,7 +69,7 @@ near_edge_distance = "4000 m"
               0);
     rss[k++] =
         peak_rss_mib({"simulate", "--quiet", "--scene", scene, "--radar", radar, "--backscatter",
-                      std::string(RIS_DATA_DIR) + "/backscatter/generic-terrain.toml",
+                      std::string(ris::test::data_dir()) + "/backscatter/generic-terrain.toml",
                       "--block-lines", "32", "--out", (dir / (std::string("o") + rows)).string()});
     ASSERT_GT(rss[k - 1], 0.0) << rows << " rows: the run failed";
   }

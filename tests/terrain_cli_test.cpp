@@ -5,13 +5,14 @@
 #include <cmath>
 #include <filesystem>
 
+#include "build_paths.h"
 #include "ris/io/raster_io.h"
 #include "test_util.h"
 
 namespace ris {
 namespace {
 
-const std::string kDem = std::string(RIS_TEST_DATA_DIR) + "/dem/";
+const std::string kDem = std::string(ris::test::test_data_dir()) + "/dem/";
 
 std::size_t nan_count(const RasterF64& r, int band) {
   std::size_t n = 0;
@@ -111,7 +112,7 @@ end_latlon = [34.22, -118.55]
 )");
   const auto out = dir / "run";
   auto r = test::run_ris("simulate --scene " + kDem + "SanAnd_dem.tif --radar " +
-                         (dir / "radar.toml").string() + " --backscatter " + RIS_DATA_DIR +
+                         (dir / "radar.toml").string() + " --backscatter " + ris::test::data_dir() +
                          "/backscatter/generic-terrain.toml --out " + out.string());
   // Without land cover every cell is category 0, which the generic library lacks.
   EXPECT_NE(r.exit_code, 0);
@@ -120,7 +121,7 @@ end_latlon = [34.22, -118.55]
                 .exit_code,
             0);
   r = test::run_ris("simulate --scene " + (dir / "grass.tif").string() + " --radar " +
-                    (dir / "radar.toml").string() + " --backscatter " + RIS_DATA_DIR +
+                    (dir / "radar.toml").string() + " --backscatter " + ris::test::data_dir() +
                     "/backscatter/generic-terrain.toml --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   RasterF64 geo = read_raster_f64(out / "geocoded_power.tif");

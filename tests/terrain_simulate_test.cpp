@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "build_paths.h"
 #include "ris/scene/dem_import.h"
 #include "ris/scene/scene_io.h"
 #include "ris/sensor/radar_config.h"
@@ -36,7 +37,7 @@ end_latlon = [34.22, -118.55]
 }
 
 TEST(TerrainSimulate, GeographicDemAndAFinerUtmReprojectionGiveTheSameImage) {
-  const std::string dem = std::string(RIS_TEST_DATA_DIR) + "/dem/SanAnd_dem.tif";
+  const std::string dem = std::string(ris::test::test_data_dir()) + "/dem/SanAnd_dem.tif";
   // Directly: read_scene imports the geographic DEM on the fly (30 m cells).
   const Scene direct = read_scene(dem);
   // Through a reprojection on another grid: 15 m cells.

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include "build_paths.h"
+
 namespace ris::test {
 
 // A fresh folder under the system temp dir, removed when the object dies.
@@ -52,7 +54,7 @@ struct RunResult {
 inline RunResult run_ris(const std::string& args) {
   TempDir tmp;
   const std::string log = (tmp / "out.txt").string();
-  const std::string cmd = std::string(RIS_EXE) + " " + args + " > " + log + " 2>&1";
+  const std::string cmd = std::string(ris::test::ris_exe()) + " " + args + " > " + log + " 2>&1";
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "command_registry.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/error.h"
 #include "ris/util/memory_reuse.h"
 
@@ -23,10 +24,7 @@ Registration::Registration(std::string name, AddCommand add) {
 }
 
 std::string data_path(const std::string& relative) {
-  // RIS_DATA overrides the data folder compiled in (for installed copies).
-  const char* env = std::getenv("RIS_DATA");
-  const std::filesystem::path base = (env != nullptr && *env != '\0') ? env : RIS_DATA_DIR;
-  return (base / relative).string();
+  return (data_dir() / relative).string();
 }
 
 std::string default_scene_path() {

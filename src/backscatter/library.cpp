@@ -12,6 +12,7 @@
 #include "ris/backscatter/backscatter_model.h"
 #include "ris/backscatter/sigma0_table.h"
 #include "ris/io/config_table.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -248,9 +249,7 @@ std::unique_ptr<Sigma0Source> load_sigma0_source(const std::string& path) {
 }
 
 std::string default_sigma0_library_path() {
-  const char* env = std::getenv("RIS_DATA");
-  const std::filesystem::path base = (env != nullptr && *env != '\0') ? env : RIS_DATA_DIR;
-  return (base / "backscatter" / "ku-geometric.toml").string();
+  return (data_dir() / "backscatter" / "ku-geometric.toml").string();
 }
 
 }  // namespace ris

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "ris/backscatter/backscatter_model.h"
 #include "ris/backscatter/library.h"
 #include "ris/io/config_table.h"
@@ -30,7 +31,8 @@ std::unique_ptr<BackscatterModel> handbook_class(const std::string& terrain) {
 }
 
 TEST(LibraryCalibration, GenericTerrainIsWithinOneDbOfItsHandbookClass) {
-  auto lib = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/generic-terrain.toml");
+  auto lib =
+      load_sigma0_source(std::string(ris::test::data_dir()) + "/backscatter/generic-terrain.toml");
   struct Claim {
     std::uint16_t id;
     const char* terrain;
@@ -63,7 +65,8 @@ TEST(LibraryCalibration, GenericTerrainIsWithinOneDbOfItsHandbookClass) {
 // every handbook class at L, S and C band (shrubs: L and C; its S rows are not
 // shipped), each equal to the class's ulaby_dobson model.
 TEST(LibraryCalibration, HandbookLibraryResolvesEveryClassAtLSAndC) {
-  auto lib = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/ulaby-dobson-1989.toml");
+  auto lib = load_sigma0_source(std::string(ris::test::data_dir()) +
+                                "/backscatter/ulaby-dobson-1989.toml");
   const char* classes[] = {"soil", "grass", "short_vegetation", "shrubs", "dry_snow", "wet_snow"};
   ASSERT_EQ(lib->category_ids().size(), 6u);
   for (std::uint16_t id = 40; id <= 45; ++id) {

@@ -1,4 +1,5 @@
 #include "ris/backscatter/library.h"
+#include "build_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -171,7 +172,8 @@ TEST(Library, ShippedKuGeometricCoversTheTenCategoriesFromLToKuBand) {
 }
 
 TEST(Library, ShippedGenericTerrainCoversIds20To27FromLToKuBand) {
-  auto src = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/generic-terrain.toml");
+  auto src =
+      load_sigma0_source(std::string(ris::test::data_dir()) + "/backscatter/generic-terrain.toml");
   std::vector<std::uint16_t> ids;
   for (std::uint16_t i = 20; i <= 27; ++i) ids.push_back(i);
   EXPECT_EQ(src->category_ids(), ids);
@@ -194,7 +196,7 @@ TEST(Library, ShippedGenericTerrainCoversIds20To27FromLToKuBand) {
 // sigma0() at every angle of the table, L to Ku band, each polarisation.
 TEST(Library, CurvesAreThePerAngleValuesExactly) {
   for (const char* file : {"ku-geometric.toml", "generic-terrain.toml"}) {
-    auto src = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/" + file);
+    auto src = load_sigma0_source(std::string(ris::test::data_dir()) + "/backscatter/" + file);
     std::vector<double> theta;
     for (int i = 0; i <= Sigma0Lut::kSteps; ++i)
       theta.push_back(std::min(i * Sigma0Lut::kStepRad, kPi / 2.0));
@@ -215,7 +217,7 @@ TEST(Library, CurvesAreThePerAngleValuesExactly) {
 }
 
 TEST(Library, ShippedTableMatchesTheLibraryItWasGeneratedFrom) {
-  const std::string dir = std::string(RIS_DATA_DIR) + "/backscatter/";
+  const std::string dir = std::string(ris::test::data_dir()) + "/backscatter/";
   auto lib = load_sigma0_source(dir + "ku-geometric.toml");
   auto table = load_sigma0_source(dir + "ku-geometric-8.6GHz.csv");
   for (std::uint16_t c = 1; c <= 10; ++c) {

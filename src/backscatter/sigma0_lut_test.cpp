@@ -1,4 +1,5 @@
 #include "ris/backscatter/sigma0_lut.h"
+#include "build_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -45,7 +46,8 @@ TEST(Sigma0Lut, InterpolatesWithin1e4Relative) {
 // deg at L, X and Ku band, both like polarisations.
 TEST(Sigma0Lut, ShippedLibrariesInterpolateWithin1e3Relative) {
   for (const char* file : {"ku-geometric.toml", "generic-terrain.toml"}) {
-    const auto src = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/" + file);
+    const auto src =
+        load_sigma0_source(std::string(ris::test::data_dir()) + "/backscatter/" + file);
     std::vector<std::uint16_t> cats;
     for (int c = 0; c < 100; ++c)
       if (src->has_category(static_cast<std::uint16_t>(c)))

@@ -1,6 +1,7 @@
 // Scene pictures: palette, hillshade against the analytic cosine, the preview
 // map's colours and contours, the PNG.
 #include "ris/image/scene_preview.h"
+#include "build_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -32,7 +33,7 @@ TEST(CategoryPalette, CropsAreDistinctAndStable) {
 
 TEST(CategoryPalette, MatchesTheShippedCategoryLibraries) {
   for (const char* lib : {"ku-geometric.toml", "generic-terrain.toml"}) {
-    const auto src = load_sigma0_source(std::string(RIS_DATA_DIR) + "/backscatter/" + lib);
+    const auto src = load_sigma0_source(std::string(ris::test::data_dir()) + "/backscatter/" + lib);
     int checked = 0;
     for (std::uint16_t id = 0; id < 64; ++id) {
       if (!src->has_category(id)) continue;

@@ -1,4 +1,5 @@
 #include "ris/io/ellipsoidal_dem.h"
+#include "build_paths.h"
 
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
@@ -16,7 +17,7 @@ namespace ris {
 namespace {
 
 std::string dem_path(const std::string& name) {
-  return std::string(RIS_TEST_DATA_DIR) + "/dem/" + name;
+  return std::string(ris::test::test_data_dir()) + "/dem/" + name;
 }
 
 // Rome-30m-DEM.tif declares EGM96 heights (EPSG:4326+5773): PROJ adds the

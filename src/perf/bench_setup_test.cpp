@@ -1,4 +1,5 @@
 #include "ris/perf/bench_setup.h"
+#include "build_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +31,8 @@ TEST(BenchSetup, FractalSceneIsSeededWithReliefAndAllCategories) {
 
 TEST(BenchSetup, RadarSwathCoversTheSceneAtAnyHeading) {
   const Scene s = make_bench_scene(50, 70, 10.0, 1);
-  const RadarParams base = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+  const RadarParams base =
+      load_radar(std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml");
   for (double heading_deg : {0.0, 30.0, 90.0, 200.0}) {
     const RadarParams r = bench_radar(base, s, deg_to_rad(heading_deg));
     const Track t = resolve_track(r.track, s, "bench");

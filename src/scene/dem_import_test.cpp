@@ -1,4 +1,5 @@
 #include "ris/scene/dem_import.h"
+#include "build_paths.h"
 
 #include <cpl_string.h>
 #include <fmt/format.h>
@@ -20,7 +21,7 @@
 namespace ris {
 namespace {
 
-const std::string kDemDir = std::string(RIS_TEST_DATA_DIR) + "/dem/";
+const std::string kDemDir = std::string(ris::test::test_data_dir()) + "/dem/";
 
 std::string wkt_of_epsg(int code) {
   OGRSpatialReference srs;

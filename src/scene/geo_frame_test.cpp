@@ -1,4 +1,5 @@
 #include "ris/scene/geo_frame.h"
+#include "build_paths.h"
 
 #include <cpl_string.h>
 #include <gtest/gtest.h>
@@ -34,7 +35,7 @@ double ground_distance_m(double lon0, double lat0, double lon1, double lat1) {
 
 TEST(GeoFrame, LatLonSceneLatLonRoundTripsWithinOneCentimetre) {
   // The scene frame of the imported Rome DEM, and points across and beyond it.
-  ImportedDem dem = import_dem(std::string(RIS_TEST_DATA_DIR) + "/dem/Rome-30m-DEM.tif");
+  ImportedDem dem = import_dem(std::string(ris::test::test_data_dir()) + "/dem/Rome-30m-DEM.tif");
   GeoFrame frame(dem.scene.crs_wkt, "Rome");
   EXPECT_EQ(frame.geographic_crs_name(), "WGS 84");
   EXPECT_EQ(frame.scene_crs_name(), "WGS 84 / UTM zone 33N");

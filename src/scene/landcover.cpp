@@ -15,6 +15,7 @@
 
 #include "ris/io/config_table.h"
 #include "ris/io/gdal_util.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -33,9 +34,7 @@ fs::path resolve_library(const std::string& library, const fs::path& mapping_pat
   if (p.is_absolute()) return p;
   const fs::path beside = mapping_path.parent_path() / p;
   if (fs::exists(beside)) return beside;
-  const char* env = std::getenv("RIS_DATA");
-  const fs::path base = (env != nullptr && *env != '\0') ? env : RIS_DATA_DIR;
-  return base / p;
+  return data_dir() / p;
 }
 
 // Name -> id of every [[category]] in a category library (only these two

@@ -1,4 +1,5 @@
 #include "ris/scene/landcover.h"
+#include "build_paths.h"
 
 #include <cpl_string.h>
 #include <gtest/gtest.h>
@@ -209,7 +210,7 @@ TEST_F(LandCover, MappingFileErrorsNameFileAndKey) {
 }
 
 TEST_F(LandCover, ShippedMappingsResolveAgainstTheGenericTerrainLibrary) {
-  const std::string data = RIS_DATA_DIR;
+  const std::string data = ris::test::data_dir();
   const auto names = read_category_names(data + "/backscatter/generic-terrain.toml");
   LandCoverMapping wc = read_landcover_mapping(data + "/landcover/esa-worldcover.toml");
   EXPECT_EQ(wc.classes.size(), 11u);

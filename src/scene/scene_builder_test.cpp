@@ -1,6 +1,7 @@
 // Scene builder: each solid against its formula, rotation, volume, no holes,
 // composition, the standard scene's statistics, bad input.
 #include "ris/scene/scene_builder.h"
+#include "build_paths.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -344,7 +345,7 @@ category = 4
 
 TEST(SceneBuilder, StandardSceneHasTheSeedsSizeApexAndTenCategories) {
   const SceneDescription d =
-      read_scene_description(std::string(RIS_DATA_DIR) + "/scenes/ku-geometric.toml");
+      read_scene_description(std::string(ris::test::data_dir()) + "/scenes/ku-geometric.toml");
   EXPECT_EQ(d.name, "ku-geometric");
   EXPECT_EQ(d.category_names.size(), 10u);
   EXPECT_EQ(d.category_names.at(1), "wheat stubble");

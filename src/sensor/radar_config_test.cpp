@@ -1,4 +1,5 @@
 #include "ris/sensor/radar_config.h"
+#include "build_paths.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -26,7 +27,7 @@ const auto expect_input_error = test::expect_radar_error;
 constexpr double kFt = kFeetToMetres;
 
 std::string radar_file(const std::string& name) {
-  return std::string(RIS_DATA_DIR) + "/radars/" + name;
+  return std::string(ris::test::data_dir()) + "/radars/" + name;
 }
 
 // A minimal valid radar; tests append or replace lines.
@@ -317,7 +318,7 @@ namespace {
 
 // The complete example in docs/radar-format.md parses and means what it says.
 TEST(RadarConfig, DocumentationExampleParses) {
-  const std::string doc_path = std::string(RIS_DATA_DIR) + "/../docs/radar-format.md";
+  const std::string doc_path = std::string(ris::test::data_dir()) + "/../docs/radar-format.md";
   std::ifstream f(doc_path);
   ASSERT_TRUE(f) << doc_path;
   std::stringstream ss;

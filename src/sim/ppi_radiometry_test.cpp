@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/ppi_simulation.h"
 #include "ris/util/units.h"
@@ -104,7 +105,7 @@ TEST(PpiRadiometry, FlatGroundClutterFollowsTheRadarEquationOverTheBeam) {
 // same power (docs/modes.md), but for the table's linear interpolation.
 TEST(PpiRadiometry, CosecantSquaredPatternGivesFlatGroundTheSamePowerAtEveryRange) {
   RadarParams radar =
-      load_radar(std::string(RIS_DATA_DIR) + "/radars/ppi-airborne-nav-10000ft.toml");
+      load_radar(std::string(ris::test::data_dir()) + "/radars/ppi-airborne-nav-10000ft.toml");
   const Scene s = Scene::flat(420, 420, 20.0, 0.0f, 0);  // 8.4 km square
   radar.ppi.site_x_m = 4200.0;
   radar.ppi.site_y_m = 4200.0;

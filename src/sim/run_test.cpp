@@ -1,4 +1,5 @@
 #include "ris/sim/run.h"
+#include "build_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +18,8 @@
 namespace ris {
 namespace {
 
-const std::string kScene = std::string(RIS_DATA_DIR) + "/scenes/ku-geometric.toml";
-const std::string kRadar = std::string(RIS_DATA_DIR) + "/radars/seed-fig4-5.toml";
+const std::string kScene = std::string(ris::test::data_dir()) + "/scenes/ku-geometric.toml";
+const std::string kRadar = std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml";
 
 RunRequest standard_request() {
   RunRequest r;

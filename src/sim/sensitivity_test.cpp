@@ -2,6 +2,7 @@
 // they say, no reduction gives no difference, coarser ground truth moves the
 // image monotonically, one row per grid point, bad keys and values refused.
 #include "ris/sim/sensitivity.h"
+#include "build_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -54,8 +55,8 @@ TEST(Sensitivity, DetailReductionsAverageRoundAndMislabelAsDocumented) {
 SensitivityStudy standard_study() {
   SensitivityStudy st;
   st.scene = std::make_shared<Scene>(
-      load_scene_source(std::string(RIS_DATA_DIR) + "/scenes/ku-geometric.toml").scene);
-  st.radar = load_radar(std::string(RIS_DATA_DIR) + "/radars/seed-fig4-5.toml");
+      load_scene_source(std::string(ris::test::data_dir()) + "/scenes/ku-geometric.toml").scene);
+  st.radar = load_radar(std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml");
   st.backscatter_path = default_sigma0_library_path();
   st.sigma0 = load_sigma0_source(st.backscatter_path);
   return st;

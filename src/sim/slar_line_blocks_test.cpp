@@ -1,4 +1,5 @@
 #include "ris/sim/slar_line_blocks.h"
+#include "build_paths.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -52,7 +53,8 @@ void expect_fused_equals_stages(const std::vector<double>& headings_deg, double 
                                 bool sar = false) {
   const Scene s = test_scene();
   const test::CosineSigma0Source src({1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
-  const RadarParams base = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+  const RadarParams base =
+      load_radar(std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml");
   const int saved = omp_get_max_threads();
   for (double heading_deg : headings_deg) {
     for (LookSide side : {LookSide::right, LookSide::left}) {
@@ -113,7 +115,8 @@ TEST(SlarLineBlocks, FusedSarEqualsReferenceStagesByteForByte) {
 
 TEST(SlarLineBlocks, AppliesOnlyToOneLinePerCellAlongAnAxis) {
   const Scene s = test_scene();
-  const RadarParams base = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+  const RadarParams base =
+      load_radar(std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml");
   const RadarParams along = bench_radar(base, s, 0.0);
   const Track t0 = resolve_track(along.track, s, "r");
   EXPECT_TRUE(fused_slar_applies(s, slar_geometry_layout(s, t0, 0.0)));

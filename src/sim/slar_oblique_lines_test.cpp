@@ -9,6 +9,7 @@
 #include <cstring>
 #include <string>
 
+#include "build_paths.h"
 #include "ris/geometry/scene_geometry_maps.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/slar_simulation.h"
@@ -23,7 +24,7 @@ using test::same_bytes;
 // 600 m-high track from (x0, y0) to (x1, y1), a swath from 400 to 900 m of
 // slant range.
 RadarParams crossing_radar(double x0, double y0, double x1, double y1, LookSide side) {
-  RadarParams r = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+  RadarParams r = load_radar(std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml");
   r.track.kind = TrackSpec::Kind::endpoints;
   r.track.start_x_m = x0;
   r.track.start_y_m = y0;

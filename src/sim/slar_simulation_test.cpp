@@ -1,4 +1,5 @@
 #include "ris/sim/slar_simulation.h"
+#include "build_paths.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -72,7 +73,8 @@ TEST(SlarSimulation, SameSeedSameBytesForOneAndTwoThreads) {
 TEST(SlarSimulation, OutputsDoNotDependOnWhatTheHeapHeld) {
   const Scene s = test::rugged_test_scene();
   const test::CosineSigma0Source src({1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
-  const RadarParams base = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+  const RadarParams base =
+      load_radar(std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml");
   const auto bytes_of = [](const auto& v) {
     const auto* p = reinterpret_cast<const unsigned char*>(v.data());
     return std::vector<unsigned char>(p, p + v.size() * sizeof(v[0]));

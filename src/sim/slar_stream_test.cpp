@@ -1,4 +1,5 @@
 #include "ris/sim/slar_stream.h"
+#include "build_paths.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -34,7 +35,7 @@ Scene test_scene() {
 }
 
 RadarParams test_radar(const Scene& s, double heading_deg, bool auto_reference) {
-  RadarParams r = load_radar(RIS_DATA_DIR "/radars/seed-fig4-5.toml");
+  RadarParams r = load_radar(std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml");
   r = bench_radar(r, s, deg_to_rad(heading_deg));
   r.track.altitude_m = 600.0;  // steep enough for shadow over the relief
   r.track.near_edge_ground_m = 1500.0;

@@ -26,6 +26,7 @@
 #include <sstream>
 
 #include "backscatter/models/models.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/error.h"
 
 namespace ris::detail {
@@ -137,9 +138,7 @@ class UlabyDobson final : public BackscatterModel {
 };
 
 std::string default_coefficient_file() {
-  const char* env = std::getenv("RIS_DATA");
-  const std::filesystem::path base = (env != nullptr && *env != '\0') ? env : RIS_DATA_DIR;
-  return (base / "backscatter" / "ulaby-dobson-1989.csv").string();
+  return (data_dir() / "backscatter" / "ulaby-dobson-1989.csv").string();
 }
 
 }  // namespace
