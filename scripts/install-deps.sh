@@ -13,6 +13,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcairo2-dev fonts-dejavu-core
   libkissfft-dev
+  # Boost.Math's Gauss-Legendre rules (header-only): the I2EM's HV integral
+  libboost-dev
   clang-format ccache python3 hyperfine
   # The Python module (import ris, docs/python.md) and its tests
   pybind11-dev python3-dev python3-numpy python3-pytest python3-gdal

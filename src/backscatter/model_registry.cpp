@@ -32,6 +32,7 @@ constexpr std::array kModels = {
           "P1 + P2 exp(-P3 t) + P4 cos(P5 t + P6) dB, Ulaby & Dobson 1989"},
     Entry{"dubois1995", detail::make_dubois1995, "bare soil HH/VV, Dubois, van Zyl & Engman 1995"},
     Entry{"spm", detail::make_spm, "first-order small perturbation, Gaussian/exponential"},
+    Entry{"i2em", detail::make_i2em, "improved integral equation model, Fung et al. 2002"},
     Entry{"water_cloud", detail::make_water_cloud,
           "vegetation over a ground model, Attema & Ulaby 1978"},
 };
