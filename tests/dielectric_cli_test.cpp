@@ -37,6 +37,28 @@ TEST(DielectricCli, JsonHasOneSeriesPerModelAndFrequencyAndNeedsNoSandForMironov
   EXPECT_NEAR(j[1]["eps_imag"][1].get<double>(), 2.52547, 1e-3);
 }
 
+TEST(DielectricCli, DobsonConductivityIsSelectable) {
+  // dielectric_test.cpp's loam at mv 0.3, 1.4 GHz: eps'' 2.56076 with Dobson's
+  // conductivity fit, 1.53288 with Peplinski's; eps' 16.87544 with both.
+  const std::string soil =
+      "dielectric --model dobson1985 --moisture 0.3 -f '1.4 GHz' --clay 0.135 --sand 0.306 "
+      "--format json";
+  const auto d = run_ris(soil);
+  const auto p = run_ris(soil + " --conductivity peplinski1995");
+  ASSERT_EQ(d.exit_code, 0) << d.output;
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  const nlohmann::json jd = nlohmann::json::parse(d.output);
+  const nlohmann::json jp = nlohmann::json::parse(p.output);
+  EXPECT_EQ(jd[0]["dobson_conductivity"], "dobson1985");
+  EXPECT_EQ(jp[0]["dobson_conductivity"], "peplinski1995");
+  EXPECT_NEAR(jd[0]["eps_imag"][0].get<double>(), 2.56076, 1e-4);
+  EXPECT_NEAR(jp[0]["eps_imag"][0].get<double>(), 1.53288, 1e-4);
+  EXPECT_DOUBLE_EQ(jd[0]["eps_real"][0].get<double>(), jp[0]["eps_real"][0].get<double>());
+  const auto bad = run_ris(soil + " --conductivity ohm");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("--conductivity"), std::string::npos) << bad.output;
+}
+
 TEST(DielectricCli, CsvAndPlotAreWritten) {
   TempDir dir;
   const std::string csv = (dir / "eps.csv").string();

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <sstream>
 
 #include "command_registry.h"
@@ -43,6 +44,7 @@ struct Options {
   double sand = 0.4;
   double bulk_density = 1.5;
   double temperature = 20.0;
+  std::string conductivity = "dobson1985";
   std::string format = "table";
   std::string out;
   std::string plot;
@@ -105,12 +107,20 @@ void run(const Options& o) {
     throw InputError("", "--bulk-density", "expected a dry bulk density in (0, 2.66) g/cm3");
   }
 
+  const std::optional<ris::DobsonConductivity> conductivity =
+      ris::parse_dobson_conductivity(o.conductivity);
+  if (!conductivity) {
+    throw InputError("", "--conductivity",
+                     "expected dobson1985 or peplinski1995, got \"" + o.conductivity + "\"");
+  }
+
   std::vector<Series> series;
   for (ris::DielectricModel m : models) {
     for (double f : freqs) {
       Series s{m, f, {}, {}};
       for (double mv : moisture) {
-        const ris::SoilComposition soil{mv, o.clay, o.sand, o.bulk_density, o.temperature};
+        const ris::SoilComposition soil{mv,           o.clay, o.sand, o.bulk_density, o.temperature,
+                                        *conductivity};
         for (const std::string& problem : ris::dielectric_validity(m, soil, f)) {
           const std::string msg = fmt::format("{}: {}", ris::to_string(m), problem);
           if (!o.allow_extrapolation) {
@@ -127,8 +137,12 @@ void run(const Options& o) {
   }
 
   std::string text;
-  const std::string soil_line = fmt::format("clay {:g}, sand {:g}, bulk density {:g} g/cm3, {:g} C",
-                                            o.clay, o.sand, o.bulk_density, o.temperature);
+  const std::string soil_line =
+      fmt::format("clay {:g}, sand {:g}, bulk density {:g} g/cm3, {:g} C{}", o.clay, o.sand,
+                  o.bulk_density, o.temperature,
+                  *conductivity == ris::DobsonConductivity::dobson1985
+                      ? ""
+                      : ", dobson1985 with the peplinski1995 conductivity");
   if (o.format == "csv") {
     fmt::format_to(std::back_inserter(text),
                    "# soil permittivity written by ris {} (ris "
@@ -152,6 +166,7 @@ void run(const Options& o) {
                    {"sand", o.sand},
                    {"bulk_density_g_cm3", o.bulk_density},
                    {"temperature_c", o.temperature},
+                   {"dobson_conductivity", o.conductivity},
                    {"moisture_m3_m3", moisture},
                    {"eps_real", s.eps_re},
                    {"eps_imag", s.eps_im}});
@@ -223,6 +238,10 @@ void add_dielectric(CLI::App& app) {
   cmd->add_option("--bulk-density", opts->bulk_density, "Dry bulk density, g/cm3 (dobson1985)")
       ->capture_default_str();
   cmd->add_option("--temperature", opts->temperature, "Soil temperature, deg C (dobson1985)")
+      ->capture_default_str();
+  cmd->add_option("--conductivity", opts->conductivity,
+                  "dobson1985's effective-conductivity fit: dobson1985 (1.4-18 GHz) or "
+                  "peplinski1995 (0.3-1.3 GHz; docs/backscatter.md)")
       ->capture_default_str();
   cmd->add_option("--format", opts->format, "Output: table, csv or json")->capture_default_str();
   cmd->add_option("--out,-o", opts->out, "Write the table/CSV/JSON to this file instead of stdout");

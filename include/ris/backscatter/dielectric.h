@@ -22,16 +22,26 @@ namespace ris {
 
 enum class DielectricModel { dobson1985, hallikainen1985, mironov2009 };
 
+// The effective conductivity fit in Dobson 1985's free-water loss term
+// (src/backscatter/dielectric/dobson1985.cpp): Dobson et al.'s own, fitted at
+// 1.4-18 GHz, or Peplinski, Ulaby & Dobson's (1995), fitted at 0.3-1.3 GHz and
+// used at every band by several radiative-transfer codes (HUT, DMRT-ML). They
+// differ by 10-70 % in eps''.
+enum class DobsonConductivity { dobson1985, peplinski1995 };
+
 struct SoilComposition {
   double moisture_m3_m3 = 0.2;      // volumetric water content mv
   double clay_fraction = 0.2;       // mass fraction of clay, 0..1
   double sand_fraction = 0.4;       // mass fraction of sand, 0..1
   double bulk_density_g_cm3 = 1.5;  // dry bulk density rho_b (Dobson only)
   double temperature_c = 20.0;      // soil temperature (Dobson only)
+  DobsonConductivity conductivity = DobsonConductivity::dobson1985;  // (Dobson only)
 };
 
 std::optional<DielectricModel> parse_dielectric_model(std::string_view name);
 std::string_view to_string(DielectricModel m);
+std::optional<DobsonConductivity> parse_dobson_conductivity(std::string_view name);
+std::string_view to_string(DobsonConductivity c);
 
 // The complex relative permittivity (eps' - j eps'') of the soil at frequency_hz.
 std::complex<double> soil_permittivity(DielectricModel m, const SoilComposition& soil,

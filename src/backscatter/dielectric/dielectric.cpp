@@ -25,6 +25,16 @@ std::string_view to_string(DielectricModel m) {
   return "?";
 }
 
+std::optional<DobsonConductivity> parse_dobson_conductivity(std::string_view name) {
+  if (name == "dobson1985") return DobsonConductivity::dobson1985;
+  if (name == "peplinski1995") return DobsonConductivity::peplinski1995;
+  return std::nullopt;
+}
+
+std::string_view to_string(DobsonConductivity c) {
+  return c == DobsonConductivity::dobson1985 ? "dobson1985" : "peplinski1995";
+}
+
 std::complex<double> soil_permittivity(DielectricModel m, const SoilComposition& soil,
                                        double frequency_hz) {
   switch (m) {

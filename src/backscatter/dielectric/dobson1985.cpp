@@ -8,7 +8,12 @@
 //   eps_fw'  = eps_w_inf + (eps_w0 - eps_w_inf) / (1 + (2 pi f tau_w)^2)
 //   eps_fw'' = 2 pi f tau_w (eps_w0 - eps_w_inf) / (1 + (2 pi f tau_w)^2)
 //              + sigma_eff / (2 pi eps_0 f) (rho_s - rho_b) / (rho_s mv)
-//   sigma_eff = -1.645 + 1.939 rho_b - 2.25622 S + 1.594 C   (S/m)
+//   sigma_eff = -1.645 + 1.939 rho_b - 2.25622 S + 1.594 C   (S/m; default,
+//               "dobson1985": Dobson et al. 1985, fitted at 1.4-18 GHz)
+//   sigma_eff = 0.0467 + 0.2204 rho_b - 0.4111 S + 0.6614 C  ("peplinski1995":
+//               Peplinski, Ulaby & Dobson 1995 eq. 10, fitted at 0.3-1.3 GHz;
+//               its companion correction of eps' below 1.4 GHz, 1.15 eps' -
+//               0.68, is not applied: ris's range starts at 1.4 GHz)
 // and eps_w_inf = 4.9, eps_w0(T) and tau_w(T) of Stogryn (1971) as given in
 // Ulaby, Moore & Fung (1986), Microwave Remote Sensing vol. III, appendix E.
 // Source: Dobson, M. C., Ulaby, F. T., Hallikainen, M. T. & El-Rayes, M. A.
@@ -39,7 +44,9 @@ std::complex<double> dobson1985_permittivity(const SoilComposition& soil, double
   const double eps_s = std::pow(1.01 + 0.44 * kRhoS, 2.0) - 0.062;
   const double beta_re = 1.2748 - 0.519 * s - 0.152 * c;
   const double beta_im = 1.33797 - 0.603 * s - 0.166 * c;
-  const double sigma_eff = -1.645 + 1.939 * rho_b - 2.25622 * s + 1.594 * c;
+  const double sigma_eff = soil.conductivity == DobsonConductivity::dobson1985
+                               ? -1.645 + 1.939 * rho_b - 2.25622 * s + 1.594 * c
+                               : 0.0467 + 0.2204 * rho_b - 0.4111 * s + 0.6614 * c;
 
   // Free water (Stogryn 1971): static permittivity and 2 pi times relaxation time.
   const double eps_w0 = 88.045 - 0.4147 * t + 6.295e-4 * t * t + 1.075e-5 * t * t * t;

@@ -108,6 +108,27 @@ TEST(SoilPermittivityTable, Mironov2009NeedsNoSandTheOthersDo) {
   }
 }
 
+TEST(SoilPermittivityTable, DobsonConductivityKey) {
+  // The key selects the effective-conductivity fit in Dobson 1985's loss term;
+  // it changes eps'' only, so a model that reads |eps| (Oh 1992's Fresnel
+  // reflectivity) moves a little but does move.
+  const std::string head =
+      R"(name = "oh1992", rms_height = "1 cm", permittivity = { model = "dobson1985", moisture = 0.2, clay = 0.135, sand = 0.306)";
+  auto def = model(head + " }");
+  auto dob = model(head + R"(, conductivity = "dobson1985" })");
+  auto pep = model(head + R"(, conductivity = "peplinski1995" })");
+  const RadarBand band{1.4e9, Polarisation::VV};
+  const double t = deg_to_rad(30.0);
+  EXPECT_EQ(def->sigma0(t, band), dob->sigma0(t, band));  // the default is Dobson's own fit
+  EXPECT_NE(dob->sigma0(t, band), pep->sigma0(t, band));
+  try {
+    model(head + R"(, conductivity = "ohm" })");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "m.permittivity.conductivity");
+  }
+}
+
 // --- Oh 2004 -------------------------------------------------------------------
 
 TEST(Oh2004, FormulaValuesAtThreeAnglesAndThreePolarisations) {

@@ -23,6 +23,12 @@ std::string SoilPermittivity::describe() const {
     return fmt::format("{} (mv = {:g}, clay = {:g})", to_string(*model_), soil_.moisture_m3_m3,
                        soil_.clay_fraction);
   }
+  if (*model_ == DielectricModel::dobson1985 &&
+      soil_.conductivity != DobsonConductivity::dobson1985) {
+    return fmt::format("{} (mv = {:g}, clay = {:g}, sand = {:g}, conductivity {})",
+                       to_string(*model_), soil_.moisture_m3_m3, soil_.clay_fraction,
+                       soil_.sand_fraction, to_string(soil_.conductivity));
+  }
   return fmt::format("{} (mv = {:g}, clay = {:g}, sand = {:g})", to_string(*model_),
                      soil_.moisture_m3_m3, soil_.clay_fraction, soil_.sand_fraction);
 }
@@ -62,6 +68,11 @@ SoilPermittivity read_soil_permittivity(ConfigTable& params, const std::string& 
   if (model == DielectricModel::dobson1985) {
     soil.bulk_density_g_cm3 = t->get_double_or("bulk_density", soil.bulk_density_g_cm3);
     soil.temperature_c = t->get_double_or("temperature", soil.temperature_c);
+    soil.conductivity =
+        t->get_enum_or<DobsonConductivity>("conductivity",
+                                           {{"dobson1985", DobsonConductivity::dobson1985},
+                                            {"peplinski1995", DobsonConductivity::peplinski1995}},
+                                           DobsonConductivity::dobson1985);
     if (!(soil.bulk_density_g_cm3 > 0.0 && soil.bulk_density_g_cm3 < 2.66)) {
       t->fail("bulk_density", "expected a dry bulk density in (0, 2.66) g/cm3");
     }

@@ -10,6 +10,7 @@
 //               sand = 0.40            # mass fraction
 //               bulk_density = 1.5     # g/cm3, optional (dobson1985 only)
 //               temperature = 20.0     # deg C, optional (dobson1985 only)
+//               conductivity = "dobson1985"  # or "peplinski1995" (dobson1985 only)
 #pragma once
 
 #include <complex>
