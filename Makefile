@@ -6,7 +6,7 @@ ifeq ($(CI),true)
   CMAKE_FLAGS += -DRIS_WARNINGS_AS_ERRORS=ON
 endif
 
-.PHONY: deps configure build demo test bench format format-check clean
+.PHONY: deps configure build demo test bench format format-check clean sanitize fuzz
 
 deps:
 	./scripts/install-deps.sh
@@ -32,5 +32,28 @@ format:
 format-check:
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.h')
 
+# AddressSanitizer + UndefinedBehaviorSanitizer over the whole test suite, in
+# its own build folder (docs/testing.md). The Python module is left out: an
+# ASan library cannot be loaded into an uninstrumented python3.
+SANITIZE_DIR ?= build-sanitize
+sanitize: deps
+	cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DRIS_SANITIZE=ON -DRIS_BUILD_PYTHON=OFF -DRIS_BUILD_BENCH=OFF $(CMAKE_FLAGS)
+	cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --output-on-failure -j $(JOBS) $(SANITIZE_CTEST_ARGS)
+
+# The libFuzzer harnesses (fuzz/), built with clang, each run for
+# FUZZ_SECONDS on a working copy of its corpus; findings (crash-*, oom-*,
+# timeout-*) land in $(FUZZ_DIR)/findings/<harness>/ (docs/testing.md).
+FUZZ_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DRIS_FUZZ=ON -DRIS_BUILD_TESTS=OFF -DRIS_BUILD_BENCH=OFF -DRIS_BUILD_PYTHON=OFF
+	cmake --build $(FUZZ_DIR) -j $(JOBS)
+	./scripts/fuzz.sh $(FUZZ_DIR) $(FUZZ_SECONDS) $(FUZZ_HARNESSES)
+
 clean:
-	rm -rf $(BUILD_DIR)
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR)

@@ -15,6 +15,10 @@ packages=(
   libkissfft-dev
   # Boost.Math's Gauss-Legendre rules (header-only): the I2EM's HV integral
   libboost-dev
+  # Random123 (header-only): the reference Philox the tests compare ris's with
+  librandom123-dev
+  # The libFuzzer harnesses (make fuzz, fuzz/): clang and its libFuzzer
+  clang libfuzzer-14-dev
   clang-format ccache python3 hyperfine
   # The Python module (import ris, docs/python.md) and its tests
   pybind11-dev python3-dev python3-numpy python3-pytest python3-gdal

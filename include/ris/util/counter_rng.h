@@ -8,8 +8,13 @@
 // (M0 = 0xD2511F53, M1 = 0xCD9E8D57) with a Weyl key schedule
 // (W0 = 0x9E3779B9, W1 = 0xBB67AE85). Checked against the known-answer
 // vectors of the authors' Random123 library (tests/kat_vectors) in
-// counter_rng_test.cpp. Written by hand because Debian packages no Random123
-// headers and the generator is 30 lines.
+// counter_rng_test.cpp, and bit for bit against Random123 1.14 itself
+// (Debian's librandom123-dev) on a million blocks and on the batched first
+// blocks in counter_rng_random123_test.cpp. Kept in ris (30 lines) rather
+// than calling Random123's scalar generator because the speckle needs the
+// many-counters-at-once form below, which the vectorised kernel in
+// src/kernels/util/counter_rng.cpp computes and this function is the
+// reference for.
 //
 // CounterRng is a stream for one pixel: key = seed, counter = (a, b, draw,
 // stream), so each (a, b) pixel, e.g. (bin, line), gets its own 2^32 blocks of
