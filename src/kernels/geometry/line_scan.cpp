@@ -270,21 +270,21 @@ inline D4 vmin4(D4 a, D4 b) {
 // Inclusive prefix minimum of the lanes (lane k: min of lanes 0..k).
 inline D4 prefix_min(D4 x) {
   const D4 inf = D4{} + std::numeric_limits<double>::infinity();
-  x = vmin4(x, __builtin_shuffle(x, inf, L4{4, 0, 1, 2}));
-  return vmin4(x, __builtin_shuffle(x, inf, L4{4, 5, 0, 1}));
+  x = vmin4(x, vec8::shuffle(x, inf, L4{4, 0, 1, 2}));
+  return vmin4(x, vec8::shuffle(x, inf, L4{4, 5, 0, 1}));
 }
 inline F8 prefix_max(F8 x) {
   const F8 lo = vec8::splat(-std::numeric_limits<float>::infinity());
-  x = vec8::vmax(x, __builtin_shuffle(x, lo, I8{8, 0, 1, 2, 3, 4, 5, 6}));
-  x = vec8::vmax(x, __builtin_shuffle(x, lo, I8{8, 9, 0, 1, 2, 3, 4, 5}));
-  return vec8::vmax(x, __builtin_shuffle(x, lo, I8{8, 9, 10, 11, 0, 1, 2, 3}));
+  x = vec8::vmax(x, vec8::shuffle(x, lo, I8{8, 0, 1, 2, 3, 4, 5, 6}));
+  x = vec8::vmax(x, vec8::shuffle(x, lo, I8{8, 9, 0, 1, 2, 3, 4, 5}));
+  return vec8::vmax(x, vec8::shuffle(x, lo, I8{8, 9, 10, 11, 0, 1, 2, 3}));
 }
 // Inclusive suffix minimum (lane k: min of lanes k..7).
 inline F8 suffix_min(F8 x) {
   const F8 hi = vec8::splat(std::numeric_limits<float>::infinity());
-  x = vec8::vmin(x, __builtin_shuffle(x, hi, I8{1, 2, 3, 4, 5, 6, 7, 8}));
-  x = vec8::vmin(x, __builtin_shuffle(x, hi, I8{2, 3, 4, 5, 6, 7, 8, 9}));
-  return vec8::vmin(x, __builtin_shuffle(x, hi, I8{4, 5, 6, 7, 8, 9, 10, 11}));
+  x = vec8::vmin(x, vec8::shuffle(x, hi, I8{1, 2, 3, 4, 5, 6, 7, 8}));
+  x = vec8::vmin(x, vec8::shuffle(x, hi, I8{2, 3, 4, 5, 6, 7, 8, 9}));
+  return vec8::vmin(x, vec8::shuffle(x, hi, I8{4, 5, 6, 7, 8, 9, 10, 11}));
 }
 
 // Forward: shadow (cot psi above the running minimum of the nearer samples')
@@ -304,15 +304,15 @@ RIS_VECTOR_CLONES void forward_scan(int n, const double* __restrict cot,
     const I8 take = (f & kSkip) == 0;
     const D4 c_lo = load<D4>(cot + kk), c_hi = load<D4>(cot + kk + 4);
     const D4 m_lo = vmin4(prefix_min(c_lo), cot_carry);
-    const D4 m_hi = vmin4(prefix_min(c_hi), __builtin_shuffle(m_lo, L4{3, 3, 3, 3}));
-    cot_carry = __builtin_shuffle(m_hi, L4{3, 3, 3, 3});
+    const D4 m_hi = vmin4(prefix_min(c_hi), vec8::shuffle(m_lo, L4{3, 3, 3, 3}));
+    cot_carry = vec8::shuffle(m_hi, L4{3, 3, 3, 3});
     // The two halves' comparisons (64-bit lanes) as one 8-lane mask.
     const I8 above =
         __builtin_shufflevector(__builtin_convertvector(c_lo > m_lo, I4),
                                 __builtin_convertvector(c_hi > m_hi, I4), 0, 1, 2, 3, 4, 5, 6, 7);
     const F8 r = load<F8>(range + kk);
     const F8 m_r = vmax(prefix_max(take ? r : neg_inf), r_carry);
-    r_carry = __builtin_shuffle(m_r, I8{7, 7, 7, 7, 7, 7, 7, 7});
+    r_carry = vec8::shuffle(m_r, I8{7, 7, 7, 7, 7, 7, 7, 7});
     const I8 out =
         f | (take & above & sample_flag::kShadow) | (take & (r < m_r) & sample_flag::kLayover);
     store(flags + kk, narrow_u8(out));
@@ -334,7 +334,7 @@ RIS_VECTOR_CLONES void backward_scan(int n, const float* __restrict range,
     const I8 take = (f & kSkip) == 0;
     const F8 r = load<F8>(range + kk);
     const F8 m = vmin(suffix_min(take ? r : inf), carry);
-    carry = __builtin_shuffle(m, I8{0, 0, 0, 0, 0, 0, 0, 0});
+    carry = vec8::shuffle(m, I8{0, 0, 0, 0, 0, 0, 0, 0});
     store(flags + kk, narrow_u8(f | (take & (r > m) & sample_flag::kLayover)));
   }
 }

@@ -131,8 +131,8 @@ __attribute__((always_inline)) inline F8 pair_block(const float* __restrict pair
     b[l] = load<double>(pairs + 2 * static_cast<std::ptrdiff_t>(kb));
   }
   const F8 fa = F8(a), fb = F8(b);
-  const F8 t = __builtin_shuffle(fa, fb, I8{0, 2, 4, 6, 8, 10, 12, 14});
-  const F8 d = __builtin_shuffle(fa, fb, I8{1, 3, 5, 7, 9, 11, 13, 15});
+  const F8 t = vec8::shuffle(fa, fb, I8{0, 2, 4, 6, 8, 10, 12, 14});
+  const F8 d = vec8::shuffle(fa, fb, I8{1, 3, 5, 7, 9, 11, 13, 15});
   return t + f * d;
 }
 

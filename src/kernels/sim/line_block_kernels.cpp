@@ -131,11 +131,11 @@ RIS_WIDE_VECTOR_CLONES void gather_row(const CellRow& row, double dx_m, double d
       nodata = ~ok & sample_flag::kNoData;
     }
     if (reverse) {
-      hh = __builtin_shuffle(hh, reversed);
-      sxx = __builtin_shuffle(sxx, reversed);
-      syy = __builtin_shuffle(syy, reversed);
-      k = __builtin_shuffle(k, reversed);
-      nodata = __builtin_shuffle(nodata, reversed);
+      hh = vec8::shuffle(hh, reversed);
+      sxx = vec8::shuffle(sxx, reversed);
+      syy = vec8::shuffle(syy, reversed);
+      k = vec8::shuffle(k, reversed);
+      nodata = vec8::shuffle(nodata, reversed);
     }
     const std::size_t j = reverse ? static_cast<std::size_t>(cols - kLanes - c) : cc;
     store(h + j, hh);
@@ -188,12 +188,12 @@ RIS_WIDE_VECTOR_CLONES void map_row(int n, bool reverse, double near_m, double f
     const F8 d = __builtin_convertvector(rad * 180.0 / kPi, F8);
     const std::size_t c = reverse ? static_cast<std::size_t>(n - kLanes - j) : jj;
     I8 ok = widen_u8(load<U8x8>(valid + c)) != 0;
-    if (reverse) ok = __builtin_shuffle(ok, reversed);
+    if (reverse) ok = vec8::shuffle(ok, reversed);
     f |= ~ok & scene_flag::kNoData;
     F8 out = (has_data & ok) ? d : nan;
     if (reverse) {
-      f = __builtin_shuffle(f, reversed);
-      out = __builtin_shuffle(out, reversed);
+      f = vec8::shuffle(f, reversed);
+      out = vec8::shuffle(out, reversed);
     }
     store(mask + c, narrow_u8(f));
     store(deg + c, out);
@@ -215,18 +215,18 @@ template <class V>
   using vec8::I8;
   V t[8], u[8];
   for (int i = 0; i < 8; i += 2) {
-    t[i] = __builtin_shuffle(a[i], a[i + 1], I8{0, 8, 1, 9, 4, 12, 5, 13});
-    t[i + 1] = __builtin_shuffle(a[i], a[i + 1], I8{2, 10, 3, 11, 6, 14, 7, 15});
+    t[i] = vec8::shuffle(a[i], a[i + 1], I8{0, 8, 1, 9, 4, 12, 5, 13});
+    t[i + 1] = vec8::shuffle(a[i], a[i + 1], I8{2, 10, 3, 11, 6, 14, 7, 15});
   }
   for (int i = 0; i < 8; i += 4) {
-    u[i] = __builtin_shuffle(t[i], t[i + 2], I8{0, 1, 8, 9, 4, 5, 12, 13});
-    u[i + 1] = __builtin_shuffle(t[i], t[i + 2], I8{2, 3, 10, 11, 6, 7, 14, 15});
-    u[i + 2] = __builtin_shuffle(t[i + 1], t[i + 3], I8{0, 1, 8, 9, 4, 5, 12, 13});
-    u[i + 3] = __builtin_shuffle(t[i + 1], t[i + 3], I8{2, 3, 10, 11, 6, 7, 14, 15});
+    u[i] = vec8::shuffle(t[i], t[i + 2], I8{0, 1, 8, 9, 4, 5, 12, 13});
+    u[i + 1] = vec8::shuffle(t[i], t[i + 2], I8{2, 3, 10, 11, 6, 7, 14, 15});
+    u[i + 2] = vec8::shuffle(t[i + 1], t[i + 3], I8{0, 1, 8, 9, 4, 5, 12, 13});
+    u[i + 3] = vec8::shuffle(t[i + 1], t[i + 3], I8{2, 3, 10, 11, 6, 7, 14, 15});
   }
   for (int i = 0; i < 4; ++i) {
-    a[i] = __builtin_shuffle(u[i], u[i + 4], I8{0, 1, 2, 3, 8, 9, 10, 11});
-    a[i + 4] = __builtin_shuffle(u[i], u[i + 4], I8{4, 5, 6, 7, 12, 13, 14, 15});
+    a[i] = vec8::shuffle(u[i], u[i + 4], I8{0, 1, 2, 3, 8, 9, 10, 11});
+    a[i + 4] = vec8::shuffle(u[i], u[i + 4], I8{4, 5, 6, 7, 12, 13, 14, 15});
   }
 }
 

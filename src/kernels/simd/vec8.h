@@ -52,6 +52,39 @@ inline I8 widen_u8(U8x8 b) {
 inline U8x8 narrow_u8(I8 x) {
   return __builtin_convertvector(__builtin_convertvector(x, U16x8), U8x8);
 }
+// GCC's __builtin_shuffle (lanes picked by a mask vector, indices taken
+// modulo the lane count, or twice it with two sources). Clang has no such
+// builtin for a mask that is not a constant list, so under clang (the
+// libFuzzer build, `make fuzz`) the same selection is a loop over lanes:
+// same values, slower code, in a build where only correctness counts.
+#if defined(__clang__)
+template <class V, class M>
+inline V shuffle(V a, M m) {
+  constexpr int n = static_cast<int>(sizeof(V) / sizeof(a[0]));
+  V r;
+  for (int i = 0; i < n; ++i) r[i] = a[static_cast<int>(m[i]) & (n - 1)];
+  return r;
+}
+template <class V, class M>
+inline V shuffle(V a, V b, M m) {
+  constexpr int n = static_cast<int>(sizeof(V) / sizeof(a[0]));
+  V r;
+  for (int i = 0; i < n; ++i) {
+    const int k = static_cast<int>(m[i]) & (2 * n - 1);
+    r[i] = k < n ? a[k] : b[k - n];
+  }
+  return r;
+}
+#else
+template <class V, class M>
+inline V shuffle(V a, M m) {
+  return __builtin_shuffle(a, m);
+}
+template <class V, class M>
+inline V shuffle(V a, V b, M m) {
+  return __builtin_shuffle(a, b, m);
+}
+#endif
 inline F8 vmin(F8 a, F8 b) {
   return b < a ? b : a;
 }
