@@ -137,6 +137,14 @@ TargetGrid plan_warp(GDALDatasetH src, const std::array<double, 6>& src_gt,
     if (err != CE_None) {
       throw InputError(path, "", "cannot compute the reprojected cell size: " + last_gdal_error());
     }
+    // A hostile or broken geotransform (zero, infinite or NaN pixel size)
+    // gets here as a suggestion GDAL computed from it.
+    if (!(std::isfinite(gt[1]) && gt[1] > 0.0)) {
+      throw InputError(path, "",
+                       fmt::format("the DEM's georeferencing gives no usable cell size (GDAL "
+                                   "suggests {:g} m); check its geotransform",
+                                   gt[1]));
+    }
     cell_m = round_two_significant(gt[1]);
   }
   // Outline of the DEM in its own CRS (all four corners, for rotated grids).
@@ -156,6 +164,15 @@ TargetGrid plan_warp(GDALDatasetH src, const std::array<double, 6>& src_gt,
   const double max_y = std::ceil(e[3] / cell_m) * cell_m;
   const double n_cols = std::round((max_x - min_x) / cell_m);
   const double n_rows = std::round((max_y - min_y) / cell_m);
+  // Checked as doubles first: converting an infinite or huge count to an
+  // integer is undefined.
+  constexpr double kMaxSide = 2147483647.0;
+  if (!(n_cols >= 1.0 && n_rows >= 1.0 && n_cols <= kMaxSide && n_rows <= kMaxSide)) {
+    throw InputError(path, options.cell_size_key,
+                     fmt::format("the reprojected DEM would be {:g} x {:g} cells of {:g} m: its "
+                                 "outline or cell size is not usable",
+                                 n_rows, n_cols, cell_m));
+  }
   check_scene_fits_in_memory(static_cast<std::int64_t>(n_rows), static_cast<std::int64_t>(n_cols),
                              path, options.cell_size_key);
   g.min_x = min_x;

@@ -43,9 +43,13 @@ class Checkerboard final : public SceneObject {
     return paint_cells(scene, bounds(), [&](double x_m, double y_m, float&, std::uint16_t& c) {
       const auto [u, v] = place_.to_object(x_m, y_m);
       if (u < 0.0 || u > length_m_ || v < 0.0 || v > width_m_) return false;
-      const auto i = static_cast<std::int64_t>(std::floor(u / square_m_));
-      const auto j = static_cast<std::int64_t>(std::floor(v / square_m_));
-      c = categories_[static_cast<std::size_t>((i + j) % n)];
+      // The square's index modulo the category count, in doubles: fmod of
+      // an integral double is exact, and an index beyond 2^63 (a huge scene
+      // of tiny squares) must not reach an integer conversion.
+      const double nd = static_cast<double>(n);
+      const double k = std::fmod(
+          std::fmod(std::floor(u / square_m_), nd) + std::fmod(std::floor(v / square_m_), nd), nd);
+      c = categories_[static_cast<std::size_t>(k)];
       return true;
     });
   }
