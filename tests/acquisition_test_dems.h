@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "acquisition_paths.h"
+#include "ris/geometry/topo.h"
 #include "ris/geometry/zero_doppler.h"
 #include "ris/io/ellipsoidal_dem.h"
 #include "ris/sensor/acquisition.h"
@@ -31,17 +32,8 @@ inline Acquisition small_airborne() {
 inline EllipsoidalDem dem_for(const Acquisition& a, double ridge_m, double half_width_m) {
   const RadarGrid& g = a.grid;
   const auto flat = [](double, double) { return 230.0; };
-  double la0 = 1e9, la1 = -1e9, lo0 = 1e9, lo1 = -1e9;
-  for (double l : {0.0, g.lines - 1.0}) {
-    for (double b : {0.0, g.bins - 1.0}) {
-      const ZeroDopplerFrame f(a.orbit.interpolate(g.time_of_line(l)), g.look_side, a.ellipsoid);
-      const GroundPoint p = rdr2geo(f, a.ellipsoid, g.range_of_bin(b), flat, 230.0);
-      la0 = std::min(la0, p.geodetic.lat_rad);
-      la1 = std::max(la1, p.geodetic.lat_rad);
-      lo0 = std::min(lo0, p.geodetic.lon_rad);
-      lo1 = std::max(lo1, p.geodetic.lon_rad);
-    }
-  }
+  const LatLonBox box = grid_corner_box(a, 230.0);
+  double la0 = box.lat_min_rad, la1 = box.lat_max_rad, lo0 = box.lon_min_rad, lo1 = box.lon_max_rad;
   const double pad = deg_to_rad(0.01), step = deg_to_rad(1.0 / 3600.0);
   la0 -= pad, la1 += pad, lo0 -= pad, lo1 += pad;
   const int rows = static_cast<int>((la1 - la0) / step) + 1;

@@ -220,6 +220,23 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem, c
   return bad;
 }
 
+LatLonBox grid_corner_box(const Acquisition& a, double height_m) {
+  const RadarGrid& g = a.grid;
+  const auto level = [height_m](double, double) { return height_m; };
+  LatLonBox box{1e9, -1e9, 1e9, -1e9};
+  for (double l : {0.0, g.lines - 1.0}) {
+    for (double b : {0.0, g.bins - 1.0}) {
+      const ZeroDopplerFrame f(a.orbit.interpolate(g.time_of_line(l)), g.look_side, a.ellipsoid);
+      const GroundPoint p = rdr2geo(f, a.ellipsoid, g.range_of_bin(b), level, height_m);
+      box.lat_min_rad = std::min(box.lat_min_rad, p.geodetic.lat_rad);
+      box.lat_max_rad = std::max(box.lat_max_rad, p.geodetic.lat_rad);
+      box.lon_min_rad = std::min(box.lon_min_rad, p.geodetic.lon_rad);
+      box.lon_max_rad = std::max(box.lon_max_rad, p.geodetic.lon_rad);
+    }
+  }
+  return box;
+}
+
 GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem) {
   const RadarGrid& g = acq.grid;
   const Ellipsoid& e = acq.ellipsoid;

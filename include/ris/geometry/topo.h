@@ -100,6 +100,14 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem,
 // clipped to the grid; empty (lines = 0) when they do not overlap.
 GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem);
 
+// The latitude/longitude box (radians) of the grid's four corner pixels on
+// the ellipsoid raised to height_m (rdr2geo), e.g. for a DEM that covers
+// the grid.
+struct LatLonBox {
+  double lat_min_rad = 0.0, lat_max_rad = 0.0, lon_min_rad = 0.0, lon_max_rad = 0.0;
+};
+LatLonBox grid_corner_box(const Acquisition& acq, double height_m);
+
 TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
                         const TopoOptions& options);
 
