@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <omp.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 
 #include "acquisition_paths.h"
@@ -215,6 +217,28 @@ TEST(AcquisitionSimulation, FlatAndEllipsoidImagesDiffer) {
   }
   std::printf("flat vs ellipsoid: mean |power difference| / mean power %.4f\n", diff / total);
   EXPECT_GT(diff / total, 1e-3);
+}
+
+// Lines go to threads in blocks, each line written by one: the same bytes
+// for one and two threads.
+TEST(AcquisitionSimulation, SameBytesForOneAndTwoThreads) {
+  const Acquisition a = test::small_airborne();
+  const EllipsoidalDem dem = test::dem_for(a, 800.0, 1500.0);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const AcquisitionSimulation one = simulate(a, dem);
+  omp_set_num_threads(2);
+  const AcquisitionSimulation two = simulate(a, dem);
+  omp_set_num_threads(threads);
+  ASSERT_EQ(one.sim.image.mean_power_w.size(), two.sim.image.mean_power_w.size());
+  EXPECT_EQ(std::memcmp(one.sim.image.mean_power_w.data(), two.sim.image.mean_power_w.data(),
+                        one.sim.image.mean_power_w.size() * sizeof(float)),
+            0);
+  EXPECT_EQ(one.sim.image.mask, two.sim.image.mask);
+  EXPECT_EQ(std::memcmp(one.local_incidence_deg.data(), two.local_incidence_deg.data(),
+                        one.local_incidence_deg.size() * sizeof(float)),
+            0);
+  EXPECT_EQ(one.layover_shadow_mask, two.layover_shadow_mask);
 }
 
 // Sentinel-1 (the shipped IW SLC's sub-swath IW1) on a small DEM inside it:
