@@ -175,13 +175,11 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem, c
   if (bad == static_cast<std::size_t>(w.bins)) return bad;
 
   // Layover and shadow from a dense terrain profile in this line's
-  // zero-Doppler plane: ground points at evenly spaced look angles, on the
-  // ellipsoid raised to the line's mid height (ZeroDopplerFrame::
-  // range_to_ellipsoid) then moved onto the DEM along the normal, three
-  // per range bin on average, in ground order from near to far. A point is
-  // in shadow when a nearer point is seen at a larger look angle; in layover
-  // when a nearer point is at a longer slant range or a farther one at a
-  // shorter (its range bin also holds other ground).
+  // zero-Doppler plane (ris/geometry/terrain_profile.h, the profile the
+  // simulation's acquisition line source images too): ground points at
+  // evenly spaced look angles on the ellipsoid raised to the line's mid
+  // height, moved onto the DEM, three per range bin on average, in ground
+  // order; shadow and layover by its two scans.
   const double dr = g.range_spacing_m;
   const double margin = 2.0 * (h_max - h_min) + 4.0 * dr;
   const double h_ref = 0.5 * (h_min + h_max);
