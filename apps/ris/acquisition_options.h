@@ -1,5 +1,5 @@
 // Command-line options shared by the commands that read an acquisition
-// (geo2rdr, rdr2geo, topo): the product and which part of it.
+// (geo2rdr, rdr2geo, topo, simulate): the product and which part of it.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -26,11 +26,12 @@ struct AcquisitionArgs {
   }
 };
 
-inline void add_acquisition_options(CLI::App* cmd, AcquisitionArgs& a) {
-  cmd->add_option("--acquisition,-a", a.path,
-                  "Radar product: NISAR RSLC .h5, Sentinel-1 .SAFE (or annotation .xml), or a "
-                  "ris acquisition .toml")
-      ->required();
+// required = false: the command runs without an acquisition too (simulate).
+inline void add_acquisition_options(CLI::App* cmd, AcquisitionArgs& a, bool required = true) {
+  auto* opt = cmd->add_option("--acquisition,-a", a.path,
+                              "Radar product: NISAR RSLC .h5, Sentinel-1 .SAFE (or annotation "
+                              ".xml), or a ris acquisition .toml");
+  if (required) opt->required();
   cmd->add_option("--frequency", a.frequency, "NISAR frequency band: A or B")
       ->capture_default_str();
   cmd->add_option("--burst", a.burst,

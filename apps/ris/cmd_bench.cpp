@@ -13,6 +13,12 @@
 // bandwidth baseline (one pass reading the elevation and category arrays and
 // writing one byte per cell, 2 threads); the peak resident memory; and last
 // `cells_per_s_2threads=<n>` (along-axis track, 2 threads).
+//
+//   ris bench --topo [--topo-posting 0.0625] [--repeats N]
+//
+// Instead: ris topo's DEM pass (ris/perf/topo_bench.h), DEM cells per
+// second on 2 threads (wall and per CPU-second) with the load average, and
+// last `topo_dem_cells_per_s_2threads=<n>`.
 #include <fmt/format.h>
 #include <omp.h>
 #include <sys/resource.h>
@@ -29,6 +35,7 @@
 #include "command_registry.h"
 #include "ris/backscatter/library.h"
 #include "ris/perf/bench_setup.h"
+#include "ris/perf/topo_bench.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/slar_products.h"
@@ -67,6 +74,8 @@ struct BenchArgs {
   bool oblique = true;
   bool io = true;
   std::uint64_t seed = 7;
+  bool topo = false;  // ris topo's DEM pass instead (ris/perf/topo_bench.h)
+  double topo_posting_arcsec = TopoBenchOptions{}.posting_arcsec;
 };
 
 double process_cpu_s() {
@@ -178,7 +187,37 @@ void print_stages(const RunTiming& t) {
   }
 }
 
+// `ris bench --topo`: DEM cells per second of ris topo's DEM pass (one
+// geo2rdr per DEM cell) on 2 threads, with the load average beside it.
+void run_topo_bench_command(const BenchArgs& a) {
+  double load[3] = {0, 0, 0};
+  if (getloadavg(load, 3) < 0) load[0] = -1.0;
+  TopoBenchOptions o;
+  o.posting_arcsec = a.topo_posting_arcsec;
+  o.repeats = a.repeats;
+  const TopoBenchResult r = run_topo_bench(o);
+  double after[3] = {0, 0, 0};
+  if (getloadavg(after, 3) < 0) after[0] = -1.0;
+  const double cells = static_cast<double>(r.dem_cells);
+  fmt::print(
+      "ris bench --topo: airborne example ({} lines x {} bins), rolling hills at {:g} arc-second "
+      "postings ({} x {} cells), one facet per cell, {} threads, median of {}\n"
+      "  load average {:.2f} before, {:.2f} after (2 cores)\n"
+      "  DEM pass: {:.2f} M DEM cells in {:.3f} s: {:.1f} M DEM cells/s (wall), {:.1f} M per "
+      "CPU-second (CPU {:.3f} s)\n"
+      "  radar pass: {} pixels in {:.3f} s\n",
+      r.grid_lines, r.grid_bins, o.posting_arcsec, r.dem_rows, r.dem_cols, o.threads, o.repeats,
+      load[0], after[0], cells / 1e6, r.dem_seconds, cells / r.dem_seconds / 1e6,
+      cells / r.dem_cpu_seconds / 1e6, r.dem_cpu_seconds, r.grid_lines * r.grid_bins,
+      r.radar_seconds);
+  fmt::print("topo_dem_cells_per_s_2threads={:.0f}\n", cells / r.dem_seconds);
+}
+
 void run_bench(const BenchArgs& a) {
+  if (a.topo) {
+    run_topo_bench_command(a);
+    return;
+  }
   const int rows = a.rows > 0 ? a.rows : a.size;
   const int cols = a.cols > 0 ? a.cols : a.size;
   if (rows <= 0 || cols <= 0) throw InputError("", "--size", "expected a positive scene size");
@@ -300,6 +339,11 @@ void add_bench(CLI::App& app) {
   cmd->add_flag("!--no-standard", args->standard, "Skip the standard scene");
   cmd->add_flag("!--no-oblique", args->oblique, "Skip the oblique track");
   cmd->add_flag("!--no-io", args->io, "Skip the product-writing (I/O) timing");
+  cmd->add_flag("--topo", args->topo,
+                "Instead: ris topo's DEM pass on the airborne example, DEM cells/s on 2 threads");
+  cmd->add_option("--topo-posting", args->topo_posting_arcsec,
+                  "--topo: the DEM's posting, arc-seconds")
+      ->capture_default_str();
   cmd->callback([args] { run_bench(*args); });
 }
 

@@ -5,6 +5,13 @@
 //   ris simulate [--scene S] [--radar R] [--backscatter B] [--targets T]
 //                [--out DIR] [--seed N] [--threads N] [--quiet]
 //                [--stream] [--block-lines N] [--products LIST] [--compress fast|small|none]
+//   ris simulate --acquisition P --dem D [--frequency A|B] [--burst N] [--swath S]
+//                [--category N] [--full-grid] [--earth flat|ellipsoid] [--radar R] ...
+//
+// With --acquisition: the simulation on that product's own radar grid
+// (ris/sim/acquisition_simulation.h): the DEM's terrain imaged with the
+// product's orbit, lines and range bins, so the image lines up with the real
+// one (docs/geometry.md).
 //
 // With no arguments: the standard scene (built from its TOML description on
 // the fly) with the seed's figure-4-5 radar and the standard backscatter
@@ -24,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "acquisition_options.h"
 #include "command_registry.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/run.h"
@@ -38,6 +46,8 @@ struct SimulateArgs {
   std::string out = "out";
   std::vector<std::string> products;
   std::string compress = "fast";
+  AcquisitionArgs acquisition;
+  std::string earth;
 };
 
 std::string absolute_out(const std::filesystem::path& out) {
@@ -89,6 +99,26 @@ void print_slar(const RunRequest& r, const RunResult& res) {
   for (const std::string& h : sim.hidden_targets) fmt::print("  target {} hidden\n", h);
 }
 
+void print_acquisition(const RunRequest& r, const RunResult& res) {
+  const AcquisitionSimulation& a = *res.acquisition;
+  const SlarSimulation& sim = *res.slar;
+  const GridWindow& w = a.window;
+  fmt::print("simulated {} on {} ({}) with {} ({}, {} Earth)\n", r.dem_path, r.acquisition_path,
+             a.mission, r.radar_path, res.kind == RunKind::sar ? "SAR" : "SLAR",
+             a.earth == EarthModel::flat ? "flat" : "ellipsoidal");
+  fmt::print(
+      "  image: lines {}..{} x bins {}..{} of the product's {} x {} grid; {:.2f} m "
+      "between lines on the ground, {} terrain points per line\n",
+      w.line0, w.line0 + w.lines - 1, w.bin0, w.bin0 + w.bins - 1, a.grid.lines, a.grid.bins,
+      a.ground_azimuth_spacing_m, a.profile_points);
+  const SlarGeometry& g = sim.geometry;
+  const double samples = double(g.lines) * double(g.samples);
+  fmt::print("  shadow {:.2f}%, layover {:.2f}%, back-facing {:.2f}% of terrain points\n",
+             100.0 * double(g.shadow_samples) / samples,
+             100.0 * double(g.layover_samples) / samples,
+             100.0 * double(g.back_facing_samples) / samples);
+}
+
 void print_streamed(const RunRequest& r, const RunResult& res) {
   const SlarStreamSummary& s = *res.streamed;
   fmt::print("simulated {} ({} x {} cells, streamed in {} blocks of {} lines) with {}\n",
@@ -104,6 +134,11 @@ void run_simulate(SimulateArgs& a) {
   r.out_dir = a.out;
   r.products.stems = a.products;
   r.compression = parse_compression_preset(a.compress, "--compress");
+  if (!a.acquisition.path.empty()) {
+    r.acquisition_path = a.acquisition.path;
+    r.acquisition = a.acquisition.options();
+  }
+  if (!a.earth.empty()) r.earth = a.earth == "flat" ? EarthModel::flat : EarthModel::ellipsoid;
   // Progress only on a terminal and without --quiet (ris/util/progress.h):
   // percent of the run by stage, rate and time remaining.
   auto bar = std::make_shared<ProgressBar>("simulate", 100, "%", r.quiet);
@@ -122,7 +157,9 @@ void run_simulate(SimulateArgs& a) {
     print_streamed(r, res);
   } else {
     bar->finish();
-    if (res.kind == RunKind::ppi) {
+    if (res.acquisition) {
+      print_acquisition(r, res);
+    } else if (res.kind == RunKind::ppi) {
       print_ppi(r, res);
     } else {
       print_slar(r, res);
@@ -162,6 +199,19 @@ void add_simulate(CLI::App& app) {
   cmd->add_option("--compress", args->compress,
                   "Compression: fast (default), small (smallest files, slower), none")
       ->capture_default_str();
+  add_acquisition_options(cmd, args->acquisition, false);
+  cmd->add_option("--dem", r.dem_path,
+                  "With --acquisition: the DEM imaged (geographic WGS 84; geoid heights "
+                  "converted where PROJ can)");
+  cmd->add_option("--category", r.category,
+                  "With --acquisition: the backscatter category of the DEM's terrain")
+      ->capture_default_str();
+  cmd->add_flag("--full-grid", r.full_grid,
+                "With --acquisition: the product's whole grid, not the window the DEM covers");
+  cmd->add_option("--earth", args->earth,
+                  "Earth model: flat or ellipsoid (default: the radar file's earth key, else "
+                  "ellipsoid with --acquisition and flat without)")
+      ->check(CLI::IsMember({"flat", "ellipsoid"}));
   cmd->callback([args] { run_simulate(*args); });
 }
 

@@ -33,26 +33,6 @@ double muhleman_sigma0(double cos_t) {
   return 0.0118 * cos_t / (d * d * d);
 }
 
-// The DEM's surface normal at a point (ECEF unit vector): central
-// differences one posting either side, east and north, in the local ENU
-// frame: n = (-dh/dE, -dh/dN, 1) / |...| (a one-sided difference next to
-// the DEM's edge or no-data).
-Vec3 dem_normal(const EllipsoidalDem& dem, const Ellipsoid& e, double lat, double lon, double h) {
-  const double dla = std::abs(dem.dlat_rad), dlo = std::abs(dem.dlon_rad);
-  const auto diff = [&](double plus, double minus, double step) {
-    if (std::isfinite(plus) && std::isfinite(minus)) return (plus - minus) / (2.0 * step);
-    if (std::isfinite(plus)) return (plus - h) / step;
-    if (std::isfinite(minus)) return (h - minus) / step;
-    return 0.0;
-  };
-  const double step_e = dlo * e.prime_vertical_radius_m(lat) * std::cos(lat);
-  const double step_n = dla * e.meridional_radius_m(lat);
-  const double ge = diff(dem.height_at(lat, lon + dlo), dem.height_at(lat, lon - dlo), step_e);
-  const double gn = diff(dem.height_at(lat + dla, lon), dem.height_at(lat - dla, lon), step_n);
-  const EnuBasis b = Ellipsoid::enu(lat, lon);
-  return (b.east * -ge + b.north * -gn + b.up).normalized();
-}
-
 // CPU time of the whole process (all threads), for throughput figures that
 // a busy machine does not distort.
 double process_cpu_seconds() {
@@ -195,13 +175,11 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem, c
   if (bad == static_cast<std::size_t>(w.bins)) return bad;
 
   // Layover and shadow from a dense terrain profile in this line's
-  // zero-Doppler plane: ground points at evenly spaced look angles, on the
-  // ellipsoid raised to the line's mid height (ZeroDopplerFrame::
-  // range_to_ellipsoid) then moved onto the DEM along the normal, three
-  // per range bin on average, in ground order from near to far. A point is
-  // in shadow when a nearer point is seen at a larger look angle; in layover
-  // when a nearer point is at a longer slant range or a farther one at a
-  // shorter (its range bin also holds other ground).
+  // zero-Doppler plane (ris/geometry/terrain_profile.h, the profile the
+  // simulation's acquisition line source images too): ground points at
+  // evenly spaced look angles on the ellipsoid raised to the line's mid
+  // height, moved onto the DEM, three per range bin on average, in ground
+  // order; shadow and layover by its two scans.
   const double dr = g.range_spacing_m;
   const double margin = 2.0 * (h_max - h_min) + 4.0 * dr;
   const double h_ref = 0.5 * (h_min + h_max);
@@ -214,54 +192,21 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem, c
   const double look_lo = std::max(0.0, look_min - look_pad);
   const double look_hi = look_max + look_pad;
   const auto n = static_cast<std::size_t>((r_far - r_near) / (dr / 3.0)) + 2;
-  const double dlook = (look_hi - look_lo) / static_cast<double>(n - 1);
-  sc.look_rad.resize(n);
-  sc.range_m.resize(n);
-  sc.flags.assign(n, 0);
-  const double ia2 = 1.0 / ((e.semi_major_m() + h_ref) * (e.semi_major_m() + h_ref));
-  const double ib2 = 1.0 / ((e.semi_minor_m() + h_ref) * (e.semi_minor_m() + h_ref));
-  for (std::size_t k = 0; k < n; ++k) {
-    const double th = look_lo + static_cast<double>(k) * dlook;
-    const double t = f.range_to_ellipsoid(th, e, h_ref);
-    sc.look_rad[k] = kNan;
-    sc.range_m[k] = kNan;
-    if (!std::isfinite(t)) continue;
-    const Vec3 x0 = f.point(t, th);
-    const Geodetic q = e.to_geodetic(x0);
-    const double h = dem.height_at(q.lat_rad, q.lon_rad);
-    if (!std::isfinite(h)) continue;
-    // Up the normal of the inflated ellipsoid (its gradient: no trigonometry).
-    const Vec3 up = Vec3{x0.x * ia2, x0.y * ia2, x0.z * ib2}.normalized();
-    const Vec3 d = x0 + up * (h - q.height_m) - f.sensor_m;
-    sc.look_rad[k] = std::atan2(d.dot(f.side), d.dot(f.nadir));
-    sc.range_m[k] = d.norm();
-  }
-  double max_look = -1e300, max_range = -1e300;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!std::isfinite(sc.range_m[k])) continue;
-    if (sc.look_rad[k] < max_look) sc.flags[k] |= kMaskShadow;
-    if (sc.range_m[k] <= max_range) sc.flags[k] |= kMaskLayover;
-    max_look = std::max(max_look, sc.look_rad[k]);
-    max_range = std::max(max_range, sc.range_m[k]);
-  }
-  double min_range = 1e300;
-  for (std::size_t k = n; k-- > 0;) {
-    if (!std::isfinite(sc.range_m[k])) continue;
-    if (sc.range_m[k] >= min_range) sc.flags[k] |= kMaskLayover;
-    min_range = std::min(min_range, sc.range_m[k]);
-  }
+  TerrainProfile& pr = sc.profile;
+  trace_terrain_profile(f, e, dem, {look_lo, look_hi, n, h_ref}, false, pr);
+  mark_shadow_layover(n, pr.look_rad.data(), pr.range_m.data(), pr.flags.data());
   // Into bins: layover when any ground in the bin is laid over, shadow when
   // all of it is shadowed.
   sc.count.assign(static_cast<std::size_t>(w.bins), 0);
   sc.shadowed.assign(static_cast<std::size_t>(w.bins), 0);
   sc.layover.assign(static_cast<std::size_t>(w.bins), 0);
   for (std::size_t k = 0; k < n; ++k) {
-    if (!std::isfinite(sc.range_m[k])) continue;
-    const long b = std::lround(g.bin_of_range(sc.range_m[k])) - w.bin0;
+    if (!std::isfinite(pr.range_m[k])) continue;
+    const long b = std::lround(g.bin_of_range(pr.range_m[k])) - w.bin0;
     if (b < 0 || b >= w.bins) continue;
     ++sc.count[b];
-    sc.shadowed[b] += (sc.flags[k] & kMaskShadow) != 0;
-    sc.layover[b] += (sc.flags[k] & kMaskLayover) != 0;
+    sc.shadowed[b] += (pr.flags[k] & kMaskShadow) != 0;
+    sc.layover[b] += (pr.flags[k] & kMaskLayover) != 0;
   }
   for (int b = 0; b < w.bins; ++b) {
     if (sc.count[b] == 0 || !std::isfinite(out.height_m[b])) continue;
@@ -271,6 +216,23 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem, c
     out.mask[b] = m;
   }
   return bad;
+}
+
+LatLonBox grid_corner_box(const Acquisition& a, double height_m) {
+  const RadarGrid& g = a.grid;
+  const auto level = [height_m](double, double) { return height_m; };
+  LatLonBox box{1e9, -1e9, 1e9, -1e9};
+  for (double l : {0.0, g.lines - 1.0}) {
+    for (double b : {0.0, g.bins - 1.0}) {
+      const ZeroDopplerFrame f(a.orbit.interpolate(g.time_of_line(l)), g.look_side, a.ellipsoid);
+      const GroundPoint p = rdr2geo(f, a.ellipsoid, g.range_of_bin(b), level, height_m);
+      box.lat_min_rad = std::min(box.lat_min_rad, p.geodetic.lat_rad);
+      box.lat_max_rad = std::max(box.lat_max_rad, p.geodetic.lat_rad);
+      box.lon_min_rad = std::min(box.lon_min_rad, p.geodetic.lon_rad);
+      box.lon_max_rad = std::max(box.lon_max_rad, p.geodetic.lon_rad);
+    }
+  }
+  return box;
 }
 
 GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem) {

@@ -7,60 +7,14 @@
 #include <cstring>
 
 #include "acquisition_paths.h"
+#include "acquisition_test_dems.h"
 #include "ris/util/units.h"
 
 namespace ris {
 namespace {
 
-// The airborne example on a smaller grid (60 lines x 300 bins of 12.5 m).
-Acquisition small_airborne() {
-  Acquisition a = read_acquisition(test::example_acquisition("airborne-l-band-flight-line.toml"));
-  a.grid.lines = 60;
-  a.grid.line_interval_s = 0.1;
-  a.grid.bins = 300;
-  a.grid.range_spacing_m = 12.5;
-  return a;
-}
-
-// A DEM of 1 arc-second postings around the grid: flat at 230 m, with
-// (ridge_m > 0) a ridge of triangular section along the track, its crest at
-// mid-swath, slopes of atan(ridge_m / half_width_m).
-EllipsoidalDem dem_for(const Acquisition& a, double ridge_m, double half_width_m) {
-  const RadarGrid& g = a.grid;
-  const auto flat = [](double, double) { return 230.0; };
-  double la0 = 1e9, la1 = -1e9, lo0 = 1e9, lo1 = -1e9;
-  for (double l : {0.0, g.lines - 1.0}) {
-    for (double b : {0.0, g.bins - 1.0}) {
-      const ZeroDopplerFrame f(a.orbit.interpolate(g.time_of_line(l)), g.look_side, a.ellipsoid);
-      const GroundPoint p = rdr2geo(f, a.ellipsoid, g.range_of_bin(b), flat, 230.0);
-      la0 = std::min(la0, p.geodetic.lat_rad);
-      la1 = std::max(la1, p.geodetic.lat_rad);
-      lo0 = std::min(lo0, p.geodetic.lon_rad);
-      lo1 = std::max(lo1, p.geodetic.lon_rad);
-    }
-  }
-  const double pad = deg_to_rad(0.01), step = deg_to_rad(1.0 / 3600.0);
-  la0 -= pad, la1 += pad, lo0 -= pad, lo1 += pad;
-  const int rows = static_cast<int>((la1 - la0) / step) + 1;
-  const int cols = static_cast<int>((lo1 - lo0) / step) + 1;
-  EllipsoidalDem d = flat_ellipsoidal_dem(la0, la0 + (rows - 1) * step, lo0,
-                                          lo0 + (cols - 1) * step, rows, cols, 230.0);
-  if (ridge_m > 0.0) {
-    const ZeroDopplerFrame f(a.orbit.interpolate(g.time_of_line(0.5 * g.lines)), g.look_side,
-                             a.ellipsoid);
-    const GroundPoint crest = rdr2geo(f, a.ellipsoid, g.range_of_bin(0.5 * g.bins), flat, 230.0);
-    for (int r = 0; r < rows; ++r) {
-      for (int c = 0; c < cols; ++c) {
-        const Vec3 x =
-            a.ellipsoid.to_ecef({d.lat0_rad + r * d.dlat_rad, d.lon0_rad + c * d.dlon_rad, 230.0});
-        const double across = (x - crest.ecef_m).dot(f.side);
-        d.height_m[static_cast<std::size_t>(r) * cols + c] = static_cast<float>(
-            230.0 + ridge_m * std::max(0.0, 1.0 - std::abs(across) / half_width_m));
-      }
-    }
-  }
-  return d;
-}
+using test::dem_for;
+using test::small_airborne;
 
 // Flat ground: the gamma area is the ground area projected on the plane
 // normal to the look, i.e. beta area x cot(incidence) (Small 2011, eq. 8

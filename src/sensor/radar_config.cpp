@@ -421,6 +421,10 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
       "mode", {{"slar", RadarMode::slar}, {"sar", RadarMode::sar}, {"ppi", RadarMode::ppi}});
   const bool sar = r.mode == RadarMode::sar;
   const bool ppi = r.mode == RadarMode::ppi;
+  if (t.has("earth")) {
+    r.earth = t.get_enum<EarthModel>(
+        "earth", {{"flat", EarthModel::flat}, {"ellipsoid", EarthModel::ellipsoid}});
+  }
 
   r.frequency_hz = get_positive(t, "frequency", Quantity::frequency, "Hz");
   try {

@@ -420,3 +420,18 @@ TEST(RadarAtBand, BeamwidthPast180DegreesNamesFileAndKey) {
 
 }  // namespace
 }  // namespace ris
+
+namespace ris {
+namespace {
+
+// `earth = "flat" | "ellipsoid"` (docs/radar-format.md): absent by default
+// (the run chooses), anything else refused naming the key.
+TEST(RadarConfig, EarthModelKey) {
+  EXPECT_FALSE(test::parse_radar(kMinimal).earth.has_value());
+  EXPECT_EQ(test::parse_radar("earth = \"flat\"\n" + kMinimal).earth, EarthModel::flat);
+  EXPECT_EQ(test::parse_radar("earth = \"ellipsoid\"\n" + kMinimal).earth, EarthModel::ellipsoid);
+  test::expect_radar_error("earth = \"round\"\n" + kMinimal, "earth");
+}
+
+}  // namespace
+}  // namespace ris

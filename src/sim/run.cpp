@@ -7,10 +7,12 @@
 #include <chrono>
 
 #include "ris/backscatter/library.h"
+#include "ris/io/ellipsoidal_dem.h"
 #include "ris/scene/dem_import.h"
 #include "ris/scene/scene_source.h"
 #include "ris/scene/scene_stream.h"
 #include "ris/sensor/radar_config.h"
+#include "ris/sim/acquisition_products.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/sar_coherent.h"
 #include "ris/sim/slar_products.h"
@@ -87,6 +89,17 @@ SlarRunInfo run_info(const RunRequest& r, const std::string& backscatter_path) {
   return info;
 }
 
+// A scene run's geometry is the flat-Earth frame's (its track is given in
+// scene coordinates); the ellipsoid needs an acquisition's orbit and grid.
+void check_scene_earth(const RunRequest& r, const RadarParams& radar) {
+  const std::optional<EarthModel> earth = r.earth ? r.earth : radar.earth;
+  if (earth.value_or(EarthModel::flat) == EarthModel::flat) return;
+  throw InputError(r.earth ? "" : radar.source_file, r.earth ? "--earth" : "earth",
+                   "\"ellipsoid\" needs an acquisition's orbit and radar grid (ris simulate "
+                   "--acquisition P --dem D); a scene run's track lies in the flat-Earth frame: "
+                   "expected \"flat\" or no earth key");
+}
+
 void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   if (!r.targets_path.empty() || (r.targets && !r.targets->empty())) {
     throw InputError(r.targets_path, "--targets",
@@ -100,6 +113,7 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   }
   res.kind = RunKind::streamed;
   res.radar = load_radar_of(r);
+  check_scene_earth(r, res.radar);
   const LoadedSigma0 sigma0 = load_sigma0(r);
   res.info = run_info(r, sigma0.path);
   SlarStreamOptions o;
@@ -122,6 +136,46 @@ void render_slar_run(RunResult& res, std::uint64_t seed) {
   }
 }
 
+// The simulation on an acquisition's radar grid (ris/sim/acquisition_simulation.h).
+void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
+  if (r.stream || r.block_lines > 0) {
+    throw InputError("", r.stream ? "--stream" : "--block-lines",
+                     "an acquisition run is held in memory (a window of at most 50 M pixels); "
+                     "drop the option");
+  }
+  if (!r.targets_path.empty() || (r.targets && !r.targets->empty())) {
+    throw InputError(r.targets_path, "--targets",
+                     "point targets are not placed on an acquisition's grid yet; drop --targets");
+  }
+  if (r.dem_path.empty()) {
+    throw InputError(r.acquisition_path, "--dem",
+                     "an acquisition run needs a DEM of the terrain (geographic WGS 84, as for "
+                     "ris topo)");
+  }
+  if (cb.progress) cb.progress("reading inputs", 0.0);
+  res.radar = load_radar_of(r);
+  check_product_selection(r.products, acquisition_product_stems(), "--products");
+  const Acquisition acq = read_acquisition(r.acquisition_path, r.acquisition);
+  const EllipsoidalDem dem = read_ellipsoidal_dem(r.dem_path);
+  const LoadedSigma0 sigma0 = load_sigma0(r);
+  res.info = run_info(r, sigma0.path);
+  res.info.scene_path = r.dem_path;
+  AcquisitionSimOptions o;
+  o.earth = r.earth ? *r.earth : res.radar.earth.value_or(EarthModel::ellipsoid);
+  o.category = r.category;
+  o.full_grid = r.full_grid;
+  o.backscatter_file = sigma0.path;
+  if (cb.progress) cb.progress("geometry + image formation on the acquisition's grid", 0.1);
+  auto a = std::make_shared<AcquisitionSimulation>(
+      simulate_acquisition(acq, dem, res.radar, *sigma0.source, o));
+  res.kind = res.radar.mode == RadarMode::sar ? RunKind::sar : RunKind::slar;
+  res.slar = std::move(a->sim);
+  res.acquisition = std::move(a);
+  for (const std::string& w : res.slar->warnings) warn(cb, w);
+  if (cb.progress) cb.progress("speckle and greytones", 0.9);
+  render_slar_run(res, r.seed);
+}
+
 }  // namespace
 
 RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
@@ -132,6 +186,16 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   if (r.threads > 0) omp_set_num_threads(r.threads);
   const Clock::time_point t0 = Clock::now();
   RunResult res;
+  if (!r.acquisition_path.empty()) {
+    run_acquisition(r, cb, res);
+    if (!r.out_dir.empty()) {
+      if (cb.progress) cb.progress("writing products", 0.95);
+      res.write_seconds = write_run_products(res, r.out_dir);
+    }
+    if (cb.progress) cb.progress("done", 1.0);
+    res.seconds = seconds_since(t0);
+    return res;
+  }
   if (should_stream(r, cb)) {
     run_streamed(r, cb, res);
     res.seconds = seconds_since(t0);
@@ -145,6 +209,7 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   // is the one reported).
   const RadarParams radar = load_radar_of(r);
   res.radar = radar;
+  check_scene_earth(r, radar);
   check_product_selection(r.products,
                           radar.mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems(),
                           "--products");
@@ -210,7 +275,9 @@ double write_run_products(const RunResult& res, const std::filesystem::path& out
                      "a streamed run writes its products while it runs; none are kept");
   }
   const Clock::time_point t0 = Clock::now();
-  if (res.kind == RunKind::ppi) {
+  if (res.acquisition) {
+    write_acquisition_products(out_dir, *res.acquisition, *res.slar, *res.slar_pictures, res.info);
+  } else if (res.kind == RunKind::ppi) {
     write_ppi_products(out_dir, *res.scene, *res.ppi, *res.ppi_pictures, res.info);
   } else {
     nlohmann::json extra = nlohmann::json::object();

@@ -519,10 +519,7 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
   } else {
     detail::run_oblique_lines(scene, g, lut, p, radar_file, prof, maps, counts);
   }
-  g.nodata_samples = counts.nodata;
-  g.shadow_samples = counts.shadow;
-  g.back_facing_samples = counts.back_facing;
-  g.layover_samples = counts.layover;
+  set_sample_counts(g, counts);
   // Counted by the threads (a serial count over the scene was a serial step).
   std::int64_t nodata_cells = 0;
   for_thread_ranges(scene.size(), [&](std::size_t i0, std::size_t i1) {
@@ -532,13 +529,25 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
   });
   g.nodata_cells = nodata_cells;
   check_swath_hits_scene(prof.samples_in_swath, p.range, counts, radar_file);
+  return slar_image_from_profiles(prof, p, g.line_spacing_m);
+}
+
+void set_sample_counts(SlarGeometry& g, const SlarLineCounts& counts) {
+  g.nodata_samples = counts.nodata;
+  g.shadow_samples = counts.shadow;
+  g.back_facing_samples = counts.back_facing;
+  g.layover_samples = counts.layover;
+}
+
+SlarImage slar_image_from_profiles(SlarLineProfiles& prof, const SlarImagingParams& p,
+                                   double line_spacing_m) {
   SlarImage img;
-  img.lines = g.lines;
+  img.lines = prof.lines;
   img.bins = p.range.count;
   img.range = p.range;
-  img.line_spacing_m = g.line_spacing_m;
+  img.line_spacing_m = line_spacing_m;
   img.samples_in_swath = prof.samples_in_swath;
-  integrate_slar_azimuth(prof, p, g.line_spacing_m, img);
+  integrate_slar_azimuth(prof, p, line_spacing_m, img);
   img.mapped_count = std::move(prof.mapped_count);
   img.visible_count = std::move(prof.visible_count);
   return img;

@@ -16,8 +16,11 @@
 //   LineSpan load(int line, LineScratch& s)   the line's terrain into s
 //   void store_maps(int line, const LineSpan&, const LineScratch& s)
 //   void finish_block()                        e.g. a tile's maps written back
-// Later sources (an acquisition's radar grid, an MPI rank's block range)
-// add a thread source, not a driver.
+// A source whose terrain is not a flat-Earth line (an acquisition's radar
+// grid on the ellipsoid: sim/acquisition_lines.h) computes the look geometry
+// itself in load() and says so with `static constexpr bool
+// kMakesGeometry = true`; the engine then skips line_geometry. Later sources
+// (an MPI rank's block range) add a thread source, not a driver.
 //
 // Blocks go to threads dynamically; each line's profile row and each cell's
 // maps are written by one block, so the bytes do not depend on the thread
@@ -26,6 +29,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
 #include <variant>
 
 #include "sim/slar_line_stages.h"
@@ -40,6 +44,16 @@ struct LineSpan {
   int n = 0;
   const SlarGeometry* layout = nullptr;
 };
+
+// Whether a source computes its lines' look geometry itself (kMakesGeometry).
+template <class Source>
+constexpr bool makes_geometry() {
+  if constexpr (requires { Source::kMakesGeometry; }) {
+    return Source::kMakesGeometry;
+  } else {
+    return false;
+  }
+}
 
 // The per-line stages' fixed parts for a run.
 struct LineStages {
@@ -72,7 +86,9 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
           [&](auto& source) {
             for (int line = b0; line < b1; ++line) {
               const LineSpan span = source.load(line, s);
-              line_geometry(*span.layout, stages.look, stages.need_incidence, s);
+              if constexpr (!makes_geometry<std::remove_cvref_t<decltype(source)>>()) {
+                line_geometry(*span.layout, stages.look, stages.need_incidence, s);
+              }
               in_swath += accumulate_line(stages.ctx, span.n, s, prof, line, local,
                                           stages.range_window_bins, span.first);
               source.store_maps(line, span, s);

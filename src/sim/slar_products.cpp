@@ -137,6 +137,28 @@ BlockOrder scene_line_order(const Track& t) {
   return BlockOrder::top_down;
 }
 
+json slar_image_json(const SlarSimulation& sim) {
+  const SlarImage& img = sim.image;
+  return {{"lines", img.lines},
+          {"range_bins", img.bins},
+          {"near_slant_range_m", img.range.near_m},
+          {"range_bin_m", img.range.bin_m},
+          {"line_spacing_m", img.line_spacing_m},
+          {"samples_in_swath", img.samples_in_swath},
+          {"azimuth_footprint", sim.radar.mode == RadarMode::sar
+                                    ? "SAR: constant, azimuth_looks * azimuth_resolution"
+                                    : "w(R) = R * azimuth_beamwidth at the bin centre"},
+          {"range_switch_applied", sim.range_corrected},
+          {"area_switch_applied", sim.area_corrected}};
+}
+
+json greytone_json(const SlarPictures& pic) {
+  return {{"reference_power_w", pic.reference_power_w},
+          {"reference_greytone", pic.reference_greytone},
+          {"greytones_per_decade", pic.greytones_per_decade},
+          {"film_offset", pic.film_offset}};
+}
+
 json slar_metadata(const Scene& scene, const SlarSimulation& sim, const SlarPictures& pic,
                    const SlarRunInfo& info, const json& extra) {
   const SceneSummary sum = summarise_scene(scene);
@@ -184,18 +206,7 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
           {"shadow_samples", g.shadow_samples},
           {"back_facing_samples", g.back_facing_samples},
           {"layover_samples", g.layover_samples}}},
-        {"image",
-         {{"lines", img.lines},
-          {"range_bins", img.bins},
-          {"near_slant_range_m", img.range.near_m},
-          {"range_bin_m", img.range.bin_m},
-          {"line_spacing_m", img.line_spacing_m},
-          {"samples_in_swath", img.samples_in_swath},
-          {"azimuth_footprint", sim.radar.mode == RadarMode::sar
-                                    ? "SAR: constant, azimuth_looks * azimuth_resolution"
-                                    : "w(R) = R * azimuth_beamwidth at the bin centre"},
-          {"range_switch_applied", sim.range_corrected},
-          {"area_switch_applied", sim.area_corrected}}},
+        {"image", slar_image_json(sim)},
         {"ground_range",
          {{"reference_height_m", gr.reference_height_m},
           {"near_ground_range_m", gr.near_m},
@@ -206,11 +217,7 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
           {"law", sim.radar.fading == FadingLaw::exact_gamma ? "Gamma(N, 1/N)" : "equation 21"},
           {"independent_samples_min", pic.looks.empty() ? 0.0 : *looks_min},
           {"independent_samples_max", pic.looks.empty() ? 0.0 : *looks_max}}},
-        {"greytone",
-         {{"reference_power_w", pic.reference_power_w},
-          {"reference_greytone", pic.reference_greytone},
-          {"greytones_per_decade", pic.greytones_per_decade},
-          {"film_offset", pic.film_offset}}}}},
+        {"greytone", greytone_json(pic)}}},
       {"products",
        {{picture_file("slant_range", img.bins, img.lines, info.max_png_pixels),
          "greytones, slant range: rows azimuth lines (track start first), "

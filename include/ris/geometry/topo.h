@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ris/geometry/terrain_profile.h"
 #include "ris/geometry/zero_doppler.h"
 #include "ris/io/ellipsoidal_dem.h"
 #include "ris/sensor/acquisition.h"
@@ -44,8 +45,6 @@ struct TopoOptions {
   bool full_grid = false;  // false: the window of the grid the DEM covers
   int threads = 0;         // 0: OpenMP's default
 };
-
-enum TopoMask : std::uint8_t { kMaskNone = 0, kMaskShadow = 1, kMaskLayover = 2 };
 
 struct TopoLayers {
   GridWindow window;
@@ -85,8 +84,7 @@ struct TopoLineView {
 
 // Scratch for topo_radar_line (the terrain profile); reused across lines.
 struct TopoLineScratch {
-  std::vector<double> look_rad, range_m;
-  std::vector<std::uint8_t> flags;
+  TerrainProfile profile;
   std::vector<int> count, shadowed, layover;
   double dem_mean_height_m = std::nan("");  // first guess of rdr2geo, computed once
 };
@@ -101,6 +99,14 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem,
 // DEM's outline at its lowest and highest heights, widened by two pixels),
 // clipped to the grid; empty (lines = 0) when they do not overlap.
 GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem);
+
+// The latitude/longitude box (radians) of the grid's four corner pixels on
+// the ellipsoid raised to height_m (rdr2geo), e.g. for a DEM that covers
+// the grid.
+struct LatLonBox {
+  double lat_min_rad = 0.0, lat_max_rad = 0.0, lon_min_rad = 0.0, lon_max_rad = 0.0;
+};
+LatLonBox grid_corner_box(const Acquisition& acq, double height_m);
 
 TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
                         const TopoOptions& options);

@@ -4,11 +4,9 @@
 // fractional lines and bins are positions between sample centres.
 #pragma once
 
-namespace ris {
+#include "ris/sensor/look_side.h"
 
-// ISCE3's convention: left = +1, right = -1 (the sign of the look direction
-// relative to velocity x (-nadir)).
-enum class LookSide : int { left = 1, right = -1 };
+namespace ris {
 
 struct RadarGrid {
   double sensing_start_s = 0.0;  // zero-Doppler time of line 0, s since the orbit epoch

@@ -13,12 +13,16 @@
 #include <string>
 #include <vector>
 
+#include "ris/sensor/look_side.h"
 #include "ris/sensor/polarisation.h"
 
 namespace ris {
 
 enum class RadarMode { slar, sar, ppi };
-enum class LookSide { right, left };
+// The Earth a run's geometry uses (docs/geometry.md): the flat-Earth frame of
+// the seed (a scene run's track), or the WGS 84 ellipsoid (an acquisition's
+// orbit and radar grid, ris simulate --acquisition).
+enum class EarthModel { flat, ellipsoid };
 
 // One-way elevation antenna power gain G_e(beta) relative to boresight, as a
 // function of the look angle beta from nadir (MODEL.md section 3).
@@ -182,6 +186,9 @@ struct RadarParams {
   std::optional<double> independent_samples;  // nullopt: the seed's equation 16
                                               // (ris/sensor/radar_derived.h)
   double azimuth_line_spacing_m = 0.0;        // 0: one scene cell
+  // `earth = "flat" | "ellipsoid"`; nullopt: the run's default (flat for a
+  // scene run, the ellipsoid for an acquisition).
+  std::optional<EarthModel> earth;
 
   ReferenceCell reference;
   FilmParams film;

@@ -31,7 +31,9 @@
 
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/scene/scene.h"
+#include "ris/sensor/acquisition.h"
 #include "ris/sensor/radar_params.h"
+#include "ris/sim/acquisition_simulation.h"
 #include "ris/sim/point_target.h"
 #include "ris/sim/point_target_irf.h"
 #include "ris/sim/ppi_simulation.h"
@@ -68,6 +70,21 @@ struct RunRequest {
   // Which products and how compressed (ris/sim/run_info.h).
   ProductSelection products;
   CompressionPreset compression = CompressionPreset::fast;
+
+  // A run on a real acquisition's radar grid instead of a scene
+  // (ris/sim/acquisition_simulation.h; scene_path is not read): the product
+  // (NISAR .h5, Sentinel-1 .SAFE, ris .toml), which part of it, the DEM
+  // (geographic WGS 84) whose terrain is imaged, its one backscatter
+  // category, and the whole grid rather than the DEM's window.
+  std::string acquisition_path;
+  AcquisitionOptions acquisition;
+  std::string dem_path;
+  std::uint16_t category = AcquisitionSimOptions{}.category;
+  bool full_grid = false;
+  // The Earth model (`--earth`); nullopt: the radar file's `earth` key, else
+  // flat for a scene run and the ellipsoid for an acquisition. A scene run
+  // takes only "flat" (its track is in the flat-Earth frame).
+  std::optional<EarthModel> earth;
 };
 
 struct RunCallbacks {
@@ -95,6 +112,9 @@ struct RunResult {
   // PPI.
   std::optional<PpiSimulation> ppi;
   std::optional<PpiPictures> ppi_pictures;
+  // An acquisition run: its grid window and radar-grid layers (its
+  // simulation is in `slar`).
+  std::shared_ptr<const AcquisitionSimulation> acquisition;
   // A streamed run (no arrays kept: the products are on disk).
   std::optional<SlarStreamSummary> streamed;
   // Wall time: the whole run, and writing the products.

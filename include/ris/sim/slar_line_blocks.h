@@ -80,6 +80,14 @@ class SlarLineEngine {
 void check_swath_hits_scene(std::int64_t samples_in_swath, const SlantRangeBins& range,
                             const SlarLineCounts& counts, const std::string& radar_file);
 
+// The geometry's sample counts from the engine's.
+void set_sample_counts(SlarGeometry& g, const SlarLineCounts& counts);
+
+// The image of an engine run's line profiles (all lines, from line 0):
+// azimuth integration over line_spacing_m; the profiles' counts move into it.
+SlarImage slar_image_from_profiles(SlarLineProfiles& prof, const SlarImagingParams& p,
+                                   double line_spacing_m);
+
 // The whole fused run for an in-memory scene: fills `maps` (rows x cols),
 // sets layout's counts, returns the image as form_slar_image does (same
 // InputError for a swath that misses the scene). fused_slar_image_applies()

@@ -41,6 +41,12 @@ namespace ris {
 std::string picture_file(const std::string& stem, int cols, int rows,
                          std::int64_t max_png_pixels = kMaxPngPixels);
 
+// metadata.json's "derived" "image" block (the slant-range image's layout,
+// azimuth footprint and switches) and "greytone" block, shared with the
+// acquisition run's (ris/sim/acquisition_products.h).
+nlohmann::json slar_image_json(const SlarSimulation& sim);
+nlohmann::json greytone_json(const SlarPictures& pictures);
+
 // metadata.json's content.
 // extra (added, backward compatible): merged into the top level (SAR:
 // warnings, noise, point-target measurements).

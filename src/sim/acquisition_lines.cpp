@@ -1,0 +1,194 @@
+#include "sim/acquisition_lines.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ris/util/units.h"
+
+namespace ris::detail {
+
+namespace {
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+constexpr float kNanF = std::numeric_limits<float>::quiet_NaN();
+
+ZeroDopplerFrame frame_of_line(const Acquisition& acq, int grid_line) {
+  const OrbitState st = acq.orbit.interpolate(acq.grid.time_of_line(grid_line));
+  return ZeroDopplerFrame(st, acq.grid.look_side, acq.ellipsoid);
+}
+}  // namespace
+
+ProfileSpan AcquisitionRun::span_of_line(const ZeroDopplerFrame& f) const {
+  const RadarGrid& g = acq.grid;
+  const Ellipsoid& e = acq.ellipsoid;
+  const double dr = g.range_spacing_m;
+  // As ris topo: a margin for the terrain's relief (layover from beyond the
+  // swath) and a few bins.
+  const double margin = 2.0 * (dem_max_m - dem_min_m) + 4.0 * dr;
+  const double r_near = g.range_of_bin(window.bin0);
+  const double r_far = g.range_of_bin(window.bin0 + window.bins - 1);
+  const Geodetic& sub = f.sensor_geodetic;
+  const auto rho = [&](double h) { return e.to_ecef({sub.lat_rad, sub.lon_rad, h}).norm(); };
+  // Look angles on the sphere through the highest (near) and lowest (far)
+  // terrain, measured from the geocentric vertical; the profile's are from
+  // the geodetic nadir, so the angle between the two widens the span too.
+  const double look_near = f.look_on_sphere(r_near, rho(dem_max_m));
+  const double look_far = f.look_on_sphere(r_far, rho(dem_min_m));
+  const double tilt = std::acos(std::clamp(f.nadir.dot(f.sensor_m.normalized() * -1.0), -1.0, 1.0));
+  const double pad = margin / r_near + tilt;
+  ProfileSpan s;
+  s.look_lo_rad = std::max(0.0, look_near - pad);
+  s.look_hi_rad = look_far + pad;
+  // samples_per_bin points per range bin over the swath, as densely over
+  // the pads.
+  const double per_rad =
+      (r_far - r_near + dr) / (dr / samples_per_bin) / std::max(look_far - look_near, 1e-9);
+  s.points = static_cast<std::size_t>((s.look_hi_rad - s.look_lo_rad) * per_rad) + 2;
+  if (max_points > 0) s.points = std::min(s.points, max_points);
+  s.height_ref_m = 0.5 * (dem_min_m + dem_max_m);
+  return s;
+}
+
+std::size_t acquisition_max_points(AcquisitionRun& run) {
+  run.max_points = 0;
+  std::size_t n = 2;
+  const GridWindow& w = run.window;
+  for (int l : {w.line0, w.line0 + w.lines / 2, w.line0 + w.lines - 1}) {
+    n = std::max(n, run.span_of_line(frame_of_line(run.acq, l)).points);
+  }
+  return n + n / 4 + 16;
+}
+
+LineSpan AcquisitionLineSource::load(int line, LineScratch& s) {
+  const RadarGrid& g = run.acq.grid;
+  const Ellipsoid& e = run.acq.ellipsoid;
+  const OrbitState st = run.acq.orbit.interpolate(g.time_of_line(run.window.line0 + line));
+  const ZeroDopplerFrame f(st, g.look_side, e);
+  const ProfileSpan span = run.span_of_line(f);
+  trace_terrain_profile(f, e, run.dem, span, true, profile);
+  const std::size_t n = span.points;
+  look_rad.resize(n);
+  range_m.resize(n);
+  ground_u_m.resize(n);
+  const Geodetic& sub = f.sensor_geodetic;
+  const Vec3 nadir0 = e.to_ecef({sub.lat_rad, sub.lon_rad, 0.0});
+  const double rho = nadir0.norm();
+  const double sensor_h = sub.height_m;
+  const bool flat = run.earth == EarthModel::flat;
+
+  // The model's look angle and slant range, and the ground distance u from
+  // the nadir along the ellipsoid (the chord's arc on the nadir's sphere).
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!std::isfinite(profile.range_m[k])) {
+      look_rad[k] = range_m[k] = ground_u_m[k] = kNan;
+      continue;
+    }
+    const Vec3 foot = e.to_ecef({profile.lat_rad[k], profile.lon_rad[k], 0.0});
+    const double chord = (foot - nadir0).norm();
+    const double u = 2.0 * rho * std::asin(std::min(1.0, chord / (2.0 * rho)));
+    ground_u_m[k] = u;
+    if (flat) {
+      const double dz = sensor_h - profile.height_m[k];
+      range_m[k] = std::hypot(u, dz);
+      look_rad[k] = std::atan2(u, dz);
+    } else {
+      range_m[k] = profile.range_m[k];
+      look_rad[k] = profile.look_rad[k];
+    }
+  }
+  mark_shadow_layover(n, look_rad.data(), range_m.data(), profile.flags.data());
+
+  // The samples: ends halfway to the neighbours, area, angles, flags.
+  const double az_per_radius = st.velocity_m_s.norm() * g.line_interval_s / st.position_m.norm();
+  const auto ok = [&](std::size_t k) { return k < n && std::isfinite(range_m[k]); };
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!ok(k)) {
+      s.flags[k] = sample_flag::kNoData;
+      s.height[k] = s.range[k] = s.near_end[k] = s.far_end[k] = s.incidence[k] =
+          s.local_incidence[k] = s.area[k] = kNanF;
+      s.category[k] = 0;
+      continue;
+    }
+    const bool prev = k > 0 && ok(k - 1), next = ok(k + 1);
+    const double r = range_m[k];
+    const double r_prev = prev ? range_m[k - 1] : next ? 2.0 * r - range_m[k + 1] : r;
+    const double r_next = next ? range_m[k + 1] : prev ? 2.0 * r - range_m[k - 1] : r;
+    const double u = ground_u_m[k];
+    const double du_prev = prev ? u - ground_u_m[k - 1] : next ? ground_u_m[k + 1] - u : 0.0;
+    const double du_next = next ? ground_u_m[k + 1] - u : du_prev;
+    const double lat = profile.lat_rad[k], lon = profile.lon_rad[k], h = profile.height_m[k];
+    const Vec3& x = profile.ground_m[k];
+    const DemSlope slope = dem_slope(run.dem, e, lat, lon, h);
+    const double n_len = std::sqrt(1.0 + slope.east * slope.east + slope.north * slope.north);
+    const EnuBasis b = Ellipsoid::enu(lat, lon);
+    double cos_local = 0.0, incidence = 0.0;
+    if (flat) {
+      // The facet's slope along the ground look direction at the target.
+      const Vec3 d = x - f.sensor_m;
+      const double ce = d.dot(b.east), cn = d.dot(b.north), ch = std::hypot(ce, cn);
+      const double g_look = ch > 0.0 ? (slope.east * ce + slope.north * cn) / ch : 0.0;
+      cos_local = (u * g_look + (sensor_h - h)) / (r * n_len);
+      incidence = look_rad[k];
+    } else {
+      const Vec3 l = (f.sensor_m - x) * (1.0 / profile.range_m[k]);
+      const Vec3 normal = (b.east * -slope.east + b.north * -slope.north + b.up) * (1.0 / n_len);
+      cos_local = normal.dot(l);
+      incidence = std::acos(std::clamp(f.nadir_normal.dot(l), -1.0, 1.0));
+    }
+    std::uint8_t fl = 0;
+    if (cos_local <= 0.0) fl |= sample_flag::kBackFacing;
+    if (profile.flags[k] & kMaskShadow) fl |= sample_flag::kShadow;
+    if (profile.flags[k] & kMaskLayover) fl |= sample_flag::kLayover;
+    s.flags[k] = fl;
+    s.height[k] = static_cast<float>(h);
+    s.range[k] = static_cast<float>(r);
+    s.near_end[k] = static_cast<float>(0.5 * (r + r_prev));
+    s.far_end[k] = static_cast<float>(0.5 * (r + r_next));
+    s.incidence[k] = static_cast<float>(incidence);
+    s.local_incidence[k] = static_cast<float>(
+        std::atan2(std::sqrt(std::max(0.0, 1.0 - cos_local * cos_local)), cos_local));
+    s.area[k] =
+        static_cast<float>(0.5 * std::abs(du_prev + du_next) * az_per_radius * x.norm() * n_len);
+    s.category[k] = run.category;
+  }
+  return {0, static_cast<int>(n), run.layout};
+}
+
+void AcquisitionLineSource::store_maps(int line, const LineSpan& span, const LineScratch& s) {
+  const RadarGrid& g = run.acq.grid;
+  const GridWindow& w = run.window;
+  const auto bins = static_cast<std::size_t>(w.bins);
+  bin_count.assign(bins, 0);
+  bin_shadow.assign(bins, 0);
+  bin_layover.assign(bins, 0);
+  bin_best.assign(bins, std::numeric_limits<float>::infinity());
+  float* local = run.local_incidence_deg + static_cast<std::size_t>(line) * bins;
+  std::uint8_t* mask = run.mask + static_cast<std::size_t>(line) * bins;
+  std::fill(local, local + bins, kNanF);
+  std::fill(mask, mask + bins, std::uint8_t{kMaskNone});
+  for (int k = 0; k < span.n; ++k) {
+    const std::uint8_t fl = s.flags[static_cast<std::size_t>(k)];
+    if (fl & sample_flag::kNoData) continue;
+    const double at = g.bin_of_range(s.range[static_cast<std::size_t>(k)]) - w.bin0;
+    const long b = std::lround(at);
+    if (b < 0 || b >= w.bins) continue;
+    const auto bb = static_cast<std::size_t>(b);
+    ++bin_count[bb];
+    bin_shadow[bb] += (fl & sample_flag::kShadow) != 0;
+    bin_layover[bb] += (fl & sample_flag::kLayover) != 0;
+    const auto off = static_cast<float>(std::abs(at - static_cast<double>(b)));
+    if (off < bin_best[bb]) {
+      bin_best[bb] = off;
+      local[bb] = static_cast<float>(rad_to_deg(s.local_incidence[static_cast<std::size_t>(k)]));
+    }
+  }
+  for (std::size_t b = 0; b < bins; ++b) {
+    if (bin_count[b] == 0) continue;
+    std::uint8_t m = kMaskNone;
+    if (bin_shadow[b] == bin_count[b]) m |= kMaskShadow;
+    if (bin_layover[b] > 0) m |= kMaskLayover;
+    mask[b] = m;
+  }
+}
+
+}  // namespace ris::detail
