@@ -16,6 +16,10 @@ packages=(
   # Boost.Math's Gauss-Legendre rules (header-only): the I2EM's HV integral
   libboost-dev
   clang-format ccache python3 hyperfine
+  # ris serve's HTTP server (docs/serve.md)
+  libcpp-httplib-dev
+  # ris serve's end-to-end test in a headless browser (tests/serve/serve_browser.py)
+  chromium chromium-driver python3-selenium
   # The Python module (import ris, docs/python.md) and its tests
   pybind11-dev python3-dev python3-numpy python3-pytest python3-gdal
 )

@@ -2,9 +2,11 @@
 
 #include <cpl_conv.h>
 #include <cpl_string.h>
+#include <cpl_vsi.h>
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
+#include <atomic>
 #include <type_traits>
 
 #include "ris/io/atomic_file.h"
@@ -62,25 +64,29 @@ RIS_INSTANTIATE_GEOTIFF(std::int32_t)
 namespace {
 
 // GDAL's PNG driver reads the source row by row (bounded memory for a file
-// source). PAM is off so no .aux.xml appears beside the temporary name.
-void png_copy(const std::filesystem::path& path, GDALDatasetH src, int zlevel) {
+// source). PAM is off so no .aux.xml appears beside the target.
+void png_create_copy(const std::string& target, const std::string& named, GDALDatasetH src,
+                     int zlevel) {
   GDALDriverH png = GDALGetDriverByName("PNG");
   RIS_CHECK(png != nullptr);
   RIS_CHECK(zlevel >= 1 && zlevel <= 9);  // GDAL's PNG driver range
-  AtomicPath out(path);
   char** options = CSLSetNameValue(nullptr, "ZLEVEL", std::to_string(zlevel).c_str());
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
-  GDALDatasetH dst =
-      GDALCreateCopy(png, out.temp_path().c_str(), src, FALSE, options, nullptr, nullptr);
+  GDALDatasetH dst = GDALCreateCopy(png, target.c_str(), src, FALSE, options, nullptr, nullptr);
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
   CSLDestroy(options);
-  if (dst == nullptr) throw InputError(path.string(), "", "cannot write PNG: " + last_gdal_error());
+  if (dst == nullptr) throw InputError(named, "", "cannot write PNG: " + last_gdal_error());
   GDALClose(dst);
+}
+
+void png_copy(const std::filesystem::path& path, GDALDatasetH src, int zlevel) {
+  AtomicPath out(path);
+  png_create_copy(out.temp_path().string(), path.string(), src, zlevel);
   out.commit();
 }
 
-void write_png(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows,
-               int channels, int zlevel) {
+// An in-memory dataset over interleaved 8-bit samples (copied in).
+GdalDataset byte_mem_dataset(const std::uint8_t* data, int cols, int rows, int channels) {
   ensure_gdal_writers_registered();
   RIS_CHECK(cols > 0 && rows > 0);
   GDALDriverH mem = GDALGetDriverByName("MEM");
@@ -94,6 +100,12 @@ void write_png(const std::filesystem::path& path, const std::uint8_t* data, int 
                               cols, rows, GDT_Byte, channels, cols * channels);
     RIS_CHECK(err == CE_None);
   }
+  return src;
+}
+
+void write_png(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows,
+               int channels, int zlevel) {
+  GdalDataset src = byte_mem_dataset(data, cols, rows, channels);
   png_copy(path, handle(src), zlevel);
 }
 }  // namespace
@@ -104,6 +116,23 @@ void write_png_gray_from_raster(const std::filesystem::path& path,
   RIS_CHECK(GDALGetRasterCount(handle(src)) == 1 &&
             GDALGetRasterDataType(GDALGetRasterBand(handle(src), 1)) == GDT_Byte);
   png_copy(path, handle(src), zlevel);
+}
+
+std::vector<std::uint8_t> encode_png(const std::uint8_t* data, int cols, int rows, int channels,
+                                     int zlevel) {
+  RIS_CHECK(channels == 1 || channels == 3 || channels == 4);
+  GdalDataset src = byte_mem_dataset(data, cols, rows, channels);
+  // A /vsimem/ name of this call's own (callers may run on many threads).
+  static std::atomic<std::uint64_t> counter{0};
+  const std::string name = "/vsimem/ris-encode-" + std::to_string(counter.fetch_add(1)) + ".png";
+  png_create_copy(name, "in-memory PNG", handle(src), zlevel);
+  vsi_l_offset length = 0;
+  GByte* bytes = VSIGetMemFileBuffer(name.c_str(), &length, TRUE);  // takes ownership
+  RIS_CHECK(bytes != nullptr);
+  std::vector<std::uint8_t> png(bytes, bytes + length);
+  VSIFree(bytes);
+  VSIUnlink(name.c_str());
+  return png;
 }
 
 void write_png_gray(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows,
