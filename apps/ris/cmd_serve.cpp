@@ -22,6 +22,7 @@
 #include "ris/serve/server.h"
 #include "ris/serve/session.h"
 #include "ris/util/data_dir.h"
+#include "ris/util/memory_reuse.h"
 #include "run_input_options.h"
 
 namespace ris::app {
@@ -55,6 +56,9 @@ void run_serve(ServeArgs& a) {
   sigaddset(&stop_signals, SIGINT);
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  // Runs happen on whichever HTTP worker takes the request: one arena, so
+  // they reuse each other's freed buffers (memory stays at one run's size).
+  share_freed_memory_between_threads(1);
 
   Session session(a.inputs);
   HttpServer server(session, a.server);
