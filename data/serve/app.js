@@ -205,7 +205,9 @@ async function drawHistogram() {
 }
 
 // ---- zoom, pan and click on a viewport ----
-function makeZoomable(viewport, stage, img, onClick) {
+// paint (optional): {active(), down(x, y), move(x, y), up()} in image pixels;
+// while active, dragging paints instead of panning.
+function makeZoomable(viewport, stage, img, onClick, paint) {
   const t = { scale: 1, x: 0, y: 0 };
   const apply = () => {
     stage.style.transform = `translate(${t.x}px, ${t.y}px) scale(${t.scale})`;
@@ -227,17 +229,30 @@ function makeZoomable(viewport, stage, img, onClick) {
     t.x = px - (px - t.x) * k; t.y = py - (py - t.y) * k; t.scale *= k;
     apply();
   }, { passive: false });
+  const pixelAt = (ev) => {
+    const r = img.getBoundingClientRect();
+    return [((ev.clientX - r.left) / r.width) * img.naturalWidth,
+            ((ev.clientY - r.top) / r.height) * img.naturalHeight];
+  };
   let drag = null;
+  let painting = false;
   viewport.addEventListener('mousedown', (ev) => {
+    if (paint && paint.active()) {
+      painting = true;
+      paint.down(...pixelAt(ev));
+      return;
+    }
     drag = { x0: ev.clientX, y0: ev.clientY, tx: t.x, ty: t.y, moved: false };
   });
   window.addEventListener('mousemove', (ev) => {
+    if (painting) { paint.move(...pixelAt(ev)); return; }
     if (!drag) return;
     const dx = ev.clientX - drag.x0, dy = ev.clientY - drag.y0;
     if (Math.abs(dx) + Math.abs(dy) > 3) drag.moved = true;
     if (drag.moved) { t.x = drag.tx + dx; t.y = drag.ty + dy; apply(); }
   });
   window.addEventListener('mouseup', (ev) => {
+    if (painting) { painting = false; paint.up(); return; }
     if (drag && !drag.moved && viewport.contains(ev.target)) {
       const r = img.getBoundingClientRect();
       const x = Math.floor(((ev.clientX - r.left) / r.width) * img.naturalWidth);
@@ -336,9 +351,11 @@ async function editScene(request) {
   try {
     setStatus('editing…');
     const { body } = await request();
-    state.scene.description = state.scene.description || {};
-    state.scene.description.object = body.objects;
-    listObjects();
+    if (body.objects) {
+      state.scene.description = state.scene.description || {};
+      state.scene.description.object = body.objects;
+      listObjects();
+    }
     showError('');
     await showRun(body.run);
   } catch (e) {
@@ -381,12 +398,12 @@ function wireSceneTools() {
   $('add-box').addEventListener('click', () => {
     const c = sceneCentre();
     addObject({ type: 'box', x: Math.round(c.x), y: Math.round(c.y), length: 300, width: 300,
-                height: 150, category: 5 });
+                height: 150, rotation: 0, category: 5 });
   });
   $('add-pyramid').addEventListener('click', () => {
     const c = sceneCentre();
     addObject({ type: 'pyramid', x: Math.round(c.x), y: Math.round(c.y), base: 400, height: 200,
-                category: 4 });
+                rotation: 0, category: 4 });
   });
   $('delete-object').addEventListener('click', () => {
     if (selectedObject < 0) return;
@@ -425,6 +442,57 @@ function wireSceneTools() {
   });
 }
 
+// ---- painting categories (raster scenes) ----
+let stroke = [];   // brush centres, [col, row]
+let polygon = [];  // polygon vertices, [col, row]
+const paintMode = () => document.querySelector('input[name=paint-mode]:checked').value;
+
+async function sendPaint(shape) {
+  const body = { category: Number($('paint-category').value), ...shape };
+  await editScene(() => postJson('/api/scene/paint', body));
+}
+
+const scenePaint = {
+  active: () => !state.scene.editable && paintMode() !== 'off',
+  down(x, y) {
+    if (paintMode() === 'polygon') {
+      polygon.push([x, y]);
+      $('polygon-note').textContent = `${polygon.length} vertices`;
+    } else {
+      stroke = [[x, y]];
+    }
+  },
+  move(x, y) {
+    if (paintMode() !== 'brush' || !stroke.length) return;
+    // A centre every half radius along the path keeps the stroke continuous
+    // however far the mouse jumped between two events.
+    const step = 0.5 * Number($('paint-radius').value);
+    const [px, py] = stroke[stroke.length - 1];
+    const n = Math.floor(Math.hypot(x - px, y - py) / step);
+    for (let k = 1; k <= n; ++k) stroke.push([px + ((x - px) * k) / n, py + ((y - py) * k) / n]);
+  },
+  up() {
+    if (paintMode() !== 'brush' || !stroke.length) return;
+    const brush = stroke;
+    stroke = [];
+    sendPaint({ brush, radius: Number($('paint-radius').value) });
+  },
+};
+
+function wirePaintTools() {
+  $('fill-polygon').addEventListener('click', () => {
+    const vertices = polygon;
+    polygon = [];
+    $('polygon-note').textContent = '';
+    sendPaint({ polygon: vertices });
+  });
+  $('clear-polygon').addEventListener('click', () => {
+    polygon = [];
+    $('polygon-note').textContent = '';
+  });
+  $('paint-undo').addEventListener('click', () => editScene(() => postJson('/api/scene/undo', {})));
+}
+
 // ---- controls from the state ----
 function updateOutputs() {
   $('depression-value').textContent = $('depression').value;
@@ -461,6 +529,9 @@ function setControls() {
   fillSelect($('radar-preset'), state.radar_presets, '');
   fillSelect($('backscatter'), state.backscatter_libraries, state.backscatter);
   $('scene-tools').hidden = !state.scene.editable;
+  $('paint-tools').hidden = state.scene.editable;
+  $('paint-category').innerHTML = state.categories
+    .map((c) => `<option value="${c.id}">${c.id}: ${c.name}</option>`).join('');
   updateOutputs();
 }
 
@@ -474,7 +545,7 @@ async function loadState() {
 async function main() {
   makeZoomable($('image-viewport'), $('image-stage'), $('image'),
                (x, y) => inspect($('image').dataset.view || 'slant', x, y));
-  makeZoomable($('scene-viewport'), $('scene-stage'), $('scene'), onSceneClick);
+  makeZoomable($('scene-viewport'), $('scene-stage'), $('scene'), onSceneClick, scenePaint);
   for (const el of document.querySelectorAll('[data-radar], [data-top]')) {
     el.addEventListener(el.type === 'range' ? 'input' : 'change', onControl);
   }
@@ -491,6 +562,7 @@ async function main() {
   $('presentation').addEventListener('change', showImages);
   for (const c of document.querySelectorAll('.overlay')) c.addEventListener('change', showImages);
   wireSceneTools();
+  wirePaintTools();
   try {
     await loadState();
     await showRun(state.run);

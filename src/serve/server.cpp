@@ -168,6 +168,9 @@ struct HttpServer::Impl {
                 guarded([&s](const httplib::Request& req, auto& res) {
                   send_json(res, s.delete_object(index_param(req)));
                 }));
+    http.Post("/api/scene/paint", guarded([&s](const httplib::Request& req, auto& res) {
+                send_json(res, s.paint(req.body));
+              }));
     http.Post("/api/scene/undo",
               guarded([&s](const auto&, auto& res) { send_json(res, s.undo()); }));
     http.Post("/api/scene/save", guarded([&s](const httplib::Request& req, auto& res) {

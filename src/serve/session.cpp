@@ -11,9 +11,11 @@
 #include "ris/io/atomic_file.h"
 #include "ris/io/config_table.h"
 #include "ris/scene/scene_builder.h"
+#include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_json.h"
+#include "ris/serve/category_paint.h"
 #include "ris/serve/json_toml.h"
 #include "ris/serve/pixel_inspector.h"
 #include "ris/serve/radar_overrides.h"
@@ -159,6 +161,11 @@ nlohmann::json Session::state() const {
                           {"rows", s.rows},      {"cols", s.cols},
                           {"cell_m", s.dx_m},    {"undo_depth", undo_.size()}};
   if (scene_.editable) scene["description"] = toml_to_json(scene_.doc);
+  // The library's categories, for painting.
+  nlohmann::json categories = nlohmann::json::array();
+  for (const std::uint16_t c : sigma0_->category_ids()) {
+    categories.push_back({{"id", c}, {"name", sigma0_->category_name(c)}});
+  }
   return {{"scene", scene},
           {"radar",
            {{"path", inputs_.radar_path},
@@ -166,6 +173,7 @@ nlohmann::json Session::state() const {
             {"params", radar_to_json(radar_)}}},
           {"radar_presets", presets},
           {"backscatter", backscatter_name_},
+          {"categories", categories},
           {"backscatter_libraries", libraries},
           {"seed", seed_},
           {"run", run_summary()}};
@@ -247,20 +255,21 @@ const toml::array& Session::objects() const {
   return a != nullptr ? *a : empty;
 }
 
-nlohmann::json Session::apply_scene_doc(toml::table doc, bool push_undo) {
-  SceneState next = scene_from_doc(std::move(doc));
+nlohmann::json Session::apply_scene(SceneState next, bool push_undo) {
   result_ = run(next, radar_, sigma0_, backscatter_files_.at(backscatter_name_), seed_);
   if (push_undo) {
-    undo_.push_back(std::move(scene_.doc));
+    undo_.push_back(std::move(scene_));
     if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
   }
   scene_ = std::move(next);
   last_film_only_ = false;
   last_seconds_ = result_.seconds;
   ++run_id_;
-  return {{"run", run_summary()},
-          {"objects", toml_to_json(scene_.doc).value("object", nlohmann::json::array())},
-          {"undo_depth", undo_.size()}};
+  nlohmann::json j = {{"run", run_summary()}, {"undo_depth", undo_.size()}};
+  if (scene_.editable) {
+    j["objects"] = toml_to_json(scene_.doc).value("object", nlohmann::json::array());
+  }
+  return j;
 }
 
 namespace {
@@ -289,7 +298,7 @@ nlohmann::json Session::add_object(const std::string& body) {
   toml::array* list = doc["object"].as_array();
   if (list == nullptr) throw InputError(scene_.path, "object", "expected an array of tables");
   list->push_back(object);
-  return apply_scene_doc(std::move(doc), true);
+  return apply_scene_doc(std::move(doc));
 }
 
 nlohmann::json Session::update_object(std::size_t index, const std::string& body) {
@@ -301,7 +310,7 @@ nlohmann::json Session::update_object(std::size_t index, const std::string& body
   toml::table* object = doc["object"][index].as_table();
   if (object == nullptr) throw InputError(scene_.path, "object", "expected an array of tables");
   merge_toml(*object, changes);
-  return apply_scene_doc(std::move(doc), true);
+  return apply_scene_doc(std::move(doc));
 }
 
 nlohmann::json Session::delete_object(std::size_t index) {
@@ -311,19 +320,36 @@ nlohmann::json Session::delete_object(std::size_t index) {
   toml::table doc = scene_.doc;
   toml::array* list = doc["object"].as_array();
   list->erase(list->begin() + static_cast<std::ptrdiff_t>(index));
-  return apply_scene_doc(std::move(doc), true);
+  return apply_scene_doc(std::move(doc));
+}
+
+nlohmann::json Session::paint(const std::string& body) {
+  const PaintStroke stroke = parse_paint_stroke(json_body_to_toml(body, kBody));
+  std::lock_guard lock(mutex_);
+  if (scene_.editable) {
+    throw InputError(scene_.path, "",
+                     "categories are painted on raster scenes (imported DEMs); a description's "
+                     "categories are its objects' (add a patch object)");
+  }
+  SceneState next = scene_;
+  auto painted = std::make_shared<Scene>(*scene_.scene);
+  if (paint_categories(*painted, stroke) == 0) {
+    throw InputError(kBody, "", "the stroke covers no cell with data");
+  }
+  next.scene = std::move(painted);
+  return apply_scene(std::move(next), true);
 }
 
 nlohmann::json Session::undo() {
   std::lock_guard lock(mutex_);
-  require_editable(scene_.editable, scene_.path);
   if (undo_.empty()) throw InputError(scene_.path, "", "nothing to undo");
-  toml::table previous = std::move(undo_.back());
+  SceneState previous = std::move(undo_.back());
   undo_.pop_back();
-  return apply_scene_doc(std::move(previous), false);
+  return apply_scene(std::move(previous), false);
 }
 
-std::filesystem::path Session::save_path(const std::string& body, const std::string& what) const {
+std::filesystem::path Session::save_path(const std::string& body, const std::string& what,
+                                         const std::string& extension) const {
   const toml::table request = json_body_to_toml(body, kBody);
   ConfigTable t(request, kBody, "");
   const std::string name = t.get_string("name");
@@ -337,19 +363,22 @@ std::filesystem::path Session::save_path(const std::string& body, const std::str
                        name + "\"");
   }
   std::filesystem::create_directories(inputs_.out_dir);
-  return inputs_.out_dir / (name + ".toml");
+  return inputs_.out_dir / (name + extension);
 }
 
 nlohmann::json Session::save_scene(const std::string& body) {
-  const std::filesystem::path path = save_path(body, "scene");
   std::lock_guard lock(mutex_);
-  require_editable(scene_.editable, scene_.path);
-  write_text_file_atomic(path, toml_text(scene_.doc));
+  const std::filesystem::path path = save_path(body, "scene", scene_.editable ? ".toml" : ".tif");
+  if (scene_.editable) {
+    write_text_file_atomic(path, toml_text(scene_.doc));
+  } else {
+    write_scene_geotiff(*scene_.scene, path);
+  }
   return {{"path", std::filesystem::absolute(path).string()}};
 }
 
 nlohmann::json Session::save_radar(const std::string& body) {
-  const std::filesystem::path path = save_path(body, "radar");
+  const std::filesystem::path path = save_path(body, "radar", ".toml");
   std::lock_guard lock(mutex_);
   write_text_file_atomic(path, toml_text(radar_doc_));
   return {{"path", std::filesystem::absolute(path).string()}};

@@ -72,9 +72,14 @@ class Session {
   nlohmann::json add_object(const std::string& body);
   nlohmann::json update_object(std::size_t index, const std::string& body);
   nlohmann::json delete_object(std::size_t index);
+  // Raster scenes (imported DEMs): paints categories with a brush or a
+  // polygon (ris/serve/category_paint.h) and re-simulates.
+  nlohmann::json paint(const std::string& body);
+  // Undoes the last edit or paint stroke.
   nlohmann::json undo();
 
-  // Writes the scene or radar description as <out_dir>/<name>.toml; body
+  // Writes the scene or radar description as <out_dir>/<name>.toml (a
+  // raster scene, painted or not, as <name>.tif, a ris scene GeoTIFF); body
   // {"name": "..."} (letters, digits, '-', '_', at most 64).
   nlohmann::json save_scene(const std::string& body);
   nlohmann::json save_radar(const std::string& body);
@@ -106,10 +111,14 @@ class Session {
                 const std::shared_ptr<const Sigma0Source>& sigma0,
                 const std::string& backscatter_path, std::uint64_t seed) const;
   nlohmann::json run_summary() const;
-  // Runs an edited scene description and makes it current (the old one
-  // pushed on the undo stack when push_undo).
-  nlohmann::json apply_scene_doc(toml::table doc, bool push_undo);
-  std::filesystem::path save_path(const std::string& body, const std::string& what) const;
+  // Runs an edited scene and makes it current (the old one pushed on the
+  // undo stack when push_undo).
+  nlohmann::json apply_scene(SceneState next, bool push_undo);
+  nlohmann::json apply_scene_doc(toml::table doc) {
+    return apply_scene(scene_from_doc(std::move(doc)), true);
+  }
+  std::filesystem::path save_path(const std::string& body, const std::string& what,
+                                  const std::string& extension) const;
   const toml::array& objects() const;
 
   ServeInputs inputs_;
@@ -119,7 +128,7 @@ class Session {
   mutable std::mutex mutex_;
   // Under mutex_:
   SceneState scene_;
-  std::vector<toml::table> undo_;
+  std::vector<SceneState> undo_;  // scenes are immutable: states share them
   toml::table radar_doc_;
   RadarParams radar_;
   std::string backscatter_name_;
