@@ -94,6 +94,10 @@ function overlayMasks() {
 }
 
 function loadImage(img, url) {
+  // The same picture (the scene between edits): nothing to fetch.
+  if (img.complete && img.naturalWidth && img.src === new URL(url, location.href).href) {
+    return Promise.resolve(true);
+  }
   return new Promise((resolve) => {
     img.onload = () => resolve(true);
     img.onerror = () => resolve(false);

@@ -230,12 +230,21 @@ TEST_F(ServeApi, InspectorReadsAPixel) {
 TEST_F(ServeApi, EditUndoAndSaveTheScene) {
   const nlohmann::json before = json_of(client().Get("/api/state"));
   const std::size_t objects = before["scene"]["description"]["object"].size();
+  const auto scene_before =
+      client().Get(before["run"]["images"]["scene"].get<std::string>().c_str());
+  ASSERT_TRUE(scene_before);
   auto r = post("/api/scene/objects",
                 R"({"type": "box", "x": 2500, "y": 600, "length": 300, "width": 300,
                     "height": 200, "category": 5})");
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
   EXPECT_EQ(json_of(r)["objects"].size(), objects + 1);
+  // The scene picture is cached per scene version: a new URL and new bytes.
+  const std::string scene_url = json_of(r)["run"]["images"]["scene"];
+  EXPECT_NE(scene_url, before["run"]["images"]["scene"].get<std::string>());
+  const auto scene_after = client().Get(scene_url.c_str());
+  ASSERT_TRUE(scene_after);
+  EXPECT_NE(scene_after->body, scene_before->body);
   // A bad key in an object: the scene parser's message naming the object.
   r = post("/api/scene/objects/" + std::to_string(objects), R"({"heigth": 300})");
   ASSERT_TRUE(r);

@@ -66,8 +66,9 @@ const char* kind_name(RunKind k) {
 
 }  // namespace
 
-Session::SceneState Session::scene_from_doc(toml::table doc) const {
+Session::SceneState Session::scene_from_doc(toml::table doc) {
   SceneState s;
+  s.version = ++scene_versions_;
   s.path = inputs_.scene_path;
   s.editable = true;
   const SceneDescription d = parse_scene_description(doc, s.path);
@@ -91,6 +92,7 @@ Session::Session(ServeInputs inputs) : inputs_(std::move(inputs)) {
   if (is_scene_description(inputs_.scene_path)) {
     scene_ = scene_from_doc(parse_toml_file(inputs_.scene_path));
   } else {
+    scene_.version = ++scene_versions_;
     scene_.path = inputs_.scene_path;
     scene_.scene = std::make_shared<const Scene>(load_scene_source(inputs_.scene_path).scene);
   }
@@ -144,7 +146,8 @@ nlohmann::json Session::run_summary() const {
   }
   nlohmann::json images = nlohmann::json::object();
   for (const std::string& v : views) {
-    images[v] = fmt::format("/api/image/{}.png?run={}", v, run_id_);
+    images[v] = v == "scene" ? fmt::format("/api/image/scene.png?scene={}", scene_.version)
+                             : fmt::format("/api/image/{}.png?run={}", v, run_id_);
   }
   j["images"] = images;
   return j;
@@ -337,6 +340,7 @@ nlohmann::json Session::paint(const std::string& body) {
     throw InputError(kBody, "", "the stroke covers no cell with data");
   }
   next.scene = std::move(painted);
+  next.version = ++scene_versions_;
   return apply_scene(std::move(next), true);
 }
 
@@ -418,7 +422,12 @@ std::optional<std::filesystem::path> Session::product_file(const std::string& na
 
 std::vector<std::uint8_t> Session::image_png(const std::string& view) const {
   std::lock_guard lock(mutex_);
-  return view_png(result_, view);
+  if (view != "scene") return view_png(result_, view);
+  if (scene_png_.empty() || scene_png_version_ != scene_.version) {
+    scene_png_ = view_png(result_, view);
+    scene_png_version_ = scene_.version;
+  }
+  return scene_png_;
 }
 
 std::vector<std::uint8_t> Session::overlay_png(const std::string& view,

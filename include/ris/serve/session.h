@@ -101,12 +101,13 @@ class Session {
 
  private:
   struct SceneState {
+    std::uint64_t version = 0;  // new for every edit: the scene picture's cache key
     std::string path;
     bool editable = false;
     toml::table doc;  // editable scenes: the description
     std::shared_ptr<const Scene> scene;
   };
-  SceneState scene_from_doc(toml::table doc) const;
+  SceneState scene_from_doc(toml::table doc);
   RunResult run(const SceneState& scene, const RadarParams& radar,
                 const std::shared_ptr<const Sigma0Source>& sigma0,
                 const std::string& backscatter_path, std::uint64_t seed) const;
@@ -140,6 +141,11 @@ class Session {
   double last_seconds_ = 0.0;  // the last run or re-render, request parsing included
   std::vector<std::string> warnings_;
   std::map<std::string, std::filesystem::path> products_;
+  std::uint64_t scene_versions_ = 0;
+  // The scene picture of scene_.version (it changes only with an edit; the
+  // page shows it beside every run).
+  mutable std::uint64_t scene_png_version_ = 0;
+  mutable std::vector<std::uint8_t> scene_png_;
 };
 
 }  // namespace ris
