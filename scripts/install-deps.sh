@@ -16,8 +16,8 @@ packages=(
   # Boost.Math's Gauss-Legendre rules (header-only): the I2EM's HV integral
   libboost-dev
   clang-format ccache python3 hyperfine
-  # ris serve's HTTP server (docs/serve.md)
-  libcpp-httplib-dev
+  # ris serve's HTTP server (docs/serve.md), and libpng for its in-memory pictures
+  libcpp-httplib-dev libpng-dev
   # ris serve's end-to-end test in a headless browser (tests/serve/serve_browser.py)
   chromium chromium-driver python3-selenium
   # The Python module (import ris, docs/python.md) and its tests
