@@ -65,29 +65,25 @@ RIS_INSTANTIATE_GEOTIFF(std::int32_t)
 namespace {
 
 // GDAL's PNG driver reads the source row by row (bounded memory for a file
-// source). PAM is off so no .aux.xml appears beside the target.
-void png_create_copy(const std::string& target, const std::string& named, GDALDatasetH src,
-                     int zlevel) {
+// source). PAM is off so no .aux.xml appears beside the temporary name.
+void png_copy(const std::filesystem::path& path, GDALDatasetH src, int zlevel) {
   GDALDriverH png = GDALGetDriverByName("PNG");
   RIS_CHECK(png != nullptr);
   RIS_CHECK(zlevel >= 1 && zlevel <= 9);  // GDAL's PNG driver range
+  AtomicPath out(path);
   char** options = CSLSetNameValue(nullptr, "ZLEVEL", std::to_string(zlevel).c_str());
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
-  GDALDatasetH dst = GDALCreateCopy(png, target.c_str(), src, FALSE, options, nullptr, nullptr);
+  GDALDatasetH dst =
+      GDALCreateCopy(png, out.temp_path().c_str(), src, FALSE, options, nullptr, nullptr);
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
   CSLDestroy(options);
-  if (dst == nullptr) throw InputError(named, "", "cannot write PNG: " + last_gdal_error());
+  if (dst == nullptr) throw InputError(path.string(), "", "cannot write PNG: " + last_gdal_error());
   GDALClose(dst);
-}
-
-void png_copy(const std::filesystem::path& path, GDALDatasetH src, int zlevel) {
-  AtomicPath out(path);
-  png_create_copy(out.temp_path().string(), path.string(), src, zlevel);
   out.commit();
 }
 
-// An in-memory dataset over interleaved 8-bit samples (copied in).
-GdalDataset byte_mem_dataset(const std::uint8_t* data, int cols, int rows, int channels) {
+void write_png(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows,
+               int channels, int zlevel) {
   ensure_gdal_writers_registered();
   RIS_CHECK(cols > 0 && rows > 0);
   GDALDriverH mem = GDALGetDriverByName("MEM");
@@ -101,12 +97,6 @@ GdalDataset byte_mem_dataset(const std::uint8_t* data, int cols, int rows, int c
                               cols, rows, GDT_Byte, channels, cols * channels);
     RIS_CHECK(err == CE_None);
   }
-  return src;
-}
-
-void write_png(const std::filesystem::path& path, const std::uint8_t* data, int cols, int rows,
-               int channels, int zlevel) {
-  GdalDataset src = byte_mem_dataset(data, cols, rows, channels);
   png_copy(path, handle(src), zlevel);
 }
 }  // namespace
