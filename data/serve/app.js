@@ -223,7 +223,13 @@ function makeZoomable(viewport, stage, img, onClick, paint) {
     t.x = 0; t.y = 0;
     apply();
   };
-  img.addEventListener('load', () => { if (!img.dataset.fitted) { img.dataset.fitted = 1; fit(); } });
+  // Fit the first picture, and again when the size changes (another
+  // presentation); keep the user's zoom across runs of the same size.
+  let fittedSize = '';
+  img.addEventListener('load', () => {
+    const size = `${img.naturalWidth}x${img.naturalHeight}`;
+    if (size !== fittedSize) { fittedSize = size; fit(); }
+  });
   viewport.addEventListener('dblclick', fit);
   viewport.addEventListener('wheel', (ev) => {
     ev.preventDefault();
