@@ -443,9 +443,10 @@ function wireSceneTools() {
     try {
       const { body } = await postJson('/api/products', {});
       $('saved').textContent = `products in ${body.folder}`;
-      $('products').innerHTML = body.files
-        .map((f) => `<li><a href="/api/products/${encodeURIComponent(f)}" download>${f}</a></li>`)
-        .join('');
+      $('products').innerHTML = '<li><a href="/api/products.zip" download>all, as a zip</a></li>' +
+        body.files
+          .map((f) => `<li><a href="/api/products/${encodeURIComponent(f)}" download>${f}</a></li>`)
+          .join('');
     } catch (e) {
       showError(e.message);
     }

@@ -142,6 +142,12 @@ struct HttpServer::Impl {
              }));
     http.Post("/api/products",
               guarded([&s](const auto&, auto& res) { send_json(res, s.write_products()); }));
+    http.Get("/api/products.zip", guarded([&s](const auto&, auto& res) {
+               const std::vector<std::uint8_t> zip = s.products_zip();
+               res.set_header("Content-Disposition", "attachment; filename=\"products.zip\"");
+               res.set_content(reinterpret_cast<const char*>(zip.data()), zip.size(),
+                               "application/zip");
+             }));
     // Products by name from the list just written; the name is never a path.
     http.Get(R"(/api/products/(.+))", guarded([&s](const httplib::Request& req, auto& res) {
                const auto path = s.product_file(req.matches[1]);

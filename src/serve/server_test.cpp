@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <httplib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <thread>
 
@@ -264,6 +265,23 @@ TEST_F(ServeApi, EditUndoAndSaveTheScene) {
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200);
   EXPECT_EQ(json_of(r)["objects"].size(), objects);
+}
+
+TEST_F(ServeApi, ProductsOneByOneAndAsZip) {
+  const auto r = post("/api/products", "{}");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const nlohmann::json files = json_of(r)["files"];
+  EXPECT_NE(std::find(files.begin(), files.end(), "metadata.json"), files.end());
+  EXPECT_NE(std::find(files.begin(), files.end(), "slant_range.png"), files.end());
+  const auto meta = client().Get("/api/products/metadata.json");
+  ASSERT_TRUE(meta);
+  ASSERT_EQ(meta->status, 200);
+  EXPECT_TRUE(nlohmann::json::parse(meta->body).contains("inputs"));
+  const auto zip = client().Get("/api/products.zip");
+  ASSERT_TRUE(zip);
+  ASSERT_EQ(zip->status, 200);
+  EXPECT_EQ(zip->body.substr(0, 2), "PK");
 }
 
 }  // namespace

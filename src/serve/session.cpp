@@ -10,6 +10,7 @@
 #include "ris/backscatter/library.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/config_table.h"
+#include "ris/io/zip_archive.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
@@ -418,6 +419,14 @@ std::optional<std::filesystem::path> Session::product_file(const std::string& na
   const auto it = products_.find(name);
   if (it == products_.end()) return std::nullopt;
   return it->second;
+}
+
+std::vector<std::uint8_t> Session::products_zip() const {
+  std::lock_guard lock(mutex_);
+  if (products_.empty()) throw InputError("request", "", "no products yet: write them first");
+  std::vector<std::filesystem::path> files;
+  for (const auto& [name, path] : products_) files.push_back(path);
+  return zip_files(files);
 }
 
 std::vector<std::uint8_t> Session::image_png(const std::string& view) const {

@@ -90,6 +90,8 @@ class Session {
   // under out_dir; returns their names, each then served by product_file.
   nlohmann::json write_products();
   std::optional<std::filesystem::path> product_file(const std::string& name) const;
+  // All of them as one zip archive (InputError before write_products).
+  std::vector<std::uint8_t> products_zip() const;
 
   // Views of the current run (ris/serve/run_views.h, pixel_inspector.h).
   std::vector<std::uint8_t> image_png(const std::string& view) const;
