@@ -14,9 +14,10 @@ import sys
 
 # Lowest first (src/kernels/: see KERNEL_LAYER). perf holds the bench scene set-up (builds a scene, a radar
 # and runs the simulation), so it sits beside sim: it may include sim, and
-# only apps and benches include it.
+# only apps and benches include it. serve is the HTTP server of `ris serve`
+# (it runs simulations through sim and draws through image).
 LAYERS = ["util", "io", "scene", "sensor", "backscatter", "geometry", "image",
-          "sim", "perf", "apps"]
+          "sim", "perf", "serve", "apps"]
 RANK = {name: i for i, name in enumerate(LAYERS)}
 # The SIMD kernels (src/kernels/<folder>/, beside their portable twins) are
 # each part of the stage they serve; the SIMD helpers (simd/, and the clone

@@ -20,6 +20,10 @@ packages=(
   # The libFuzzer harnesses (make fuzz, fuzz/): clang and its libFuzzer
   clang libfuzzer-14-dev
   clang-format ccache python3 hyperfine
+  # ris serve's HTTP server (docs/serve.md), and libpng for its in-memory pictures
+  libcpp-httplib-dev libpng-dev
+  # ris serve's end-to-end test in a headless browser (tests/serve/serve_browser.py)
+  chromium chromium-driver python3-selenium
   # The Python module (import ris, docs/python.md) and its tests
   pybind11-dev python3-dev python3-numpy python3-pytest python3-gdal
 )

@@ -37,6 +37,7 @@
 #include "ris/sim/run.h"
 #include "ris/sim/slar_products.h"
 #include "ris/util/progress.h"
+#include "run_input_options.h"
 
 namespace ris::app {
 namespace {
@@ -171,15 +172,10 @@ void run_simulate(SimulateArgs& a) {
 void add_simulate(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   RunRequest& r = args->request;
-  r.scene_path = default_scene_path();
-  r.radar_path = default_radar_path();
   auto* cmd = app.add_subcommand(
       "simulate", "Simulate a SLAR, SAR or PPI image of a scene (the radar file's mode)");
-  cmd->add_option("--scene", r.scene_path, "Scene: a .toml description or a raster")
-      ->capture_default_str();
-  cmd->add_option("--radar", r.radar_path, "Radar description (TOML)")->capture_default_str();
-  cmd->add_option("--backscatter", r.backscatter_path,
-                  "Backscatter library (.toml) or table (.csv); default: the standard library");
+  add_run_input_options(cmd, r.scene_path, r.radar_path, r.backscatter_path,
+                        "Scene: a .toml description or a raster");
   cmd->add_option("--out", args->out, "Output folder (written as a whole)")->capture_default_str();
   cmd->add_option("--targets", r.targets_path,
                   "Point targets (TOML, [[target]] tables): corner reflectors etc.");

@@ -22,4 +22,12 @@ void keep_freed_memory_for_reuse() {
 #endif
 }
 
+void share_freed_memory_between_threads(int arenas) {
+#if defined(__GLIBC__)
+  mallopt(M_ARENA_MAX, arenas);
+#else
+  (void)arenas;
+#endif
+}
+
 }  // namespace ris

@@ -82,6 +82,12 @@ void write_png_gray_from_raster(const std::filesystem::path& path,
 void write_png_rgb(const std::filesystem::path& path, const std::uint8_t* rgb, int cols, int rows,
                    int zlevel = kDefaultPngLevel);
 
+// An 8-bit PNG in memory (the HTTP server's images): channels 1 (grey), 3
+// (RGB) or 4 (RGBA), interleaved; the same pixels as the writers above, made
+// by libpng without row filters (faster; files a little larger).
+std::vector<std::uint8_t> encode_png(const std::uint8_t* data, int cols, int rows, int channels,
+                                     int zlevel = kDefaultPngLevel);
+
 // A raster read back as float64, for tests and small tools.
 struct RasterF64 {
   int cols = 0;

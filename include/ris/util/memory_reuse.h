@@ -17,4 +17,12 @@ namespace ris {
 
 void keep_freed_memory_for_reuse();
 
+// For a long-running process whose runs happen on different threads (the
+// HTTP server's workers, `ris serve`): every thread takes memory from at most
+// `arenas` malloc arenas, so a buffer freed after one run is reused by the
+// next whichever thread runs it. Without this each thread's own arena keeps
+// a copy of a run's working set and the resident memory grows with the
+// number of threads that ever ran one. Call before starting threads.
+void share_freed_memory_between_threads(int arenas);
+
 }  // namespace ris

@@ -1,0 +1,51 @@
+// The HTTP server of `ris serve`: the JSON API and the page (docs/serve.md),
+// on cpp-httplib's thread pool. Runs, edits and image reads take the
+// session's lock one at a time; /api/health takes none, so a slow render
+// never blocks a health check.
+//
+// Errors: bad input gives HTTP 400 and {"error": "<the CLI's message>"}; a
+// body over the cap 413; an unknown path 404; a simulate request overtaken by
+// a newer one 409 {"superseded": true}.
+//
+// Example:
+//   ris::HttpServer server(session, {.host = "127.0.0.1", .port = 0, .web_dir = dir});
+//   int port = server.bind();
+//   std::thread t([&] { server.run(); });   ...   server.stop();  t.join();
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "ris/serve/session.h"
+
+namespace ris {
+
+struct ServerOptions {
+  std::string host = "127.0.0.1";
+  int port = 8765;                       // 0: any free port (bind() returns it)
+  std::size_t max_body_bytes = 1 << 20;  // request bodies above: HTTP 413
+  std::filesystem::path web_dir;         // the page's files (ris/serve/static_files.h)
+};
+
+class HttpServer {
+ public:
+  HttpServer(Session& session, const ServerOptions& options);
+  ~HttpServer();
+  HttpServer(const HttpServer&) = delete;
+  HttpServer& operator=(const HttpServer&) = delete;
+
+  // Binds the address; returns the port. Throws InputError (key --host or
+  // --port) when the address cannot be bound.
+  int bind();
+  // Serves until stop() (from any thread); returns then.
+  void run();
+  void stop();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ris

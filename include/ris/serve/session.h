@@ -1,0 +1,153 @@
+// The state `ris serve` keeps between requests: the scene (and, for a scene
+// description, its editable TOML), the radar description, the backscatter
+// source, the fading seed and the last run. One state is shared by every
+// client (docs/serve.md): a mutex serialises runs, edits and the reads of the
+// run's images, so concurrent clients never see a half-made run; health
+// checks do not take it.
+//
+// Every request body is a JSON object whose keys are checked like a file's
+// (ris/serve/json_toml.h): an unknown key or a bad value throws InputError
+// with the message the command line would print. No path from a client is
+// opened: radars and backscatter libraries are chosen by name from the ones
+// found at start-up, files are saved under the output folder by a plain name.
+//
+// Example:
+//   ris::ServeInputs in;  in.scene_path = "scene.toml";  in.radar_path = "radar.toml";
+//   ris::Session session(in);
+//   ris::SimulateOutcome out = session.simulate(R"({"seed": 7})");
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+#include <nlohmann/json.hpp>
+
+#include "ris/backscatter/sigma0_source.h"
+#include "ris/scene/scene.h"
+#include "ris/sim/run.h"
+
+namespace ris {
+
+struct ServeInputs {
+  std::string scene_path;        // .toml (editable) or a raster
+  std::string radar_path;        // radar description (TOML)
+  std::string backscatter_path;  // empty: the standard library
+  // Saved scenes and radars and written products go here (created when
+  // first needed); nothing else is written.
+  std::filesystem::path out_dir = "ris-serve-out";
+  // The shipped data: its radars/ and backscatter/ files are offered by name.
+  std::filesystem::path data_dir;
+  std::uint64_t seed = 1;
+};
+
+struct SimulateOutcome {
+  bool superseded = false;  // a newer request came first: nothing was run
+  nlohmann::json run;       // the run's summary (run_summary)
+};
+
+class Session {
+ public:
+  // Loads the inputs and runs once; InputError for bad input.
+  explicit Session(ServeInputs inputs);
+
+  nlohmann::json state() const;
+
+  // POST /api/simulate. Body keys: seed, depression, swath, radar (radar-file keys
+  // overriding the current description), radar_preset, backscatter (names
+  // from state()). A film-only change re-renders from the kept mean power.
+  // When a newer simulate call arrives while this one waits for the lock,
+  // this one is dropped (latest request wins).
+  SimulateOutcome simulate(const std::string& body);
+
+  // Scene editing (scene descriptions only): each re-simulates, and an edit
+  // that does not parse or build leaves the scene as it was.
+  nlohmann::json add_object(const std::string& body);
+  nlohmann::json update_object(std::size_t index, const std::string& body);
+  nlohmann::json delete_object(std::size_t index);
+  // Raster scenes (imported DEMs): paints categories with a brush or a
+  // polygon (ris/serve/category_paint.h) and re-simulates.
+  nlohmann::json paint(const std::string& body);
+  // Undoes the last edit or paint stroke.
+  nlohmann::json undo();
+
+  // Writes the scene or radar description as <out_dir>/<name>.toml (a
+  // raster scene, painted or not, as <name>.tif, a ris scene GeoTIFF); body
+  // {"name": "..."} (letters, digits, '-', '_', at most 64).
+  nlohmann::json save_scene(const std::string& body);
+  nlohmann::json save_radar(const std::string& body);
+  std::string scene_toml() const;
+  std::string radar_toml() const;
+
+  // Writes the run's products (as `ris simulate` does) into a new folder
+  // under out_dir; returns their names, each then served by product_file.
+  nlohmann::json write_products();
+  std::optional<std::filesystem::path> product_file(const std::string& name) const;
+  // All of them as one zip archive (InputError before write_products).
+  std::vector<std::uint8_t> products_zip() const;
+
+  // Views of the current run (ris/serve/run_views.h, pixel_inspector.h).
+  std::vector<std::uint8_t> image_png(const std::string& view) const;
+  std::vector<std::uint8_t> overlay_png(const std::string& view, const std::string& masks) const;
+  std::string shadow_map() const;
+  nlohmann::json histogram() const;
+  nlohmann::json sigma0_chart() const;
+  nlohmann::json inspect(const std::string& view, int x, int y) const;
+
+ private:
+  struct SceneState {
+    std::uint64_t version = 0;  // new for every edit: the scene picture's cache key
+    std::string path;
+    bool editable = false;
+    toml::table doc;  // editable scenes: the description
+    std::shared_ptr<const Scene> scene;
+  };
+  SceneState scene_from_doc(toml::table doc);
+  RunResult run(const SceneState& scene, const RadarParams& radar,
+                const std::shared_ptr<const Sigma0Source>& sigma0,
+                const std::string& backscatter_path, std::uint64_t seed) const;
+  nlohmann::json run_summary() const;
+  // Runs an edited scene and makes it current (the old one pushed on the
+  // undo stack when push_undo).
+  nlohmann::json apply_scene(SceneState next, bool push_undo);
+  nlohmann::json apply_scene_doc(toml::table doc) {
+    return apply_scene(scene_from_doc(std::move(doc)), true);
+  }
+  std::filesystem::path save_path(const std::string& body, const std::string& what,
+                                  const std::string& extension) const;
+  const toml::array& objects() const;
+
+  ServeInputs inputs_;
+  std::map<std::string, std::string> radar_presets_;      // name -> path
+  std::map<std::string, std::string> backscatter_files_;  // name -> path
+  std::atomic<std::uint64_t> latest_request_{0};
+  mutable std::mutex mutex_;
+  // Under mutex_:
+  SceneState scene_;
+  std::vector<SceneState> undo_;  // scenes are immutable: states share them
+  toml::table radar_doc_;
+  RadarParams radar_;
+  std::string backscatter_name_;
+  std::shared_ptr<const Sigma0Source> sigma0_;
+  std::uint64_t seed_ = 1;
+  RunResult result_;
+  std::uint64_t run_id_ = 0;
+  bool last_film_only_ = false;
+  double last_seconds_ = 0.0;  // the last run or re-render, request parsing included
+  std::vector<std::string> warnings_;
+  std::map<std::string, std::filesystem::path> products_;
+  std::uint64_t scene_versions_ = 0;
+  // The scene picture of scene_.version (it changes only with an edit; the
+  // page shows it beside every run).
+  mutable std::uint64_t scene_png_version_ = 0;
+  mutable std::vector<std::uint8_t> scene_png_;
+};
+
+}  // namespace ris

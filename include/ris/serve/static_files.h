@@ -1,0 +1,35 @@
+// The page's files (HTML, CSS, JS), read once at start-up from one folder
+// into memory and served by name. A request names a file; it is looked up
+// in that table and never turned into a path, so no request can make the
+// server open a file (`../../etc/passwd`, `%2e%2e/`, absolute paths: all
+// simply not found).
+//
+// Example:
+//   ris::StaticFiles files(ris::data_dir() / "serve");
+//   if (const ris::StaticFile* f = files.find("index.html")) send(f->content, f->mime);
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace ris {
+
+struct StaticFile {
+  std::string content;
+  std::string mime;  // from the extension: text/html, text/css, ...
+};
+
+class StaticFiles {
+ public:
+  // Reads every regular file directly in `folder` (not its subfolders).
+  // Throws InputError when the folder has no index.html.
+  explicit StaticFiles(const std::filesystem::path& folder);
+  // The file of that name ("" means index.html), or nullptr.
+  const StaticFile* find(const std::string& name) const;
+
+ private:
+  std::map<std::string, StaticFile> files_;
+};
+
+}  // namespace ris

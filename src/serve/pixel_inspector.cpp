@@ -1,0 +1,141 @@
+#include "ris/serve/pixel_inspector.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "ris/geometry/scene_geometry_maps.h"
+#include "ris/image/geocode.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+
+namespace ris {
+namespace {
+
+void check_inside(int x, int y, int cols, int rows, const std::string& view) {
+  if (x < 0 || y < 0 || x >= cols || y >= rows) {
+    throw InputError("request", "x, y",
+                     fmt::format("pixel ({}, {}) is outside the {} view of {} x {} pixels", x, y,
+                                 view, cols, rows));
+  }
+}
+
+nlohmann::json flags_json(std::uint8_t f, bool scene_grid) {
+  nlohmann::json names = nlohmann::json::array();
+  if (scene_grid) {
+    if (f & scene_flag::kShadow) names.push_back("shadow");
+    if (f & scene_flag::kLayover) names.push_back("layover");
+    if (f & scene_flag::kNoData) names.push_back("no data");
+    if (f & scene_flag::kBackFacing) names.push_back("back-facing");
+    if (f & scene_flag::kOutsideSwath) names.push_back("outside swath");
+  } else {
+    if (f & pixel_flag::kShadow) names.push_back("shadow");
+    if (f & pixel_flag::kLayover) names.push_back("layover");
+    if (f & pixel_flag::kNoData) names.push_back("no data");
+  }
+  return names;
+}
+
+double db(double power) {
+  return power > 0.0 ? 10.0 * std::log10(power) : -INFINITY;
+}
+
+// NaN and infinities have no JSON form: null.
+nlohmann::json number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nullptr;
+}
+
+// The slant image pixel (line, bin): its own values.
+nlohmann::json slant_pixel(const RunResult& run, int line, int bin) {
+  const SlarSimulation& sim = *run.slar;
+  const SlarPictures& pic = *run.slar_pictures;
+  const std::size_t i = sim.image.index(line, bin);
+  const double R = sim.image.range.centre_m(bin);
+  // Incidence at that range over a flat datum: cos(theta) = H / R.
+  const double H = sim.track.altitude_m;
+  const double incidence = R > H ? std::acos(H / R) : 0.0;
+  return {{"line", line},
+          {"bin", bin},
+          {"slant_range_m", R},
+          {"incidence_flat_deg", rad_to_deg(incidence)},
+          {"looks", number(pic.looks[static_cast<std::size_t>(bin)])},
+          {"mean_power_w", number(sim.image.mean_power_w[i])},
+          {"mean_power_dbw", number(db(sim.image.mean_power_w[i]))},
+          {"speckled_power_w", number(pic.speckled_power_w[i])},
+          {"greytone", pic.slant_grey[i]},
+          {"flags", flags_json(sim.image.mask[i], false)}};
+}
+
+nlohmann::json scene_cell(const RunResult& run, const Sigma0Source& sigma0, int col, int row) {
+  const Scene& scene = *run.scene;
+  const SlarSimulation& sim = *run.slar;
+  const std::size_t i = scene.index(row, col);
+  nlohmann::json j = {{"row", row}, {"col", col}};
+  if (!scene.valid[i]) {
+    j["flags"] = flags_json(scene_flag::kNoData, true);
+    return j;
+  }
+  const std::uint16_t c = scene.category[i];
+  const float h = scene.elevation_m[i];
+  j["elevation_m"] = h;
+  j["category"] = c;
+  j["category_name"] = sigma0.has_category(c) ? sigma0.category_name(c) : std::to_string(c);
+  j["flags"] = flags_json(sim.scene_maps.mask[i], true);
+  const double li_deg = sim.scene_maps.local_incidence_deg[i];
+  j["local_incidence_deg"] = number(li_deg);
+  if (std::isfinite(li_deg) && sigma0.has_category(c)) {
+    const RadarBand band{run.radar.frequency_hz, run.radar.polarisation};
+    j["sigma0_db"] = number(db(sigma0.sigma0(c, deg_to_rad(li_deg), band)));
+  }
+  // From the track: u across, H - h down (MODEL.md section 2).
+  const auto [x_m, y_m] = scene.cell_centre(row, col);
+  const double u = sim.track.along_cross(x_m, y_m).second;
+  const double down = sim.track.altitude_m - h;
+  j["slant_range_m"] = std::hypot(u, down);
+  j["incidence_deg"] = rad_to_deg(std::atan2(u, down));
+  int line = 0;
+  int bin = 0;
+  if (geocode_pixel(scene, sim.track, sim.image, row, col, h, line, bin)) {
+    j["pixel"] = slant_pixel(run, line, bin);
+  }
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json inspect_pixel(const RunResult& run, const Sigma0Source& sigma0,
+                             const std::string& view, int x, int y) {
+  if (run.kind == RunKind::streamed) {
+    throw InputError("request", "view", "a streamed run keeps no images");
+  }
+  if (run.kind == RunKind::ppi) {
+    const PpiScopeGrid& g = run.ppi->scope_grid;
+    if (view != "slant") throw InputError("request", "view", "a PPI run is inspected on its scope");
+    check_inside(x, y, g.size, g.size, view);
+    const std::size_t i = static_cast<std::size_t>(y) * g.size + x;
+    return {{"view", view},
+            {"x", x},
+            {"y", y},
+            {"east_m", g.east_m(x)},
+            {"north_m", g.north_m(y)},
+            {"speckled_power_w", number(run.ppi_pictures->scope_power_w[i])},
+            {"greytone", run.ppi_pictures->scope_grey[i]},
+            {"flags", flags_json(run.ppi_pictures->scope_mask[i], false)}};
+  }
+  nlohmann::json j;
+  if (view == "slant") {
+    check_inside(x, y, run.slar->image.bins, run.slar->image.lines, view);
+    j = slant_pixel(run, y, x);
+  } else if (view == "scene" || view == "geocoded") {
+    check_inside(x, y, run.scene->cols, run.scene->rows, view);
+    j = scene_cell(run, sigma0, x, y);
+  } else {
+    throw InputError(
+        "request", "view",
+        "the inspector reads the slant, scene and geocoded views, not \"" + view + "\"");
+  }
+  j["view"] = view;
+  return j;
+}
+
+}  // namespace ris

@@ -1,0 +1,178 @@
+#include "ris/serve/run_views.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "ris/geometry/scene_geometry_maps.h"
+#include "ris/image/geocode.h"
+#include "ris/image/scene_preview.h"
+#include "ris/image/shadow_map.h"
+#include "ris/io/raster_io.h"
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+
+namespace ris {
+namespace {
+
+[[noreturn]] void no_view(const std::string& view, const std::string& why) {
+  throw InputError("request", "view", "no view \"" + view + "\": " + why);
+}
+
+bool is_ppi(const RunResult& run) {
+  return run.kind == RunKind::ppi;
+}
+
+template <typename Vec>
+ViewPixels grey(const Vec& v, int cols, int rows) {
+  ViewPixels p;
+  p.cols = cols;
+  p.rows = rows;
+  p.data.assign(v.begin(), v.end());
+  return p;
+}
+
+// The slant image's pixel flags and the scene grid's flags in one vocabulary.
+struct MaskColour {
+  const char* name;
+  std::uint8_t slant_bit;  // pixel_flag (0: none on that grid)
+  std::uint8_t scene_bit;  // scene_flag
+  std::array<std::uint8_t, 4> rgba;
+};
+constexpr std::array<MaskColour, 4> kMasks{{
+    {"shadow", pixel_flag::kShadow, scene_flag::kShadow, {40, 90, 255, 150}},
+    {"layover", pixel_flag::kLayover, scene_flag::kLayover, {255, 40, 40, 150}},
+    {"backfacing", 0, scene_flag::kBackFacing, {255, 200, 0, 150}},
+    {"nodata", pixel_flag::kNoData, scene_flag::kNoData, {120, 120, 120, 150}},
+}};
+
+}  // namespace
+
+ViewPixels view_pixels(const RunResult& run, const std::string& view) {
+  if (run.kind == RunKind::streamed) no_view(view, "a streamed run keeps no images");
+  if (view == "scene") {
+    ViewPixels p;
+    p.cols = run.scene->cols;
+    p.rows = run.scene->rows;
+    p.channels = 3;
+    p.data = shaded_category_rgb(*run.scene, ScenePreviewOptions{});
+    return p;
+  }
+  if (is_ppi(run)) {
+    const PpiPictures& pic = *run.ppi_pictures;
+    if (view == "slant") {
+      return grey(pic.scope_grey, run.ppi->scope_grid.size, run.ppi->scope_grid.size);
+    }
+    if (view == "ground") return grey(pic.bscope_grey, run.ppi->bscope.bins, run.ppi->bscope.lines);
+    no_view(view, "a PPI run has the views slant (the scope), ground (the B-scope) and scene");
+  }
+  const SlarSimulation& sim = *run.slar;
+  const SlarPictures& pic = *run.slar_pictures;
+  if (view == "slant") return grey(pic.slant_grey, sim.image.bins, sim.image.lines);
+  if (view == "ground") return grey(pic.ground_grey, sim.ground_grid.count, sim.image.lines);
+  if (view == "geocoded") {
+    return grey(geocode_slant_grey(*run.scene, sim.track, sim.image, pic.slant_grey),
+                run.scene->cols, run.scene->rows);
+  }
+  no_view(view, "expected slant, ground, geocoded or scene");
+}
+
+std::vector<std::uint8_t> view_png(const RunResult& run, const std::string& view) {
+  const ViewPixels p = view_pixels(run, view);
+  return encode_png(p.data.data(), p.cols, p.rows, p.channels);
+}
+
+std::vector<std::uint8_t> overlay_png(const RunResult& run, const std::string& view,
+                                      const std::string& masks) {
+  if (run.kind == RunKind::streamed || is_ppi(run)) {
+    no_view(view, "mask overlays are drawn for SLAR and SAR runs");
+  }
+  const SlarSimulation& sim = *run.slar;
+  const bool slant = view == "slant";
+  if (!slant && view != "scene" && view != "geocoded") {
+    no_view(view, "overlays exist for slant, scene and geocoded");
+  }
+  // The masks asked for, each known by name.
+  std::vector<const MaskColour*> wanted;
+  std::stringstream list(masks);
+  for (std::string name; std::getline(list, name, ',');) {
+    if (name.empty()) continue;
+    const MaskColour* found = nullptr;
+    for (const MaskColour& m : kMasks) {
+      if (name == m.name) found = &m;
+    }
+    if (found == nullptr) {
+      throw InputError("request", "masks",
+                       "unknown mask \"" + name +
+                           "\": expected shadow, layover, backfacing or "
+                           "nodata, comma-separated");
+    }
+    wanted.push_back(found);
+  }
+  const auto& flags = slant ? sim.image.mask : sim.scene_maps.mask;
+  const int cols = slant ? sim.image.bins : run.scene->cols;
+  const int rows = slant ? sim.image.lines : run.scene->rows;
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(cols) * rows * 4, 0);
+  for (std::size_t i = 0; i < flags.size(); ++i) {
+    // The first mask listed wins where several apply.
+    for (const MaskColour* m : wanted) {
+      const std::uint8_t bit = slant ? m->slant_bit : m->scene_bit;
+      if (bit != 0 && (flags[i] & bit) != 0) {
+        std::copy(m->rgba.begin(), m->rgba.end(),
+                  rgba.begin() + static_cast<std::ptrdiff_t>(4 * i));
+        break;
+      }
+    }
+  }
+  return encode_png(rgba.data(), cols, rows, 4);
+}
+
+std::string shadow_map(const RunResult& run) {
+  if (run.kind == RunKind::streamed || is_ppi(run)) {
+    throw InputError("request", "", "the shadow map is made for SLAR and SAR runs");
+  }
+  return shadow_map_text(run.slar->image);
+}
+
+nlohmann::json greytone_histogram(const RunResult& run) {
+  std::vector<std::int64_t> counts(256, 0);
+  if (run.kind == RunKind::slar || run.kind == RunKind::sar || run.kind == RunKind::coherent_sar) {
+    const auto& grey = run.slar_pictures->slant_grey;
+    const auto& mask = run.slar->image.mask;
+    for (std::size_t i = 0; i < grey.size(); ++i) {
+      if ((mask[i] & pixel_flag::kNoData) == 0) ++counts[grey[i]];
+    }
+  } else if (is_ppi(run)) {
+    const PpiPictures& pic = *run.ppi_pictures;
+    for (std::size_t i = 0; i < pic.scope_grey.size(); ++i) {
+      if ((pic.scope_mask[i] & pixel_flag::kNoData) == 0) ++counts[pic.scope_grey[i]];
+    }
+  }
+  return nlohmann::json{{"counts", counts}};
+}
+
+nlohmann::json sigma0_curves(const RunResult& run, const Sigma0Source& sigma0) {
+  const bool ppi = is_ppi(run);
+  const std::vector<std::uint16_t>& categories = ppi ? run.ppi->categories : run.slar->categories;
+  const RadarBand band{run.radar.frequency_hz, run.radar.polarisation};
+  std::vector<double> angles_deg(90);
+  std::vector<double> angles_rad(90);
+  for (int i = 0; i < 90; ++i) {
+    angles_deg[i] = i;
+    angles_rad[i] = i * kPi / 180.0;
+  }
+  nlohmann::json curves = nlohmann::json::array();
+  for (const std::uint16_t c : categories) {
+    if (!sigma0.has_category(c)) continue;
+    std::vector<double> s(angles_rad.size());
+    sigma0.sigma0_curve(c, angles_rad.data(), angles_rad.size(), band, s.data());
+    nlohmann::json db = nlohmann::json::array();
+    // sigma0 = 0 (no return) has no dB value: null, a gap in the chart.
+    for (const double v : s) db.push_back(v > 0.0 ? nlohmann::json(10.0 * std::log10(v)) : nullptr);
+    curves.push_back({{"category", c}, {"name", sigma0.category_name(c)}, {"sigma0_db", db}});
+  }
+  return {{"frequency_hz", band.frequency_hz}, {"angles_deg", angles_deg}, {"curves", curves}};
+}
+
+}  // namespace ris

@@ -1,0 +1,468 @@
+#include "ris/serve/session.h"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <regex>
+#include <sstream>
+
+#include "ris/backscatter/library.h"
+#include "ris/io/atomic_file.h"
+#include "ris/io/config_table.h"
+#include "ris/io/zip_archive.h"
+#include "ris/scene/scene_builder.h"
+#include "ris/scene/scene_io.h"
+#include "ris/scene/scene_source.h"
+#include "ris/sensor/radar_config.h"
+#include "ris/sensor/radar_json.h"
+#include "ris/serve/category_paint.h"
+#include "ris/serve/json_toml.h"
+#include "ris/serve/pixel_inspector.h"
+#include "ris/serve/radar_overrides.h"
+#include "ris/serve/run_views.h"
+#include "ris/util/error.h"
+
+namespace ris {
+namespace {
+
+constexpr const char* kBody = "request body";
+constexpr std::size_t kMaxUndo = 100;
+
+// Every regular file in `folder` with one of the extensions, by file name.
+std::map<std::string, std::string> files_by_name(const std::filesystem::path& folder,
+                                                 std::initializer_list<const char*> extensions) {
+  std::map<std::string, std::string> out;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
+    if (!e.is_regular_file()) continue;
+    for (const char* ext : extensions) {
+      if (e.path().extension() == ext) out[e.path().filename().string()] = e.path().string();
+    }
+  }
+  return out;
+}
+
+std::string toml_text(const toml::table& doc) {
+  std::ostringstream s;
+  s << doc << '\n';
+  return s.str();
+}
+
+const char* kind_name(RunKind k) {
+  switch (k) {
+    case RunKind::slar:
+      return "slar";
+    case RunKind::sar:
+      return "sar";
+    case RunKind::coherent_sar:
+      return "coherent_sar";
+    case RunKind::ppi:
+      return "ppi";
+    case RunKind::streamed:
+      return "streamed";
+  }
+  return "?";
+}
+
+}  // namespace
+
+Session::SceneState Session::scene_from_doc(toml::table doc) {
+  SceneState s;
+  s.version = ++scene_versions_;
+  s.path = inputs_.scene_path;
+  s.editable = true;
+  const SceneDescription d = parse_scene_description(doc, s.path);
+  s.scene = std::make_shared<const Scene>(build_scene(d));
+  s.doc = std::move(doc);
+  return s;
+}
+
+Session::Session(ServeInputs inputs) : inputs_(std::move(inputs)) {
+  radar_presets_ = files_by_name(inputs_.data_dir / "radars", {".toml"});
+  backscatter_files_ = files_by_name(inputs_.data_dir / "backscatter", {".toml", ".csv"});
+  // The command line's own files are offered too, under their file names.
+  const std::string own_radar = std::filesystem::path(inputs_.radar_path).filename().string();
+  radar_presets_[own_radar] = inputs_.radar_path;
+  const std::string bs_path =
+      inputs_.backscatter_path.empty() ? default_sigma0_library_path() : inputs_.backscatter_path;
+  backscatter_name_ = std::filesystem::path(bs_path).filename().string();
+  backscatter_files_[backscatter_name_] = bs_path;
+  sigma0_ = load_sigma0_source(bs_path);
+
+  if (is_scene_description(inputs_.scene_path)) {
+    scene_ = scene_from_doc(parse_toml_file(inputs_.scene_path));
+  } else {
+    scene_.version = ++scene_versions_;
+    scene_.path = inputs_.scene_path;
+    scene_.scene = std::make_shared<const Scene>(load_scene_source(inputs_.scene_path).scene);
+  }
+  radar_doc_ = parse_toml_file(inputs_.radar_path);
+  radar_ = radar_from_toml(radar_doc_, inputs_.radar_path);
+  seed_ = inputs_.seed;
+  result_ = run(scene_, radar_, sigma0_, bs_path, seed_);
+  last_seconds_ = result_.seconds;
+  run_id_ = 1;
+}
+
+RunResult Session::run(const SceneState& scene, const RadarParams& radar,
+                       const std::shared_ptr<const Sigma0Source>& sigma0,
+                       const std::string& backscatter_path, std::uint64_t seed) const {
+  RunRequest r;
+  r.scene_path = scene.path;
+  r.scene = scene.scene;
+  r.radar_path = inputs_.radar_path;
+  r.radar = radar;
+  r.backscatter_path = backscatter_path;
+  r.sigma0 = sigma0;
+  r.seed = seed;
+  r.quiet = true;
+  RunCallbacks callbacks;
+  callbacks.warning = [](const std::string& w) { spdlog::warn("{}", w); };
+  return run_simulation(r, callbacks);
+}
+
+nlohmann::json Session::run_summary() const {
+  const RunResult& r = result_;
+  nlohmann::json j = {{"id", run_id_},
+                      {"kind", kind_name(r.kind)},
+                      {"seed", r.info.seed},
+                      {"film_only", last_film_only_},
+                      {"seconds", last_seconds_}};
+  std::vector<std::string> views = {"slant", "ground", "scene"};
+  if (r.slar) {
+    const SlarGeometry& g = r.slar->geometry;
+    const double samples = double(g.lines) * double(g.samples);
+    j["lines"] = r.slar->image.lines;
+    j["bins"] = r.slar->image.bins;
+    j["near_range_m"] = r.slar->image.range.near_m;
+    j["range_bin_m"] = r.slar->image.range.bin_m;
+    j["shadow_percent"] = 100.0 * double(g.shadow_samples) / samples;
+    j["layover_percent"] = 100.0 * double(g.layover_samples) / samples;
+    j["back_facing_percent"] = 100.0 * double(g.back_facing_samples) / samples;
+    j["warnings"] = r.slar->warnings;
+    views.push_back("geocoded");
+  } else if (r.ppi) {
+    j["warnings"] = r.ppi->warnings;
+  }
+  nlohmann::json images = nlohmann::json::object();
+  for (const std::string& v : views) {
+    images[v] = v == "scene" ? fmt::format("/api/image/scene.png?scene={}", scene_.version)
+                             : fmt::format("/api/image/{}.png?run={}", v, run_id_);
+  }
+  j["images"] = images;
+  return j;
+}
+
+nlohmann::json Session::state() const {
+  std::lock_guard lock(mutex_);
+  nlohmann::json presets = nlohmann::json::array();
+  for (const auto& [name, path] : radar_presets_) presets.push_back(name);
+  nlohmann::json libraries = nlohmann::json::array();
+  for (const auto& [name, path] : backscatter_files_) libraries.push_back(name);
+  const Scene& s = *scene_.scene;
+  nlohmann::json scene = {{"path", scene_.path}, {"editable", scene_.editable},
+                          {"rows", s.rows},      {"cols", s.cols},
+                          {"cell_m", s.dx_m},    {"undo_depth", undo_.size()}};
+  if (scene_.editable) scene["description"] = toml_to_json(scene_.doc);
+  // The library's categories, for painting.
+  nlohmann::json categories = nlohmann::json::array();
+  for (const std::uint16_t c : sigma0_->category_ids()) {
+    categories.push_back({{"id", c}, {"name", sigma0_->category_name(c)}});
+  }
+  return {{"scene", scene},
+          {"radar",
+           {{"path", inputs_.radar_path},
+            {"description", toml_to_json(radar_doc_)},
+            {"params", radar_to_json(radar_)}}},
+          {"radar_presets", presets},
+          {"backscatter", backscatter_name_},
+          {"categories", categories},
+          {"backscatter_libraries", libraries},
+          {"seed", seed_},
+          {"run", run_summary()}};
+}
+
+SimulateOutcome Session::simulate(const std::string& body) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::uint64_t ticket = ++latest_request_;
+  // Parse before waiting: a bad body is refused at once.
+  const toml::table request = json_body_to_toml(body, kBody);
+  std::lock_guard lock(mutex_);
+  SimulateOutcome out;
+  if (ticket != latest_request_.load()) {
+    out.superseded = true;
+    return out;
+  }
+  ConfigTable t(request, kBody, "");
+  const std::int64_t seed = t.get_int_or("seed", static_cast<std::int64_t>(seed_));
+  if (seed < 0) t.fail("seed", "expected a seed >= 0");
+  // The radar: a preset replaces the description, then overrides, then the
+  // depression angle (which needs the altitude as overridden).
+  toml::table doc = radar_doc_;
+  if (auto preset = t.get_string_opt("radar_preset")) {
+    const auto it = radar_presets_.find(*preset);
+    if (it == radar_presets_.end()) t.fail("radar_preset", "unknown radar \"" + *preset + "\"");
+    doc = parse_toml_file(it->second);
+  }
+  if (const toml::node* overrides = t.raw("radar")) {
+    if (!overrides->is_table()) t.fail("radar", "expected an object of radar-file keys");
+    merge_toml(doc, *overrides->as_table());
+  }
+  RadarParams radar = radar_from_toml(doc, inputs_.radar_path);
+  if (auto depression = t.get_quantity_opt("depression", Quantity::angle)) {
+    set_near_range_depression(doc, radar, *depression);
+    radar = radar_from_toml(doc, inputs_.radar_path);
+  }
+  if (auto swath = t.get_quantity_opt("swath", Quantity::length)) {
+    set_slant_swath(doc, radar, *swath);
+    radar = radar_from_toml(doc, inputs_.radar_path);
+  }
+  std::string bs_name = backscatter_name_;
+  if (auto name = t.get_string_opt("backscatter")) {
+    if (backscatter_files_.count(*name) == 0) {
+      t.fail("backscatter", "unknown backscatter library \"" + *name + "\"");
+    }
+    bs_name = *name;
+  }
+  t.finish();
+  const bool same_inputs = bs_name == backscatter_name_ && result_.kind != RunKind::streamed;
+  if (same_inputs && film_only_change(radar_doc_, doc, radar_, radar)) {
+    // Film, fading law and switch: the image chain after the mean power.
+    RadarParams& used = result_.slar ? result_.slar->radar : result_.ppi->radar;
+    used.switches.fading = radar.switches.fading;
+    used.fading = radar.fading;
+    rerender(result_, static_cast<std::uint64_t>(seed), &radar.film);
+    result_.radar.film = radar.film;
+    last_film_only_ = true;
+  } else {
+    std::shared_ptr<const Sigma0Source> sigma0 = sigma0_;
+    if (bs_name != backscatter_name_) sigma0 = load_sigma0_source(backscatter_files_.at(bs_name));
+    result_ = run(scene_, radar, sigma0, backscatter_files_.at(bs_name),
+                  static_cast<std::uint64_t>(seed));
+    sigma0_ = sigma0;
+    backscatter_name_ = bs_name;
+    last_film_only_ = false;
+  }
+  radar_doc_ = std::move(doc);
+  radar_ = radar;
+  seed_ = static_cast<std::uint64_t>(seed);
+  ++run_id_;
+  last_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.run = run_summary();
+  return out;
+}
+
+const toml::array& Session::objects() const {
+  static const toml::array empty;
+  const toml::array* a = scene_.doc["object"].as_array();
+  return a != nullptr ? *a : empty;
+}
+
+nlohmann::json Session::apply_scene(SceneState next, bool push_undo) {
+  result_ = run(next, radar_, sigma0_, backscatter_files_.at(backscatter_name_), seed_);
+  if (push_undo) {
+    undo_.push_back(std::move(scene_));
+    if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
+  }
+  scene_ = std::move(next);
+  last_film_only_ = false;
+  last_seconds_ = result_.seconds;
+  ++run_id_;
+  nlohmann::json j = {{"run", run_summary()}, {"undo_depth", undo_.size()}};
+  if (scene_.editable) {
+    j["objects"] = toml_to_json(scene_.doc).value("object", nlohmann::json::array());
+  }
+  return j;
+}
+
+namespace {
+
+void require_editable(bool editable, const std::string& path) {
+  if (!editable) {
+    throw InputError(path, "", "only a scene description (.toml) can be edited");
+  }
+}
+
+void check_index(std::size_t index, std::size_t count, const std::string& path) {
+  if (index >= count) {
+    throw InputError(path, fmt::format("object[{}]", index),
+                     fmt::format("no such object (the scene has {})", count));
+  }
+}
+
+}  // namespace
+
+nlohmann::json Session::add_object(const std::string& body) {
+  const toml::table object = json_body_to_toml(body, kBody);
+  std::lock_guard lock(mutex_);
+  require_editable(scene_.editable, scene_.path);
+  toml::table doc = scene_.doc;
+  if (!doc.contains("object")) doc.insert("object", toml::array{});
+  toml::array* list = doc["object"].as_array();
+  if (list == nullptr) throw InputError(scene_.path, "object", "expected an array of tables");
+  list->push_back(object);
+  return apply_scene_doc(std::move(doc));
+}
+
+nlohmann::json Session::update_object(std::size_t index, const std::string& body) {
+  const toml::table changes = json_body_to_toml(body, kBody);
+  std::lock_guard lock(mutex_);
+  require_editable(scene_.editable, scene_.path);
+  check_index(index, objects().size(), scene_.path);
+  toml::table doc = scene_.doc;
+  toml::table* object = doc["object"][index].as_table();
+  if (object == nullptr) throw InputError(scene_.path, "object", "expected an array of tables");
+  merge_toml(*object, changes);
+  return apply_scene_doc(std::move(doc));
+}
+
+nlohmann::json Session::delete_object(std::size_t index) {
+  std::lock_guard lock(mutex_);
+  require_editable(scene_.editable, scene_.path);
+  check_index(index, objects().size(), scene_.path);
+  toml::table doc = scene_.doc;
+  toml::array* list = doc["object"].as_array();
+  list->erase(list->begin() + static_cast<std::ptrdiff_t>(index));
+  return apply_scene_doc(std::move(doc));
+}
+
+nlohmann::json Session::paint(const std::string& body) {
+  const PaintStroke stroke = parse_paint_stroke(json_body_to_toml(body, kBody));
+  std::lock_guard lock(mutex_);
+  if (scene_.editable) {
+    throw InputError(scene_.path, "",
+                     "categories are painted on raster scenes (imported DEMs); a description's "
+                     "categories are its objects' (add a patch object)");
+  }
+  SceneState next = scene_;
+  auto painted = std::make_shared<Scene>(*scene_.scene);
+  if (paint_categories(*painted, stroke) == 0) {
+    throw InputError(kBody, "", "the stroke covers no cell with data");
+  }
+  next.scene = std::move(painted);
+  next.version = ++scene_versions_;
+  return apply_scene(std::move(next), true);
+}
+
+nlohmann::json Session::undo() {
+  std::lock_guard lock(mutex_);
+  if (undo_.empty()) throw InputError(scene_.path, "", "nothing to undo");
+  SceneState previous = std::move(undo_.back());
+  undo_.pop_back();
+  return apply_scene(std::move(previous), false);
+}
+
+std::filesystem::path Session::save_path(const std::string& body, const std::string& what,
+                                         const std::string& extension) const {
+  const toml::table request = json_body_to_toml(body, kBody);
+  ConfigTable t(request, kBody, "");
+  const std::string name = t.get_string("name");
+  t.finish();
+  // A plain name only: no folder, no "..", nothing a shell or a file system
+  // reads specially; the file always lands in out_dir.
+  static const std::regex plain("[A-Za-z0-9][A-Za-z0-9_-]{0,63}");
+  if (!std::regex_match(name, plain)) {
+    t.fail("name", "expected a plain " + what +
+                       " name (letters, digits, '-' and '_', at most 64, no extension), got \"" +
+                       name + "\"");
+  }
+  std::filesystem::create_directories(inputs_.out_dir);
+  return inputs_.out_dir / (name + extension);
+}
+
+nlohmann::json Session::save_scene(const std::string& body) {
+  std::lock_guard lock(mutex_);
+  const std::filesystem::path path = save_path(body, "scene", scene_.editable ? ".toml" : ".tif");
+  if (scene_.editable) {
+    write_text_file_atomic(path, toml_text(scene_.doc));
+  } else {
+    write_scene_geotiff(*scene_.scene, path);
+  }
+  return {{"path", std::filesystem::absolute(path).string()}};
+}
+
+nlohmann::json Session::save_radar(const std::string& body) {
+  const std::filesystem::path path = save_path(body, "radar", ".toml");
+  std::lock_guard lock(mutex_);
+  write_text_file_atomic(path, toml_text(radar_doc_));
+  return {{"path", std::filesystem::absolute(path).string()}};
+}
+
+std::string Session::scene_toml() const {
+  std::lock_guard lock(mutex_);
+  require_editable(scene_.editable, scene_.path);
+  return toml_text(scene_.doc);
+}
+
+std::string Session::radar_toml() const {
+  std::lock_guard lock(mutex_);
+  return toml_text(radar_doc_);
+}
+
+nlohmann::json Session::write_products() {
+  std::lock_guard lock(mutex_);
+  const std::filesystem::path dir = inputs_.out_dir / fmt::format("products-run{}", run_id_);
+  if (!std::filesystem::exists(dir)) write_run_products(result_, dir);
+  products_.clear();
+  nlohmann::json names = nlohmann::json::array();
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    products_[e.path().filename().string()] = e.path();
+  }
+  for (const auto& [name, path] : products_) names.push_back(name);
+  return {{"folder", std::filesystem::absolute(dir).string()}, {"files", names}};
+}
+
+std::optional<std::filesystem::path> Session::product_file(const std::string& name) const {
+  std::lock_guard lock(mutex_);
+  const auto it = products_.find(name);
+  if (it == products_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::vector<std::uint8_t> Session::products_zip() const {
+  std::lock_guard lock(mutex_);
+  if (products_.empty()) throw InputError("request", "", "no products yet: write them first");
+  std::vector<std::filesystem::path> files;
+  for (const auto& [name, path] : products_) files.push_back(path);
+  return zip_files(files);
+}
+
+std::vector<std::uint8_t> Session::image_png(const std::string& view) const {
+  std::lock_guard lock(mutex_);
+  if (view != "scene") return view_png(result_, view);
+  if (scene_png_.empty() || scene_png_version_ != scene_.version) {
+    scene_png_ = view_png(result_, view);
+    scene_png_version_ = scene_.version;
+  }
+  return scene_png_;
+}
+
+std::vector<std::uint8_t> Session::overlay_png(const std::string& view,
+                                               const std::string& masks) const {
+  std::lock_guard lock(mutex_);
+  return ris::overlay_png(result_, view, masks);
+}
+
+std::string Session::shadow_map() const {
+  std::lock_guard lock(mutex_);
+  return ris::shadow_map(result_);
+}
+
+nlohmann::json Session::histogram() const {
+  std::lock_guard lock(mutex_);
+  return greytone_histogram(result_);
+}
+
+nlohmann::json Session::sigma0_chart() const {
+  std::lock_guard lock(mutex_);
+  return sigma0_curves(result_, *sigma0_);
+}
+
+nlohmann::json Session::inspect(const std::string& view, int x, int y) const {
+  std::lock_guard lock(mutex_);
+  return inspect_pixel(result_, *sigma0_, view, x, y);
+}
+
+}  // namespace ris
