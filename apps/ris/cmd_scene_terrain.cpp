@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "command_registry.h"
+#include "ris/io/safe_paths.h"
 #include "ris/scene/dem_import.h"
 #include "ris/scene/fractal_noise.h"
 #include "ris/scene/fractal_terrain.h"
@@ -27,6 +28,7 @@
 #include "ris/scene/scene_source.h"
 #include "ris/util/error.h"
 #include "ris/util/progress.h"
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 
 namespace {
@@ -121,6 +123,8 @@ void run_import(const ImportArgs& args) {
           ris::resolve_category(*mapping, args.default_category, "--default-category");
     }
   }
+  ris::require_regular_input(args.dem);
+  ris::require_safe_output_file(args.output, "--output");  // before the import's work
   ris::DemImportOptions options;
   if (!args.cell_size.empty()) {
     options.cell_size_m = parse_option(args.cell_size, ris::Quantity::length, "--cell-size");
@@ -184,6 +188,7 @@ struct FractalArgs {
   std::string library;
   std::string centre;
   std::string generator = "auto";
+  bool quiet = false;
 };
 
 std::pair<int, int> parse_size(const std::string& text) {
@@ -227,6 +232,15 @@ void run_fractal(const FractalArgs& args) {
         "", "--generator",
         fmt::format("expected auto, spectral or noise, got \"{}\"", args.generator));
   }
+  ris::check_fractal_params(p);
+  ris::require_safe_output_file(args.output, "--output");
+  // The file before any work: about 4 bytes a cell once compressed (a float
+  // elevation that compresses little, categories and mask that compress to
+  // almost nothing); --size 1000000 once ran silently towards 4 TB.
+  const std::int64_t cells = ris::checked_mul(p.rows, p.cols, "", "--size");
+  ris::require_disk(ris::checked_mul(cells, 4, "", "--size"),
+                    std::filesystem::absolute(args.output).parent_path(), "", "--size",
+                    fmt::format("a scene of {} x {} cells", p.cols, p.rows));
   const bool noise =
       args.generator == "noise" || (args.generator == "auto" && !ris::spectral_synthesis_fits(p));
 
@@ -285,7 +299,7 @@ void run_fractal(const FractalArgs& args) {
     std::vector<float> z(n);
     std::vector<std::uint16_t> cat(n);
     const std::vector<std::uint8_t> valid(n, 1);
-    ris::ProgressBar bar("scene fractal", p.rows, "rows");
+    ris::ProgressBar bar("scene fractal", p.rows, "rows", args.quiet);
     for (int r0 = 0; r0 < p.rows; r0 += kBlockRows) {
       const int rows = std::min(kBlockRows, p.rows - r0);
       gen.rows(r0, rows, z.data(), cat.data());
@@ -351,6 +365,7 @@ void add_scene_terrain(CLI::App& app) {
   auto* fractal = scene->add_subcommand(
       "fractal", "Generate seeded fractal terrain (fBm with a Hurst exponent) as a scene GeoTIFF");
   fractal->add_option("-o,--output", fa->output, "Scene GeoTIFF to write")->required();
+  fractal->add_flag("--quiet", fa->quiet, "No progress (a bar on a terminal, else log lines)");
   fractal->add_option("--size", fa->size, "Cells: N (square) or COLSxROWS")->capture_default_str();
   fractal->add_option("--cell-size", fa->cell_size, "Cell size")->capture_default_str();
   fractal->add_option("--relief", fa->relief, "Highest minus lowest elevation")

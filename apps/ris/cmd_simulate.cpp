@@ -104,8 +104,8 @@ void run_simulate(SimulateArgs& a) {
   r.out_dir = a.out;
   r.products.stems = a.products;
   r.compression = parse_compression_preset(a.compress, "--compress");
-  // Progress only on a terminal and without --quiet (ris/util/progress.h):
-  // percent of the run by stage, rate and time remaining.
+  // Progress unless --quiet (ris/util/progress.h): a bar on a terminal,
+  // plain lines in a log; percent of the run by stage, rate, time remaining.
   auto bar = std::make_shared<ProgressBar>("simulate", 100, "%", r.quiet);
   auto done_pct = std::make_shared<std::int64_t>(0);
   RunCallbacks callbacks;
@@ -148,7 +148,7 @@ void add_simulate(CLI::App& app) {
                   "Point targets (TOML, [[target]] tables): corner reflectors etc.");
   cmd->add_option("--seed", r.seed, "Fading seed")->capture_default_str();
   cmd->add_option("--threads", r.threads, "Threads (0: all cores)")->capture_default_str();
-  cmd->add_flag("--quiet", r.quiet, "No progress bar (it shows only on a terminal anyway)");
+  cmd->add_flag("--quiet", r.quiet, "No progress (a bar on a terminal, else plain log lines)");
   cmd->add_flag("--stream", r.stream,
                 "Stream the scene raster from its file in blocks of azimuth lines (bounded "
                 "memory; automatic when the scene is too large for memory)");

@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "ris/backscatter/library.h"
+#include "ris/io/safe_paths.h"
 #include "ris/scene/dem_import.h"
 #include "ris/scene/scene_source.h"
 #include "ris/scene/scene_stream.h"
@@ -15,6 +16,7 @@
 #include "ris/sim/sar_coherent.h"
 #include "ris/sim/slar_products.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris {
 
@@ -87,6 +89,25 @@ SlarRunInfo run_info(const RunRequest& r, const std::string& backscatter_path) {
   return info;
 }
 
+// About 7 bytes of products a scene cell: the streamed 40,000^2 example
+// (1.6 G cells) wrote 11 GB (README.md, "Scenes larger than memory").
+constexpr std::int64_t kProductBytesPerCell = 7;
+
+// The output folder, checked once every input is read and before any work:
+// no folder where a file is, no product over one of the run's inputs
+// (ris/io/safe_paths.h), room for the products (ris/util/resource_guard.h).
+void check_out_dir(const RunRequest& r, RadarMode mode, std::int64_t rows, std::int64_t cols) {
+  if (r.out_dir.empty()) return;
+  std::vector<std::string> stems{"metadata"};
+  for (std::string_view s : mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems()) {
+    stems.emplace_back(s);
+  }
+  require_safe_output_folder(r.out_dir, stems, "--out");
+  const std::int64_t cells = checked_mul(rows, cols, r.scene_path, "");
+  require_disk(checked_mul(cells, kProductBytesPerCell, r.scene_path, ""), r.out_dir, "", "--out",
+               fmt::format("the products of a {} x {} cell scene", cols, rows));
+}
+
 void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   if (!r.targets_path.empty() || (r.targets && !r.targets->empty())) {
     throw InputError(r.targets_path, "--targets",
@@ -102,6 +123,11 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   res.radar = load_radar_of(r);
   const LoadedSigma0 sigma0 = load_sigma0(r);
   res.info = run_info(r, sigma0.path);
+  require_regular_input(r.scene_path, "--scene");
+  {
+    const SceneStreamReader probe(r.scene_path);  // the header only
+    check_out_dir(r, RadarMode::slar, probe.grid().rows, probe.grid().cols);
+  }
   SlarStreamOptions o;
   o.block_lines = r.block_lines;
   o.quiet = r.quiet;
@@ -125,11 +151,11 @@ void render_slar_run(RunResult& res, std::uint64_t seed) {
 }  // namespace
 
 RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
-  if (r.threads < 0) {
-    throw InputError("", "--threads",
-                     fmt::format("expected 0 (all cores) or more, got {}", r.threads));
+  // Checked against the cap before OpenMP sees it (libgomp crashes on
+  // 100000 threads; ris/util/resource_guard.h).
+  if (checked_thread_count(r.threads, "--threads") > 0 && r.threads > 0) {
+    omp_set_num_threads(r.threads);
   }
-  if (r.threads > 0) omp_set_num_threads(r.threads);
   const Clock::time_point t0 = Clock::now();
   RunResult res;
   if (should_stream(r, cb)) {
@@ -163,6 +189,7 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   }
   res.has_targets = !options.targets.empty();
   res.targets_path = r.targets_path;
+  check_out_dir(r, radar.mode, res.scene->rows, res.scene->cols);
 
   if (radar.mode == RadarMode::ppi) {
     res.kind = RunKind::ppi;
