@@ -203,5 +203,29 @@ TEST(HardeningCli, ObjectsSmallerThanACellWarnWithTheConsequence) {
   EXPECT_THAT(r.output, HasSubstr("alias"));
 }
 
+TEST(HardeningCli, BareDemAndFractalSceneSimulateWithShippedFiles) {
+  test::TempDir dir;
+  // The README's fractal example as printed, with its shipped radar.
+  const auto fractal = test::run_ris(
+      "scene fractal --quiet --size 300 --relief 1500 --hurst 0.75 --seed 7 --centre 46.5,8.0 -o " +
+      q(dir / "alps.tif"));
+  ASSERT_EQ(fractal.exit_code, 0) << fractal.output;
+  EXPECT_THAT(fractal.output, HasSubstr("no --category: every cell is grass"));
+  const auto alps =
+      test::run_ris("simulate --quiet --scene " + q(dir / "alps.tif") + " --radar " +
+                    data("radars/slar-x-band-alps.toml") + " --out " + q(dir / "alps-out"));
+  ASSERT_EQ(alps.exit_code, 0) << alps.output;
+  EXPECT_THAT(alps.output, HasSubstr("generic-terrain.toml, the library the scene names"));
+  EXPECT_TRUE(fs::exists(dir / "alps-out" / "geocoded_grey.tif"));
+  // A bare DEM import, simulated with the standard radar and no options.
+  const auto dem = test::run_ris("scene import " + std::string(test::test_data_dir()) +
+                                 "/dem/Rome-30m-DEM.tif -o " + q(dir / "rome.tif"));
+  ASSERT_EQ(dem.exit_code, 0) << dem.output;
+  const auto rome = test::run_ris("simulate --quiet --scene " + q(dir / "rome.tif") + " --out " +
+                                  q(dir / "rome-out"));
+  EXPECT_EQ(rome.exit_code, 0) << rome.output;
+  EXPECT_TRUE(fs::exists(dir / "rome-out" / "metadata.json"));
+}
+
 }  // namespace
 }  // namespace ris

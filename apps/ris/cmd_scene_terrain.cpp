@@ -62,6 +62,20 @@ std::vector<std::string> split_list(const std::string& text) {
   return out;
 }
 
+// The category of every cell of a scene made without one (a bare DEM, a
+// fractal without --category or --patches): ris::kDefaultCategory, grass of
+// the shipped generic-terrain library, which the scene then names for `ris
+// simulate` (docs/terrain.md, "Categories").
+using ris::kDefaultCategoryName;
+constexpr const char* kDefaultLibrary = ris::kDefaultCategoryLibrary;
+
+void say_default_category(const std::string& library) {
+  spdlog::info(
+      "no --category: every cell is {} of {} (`ris simulate` takes that library for this "
+      "scene unless given --backscatter); --category chooses another",
+      kDefaultCategoryName, library);
+}
+
 // Names of categories in a library, empty when the library is absent and
 // not needed (ids only).
 std::map<std::string, std::uint16_t> names_if_present(const std::string& library,
@@ -125,33 +139,38 @@ void run_import(const ImportArgs& args) {
   }
   ris::require_regular_input(args.dem);
   ris::require_safe_output_file(args.output, "--output");  // before the import's work
+  const std::string library =
+      args.library.empty() ? ris::app::data_path(kDefaultLibrary) : args.library;
+  std::string category = args.category;
+  if (category.empty() && !mapping) {
+    category = kDefaultCategoryName;
+    say_default_category(library);
+  }
   ris::DemImportOptions options;
   if (!args.cell_size.empty()) {
     options.cell_size_m = parse_option(args.cell_size, ris::Quantity::length, "--cell-size");
   }
   if (!args.crs.empty()) options.crs = args.crs;
-  if (!args.category.empty()) {
+  if (!category.empty()) {
     if (mapping) {
       throw ris::InputError("", "--category",
                             "--category is for DEMs without land cover (use the mapping's "
                             "default or fill, or --default-category)");
     }
-    const std::string library = args.library.empty()
-                                    ? ris::app::data_path("backscatter/generic-terrain.toml")
-                                    : args.library;
     options.category = ris::parse_category(
-        args.category, names_if_present(library, !args.library.empty()), "--category");
+        category, names_if_present(library, !args.library.empty()), "--category");
   }
   ris::ImportedDem dem = ris::import_dem(args.dem, options);
   ris::RasterMetadata metadata = dem.metadata;
   std::map<std::string, std::uint16_t> names;
   if (mapping && !mapping->library.empty()) {
     names = ris::read_category_names(mapping->library);
-  } else if (!args.category.empty()) {
-    names = names_if_present(args.library.empty()
-                                 ? ris::app::data_path("backscatter/generic-terrain.toml")
-                                 : args.library,
-                             !args.library.empty());
+    for (auto& [k, v] : ris::backscatter_library_metadata(mapping->library)) metadata[k] = v;
+  } else if (!category.empty()) {
+    names = names_if_present(library, !args.library.empty());
+    if (!names.empty()) {
+      for (auto& [k, v] : ris::backscatter_library_metadata(library)) metadata[k] = v;
+    }
   }
   std::string landcover_note;
   if (mapping) {
@@ -182,7 +201,7 @@ struct FractalArgs {
   std::string base = "0 m";
   double hurst = 0.8;
   std::uint64_t seed = 1;
-  std::string category = "0";
+  std::string category;  // default: kDefaultCategory
   std::string patches;
   std::string patch_size = "500 m";
   std::string library;
@@ -218,9 +237,12 @@ void run_fractal(const FractalArgs& args) {
   p.hurst = args.hurst;
   p.seed = args.seed;
   const std::string library =
-      args.library.empty() ? ris::app::data_path("backscatter/generic-terrain.toml") : args.library;
+      args.library.empty() ? ris::app::data_path(kDefaultLibrary) : args.library;
   const auto names = names_if_present(library, !args.library.empty());
-  p.category = ris::parse_category(args.category, names, "--category");
+  const bool default_category = args.category.empty() && args.patches.empty();
+  p.category = ris::parse_category(args.category.empty() ? kDefaultCategoryName : args.category,
+                                   names, "--category");
+  if (default_category) say_default_category(library);
   for (const std::string& item : split_list(args.patches)) {
     p.patch_categories.push_back(ris::parse_category(item, names, "--patches"));
   }
@@ -282,6 +304,9 @@ void run_fractal(const FractalArgs& args) {
       {"RIS_VERTICAL_DATUM", "local: elevation above the scene's flat datum"},
       {"RIS_NODATA_CELLS", "0"},
   };
+  if (!names.empty()) {
+    for (auto& [k, v] : ris::backscatter_library_metadata(library)) metadata[k] = v;
+  }
   const std::string label = fmt::format("fractal terrain (seed {}, H = {})", p.seed, p.hurst);
 
   if (noise) {
@@ -355,7 +380,7 @@ void add_scene_terrain(CLI::App& app) {
                          "Category (name or id) of land-cover codes the mapping does not list");
   import_cmd->add_option("--category", ia->category,
                          "Category (name or id) of every cell when there is no land cover "
-                         "(default 0)");
+                         "(default: grass of generic-terrain)");
   import_cmd->add_option("--library", ia->library,
                          "Category library for --category names (default: data/backscatter/"
                          "generic-terrain.toml)");
@@ -377,8 +402,8 @@ void add_scene_terrain(CLI::App& app) {
       ->capture_default_str();
   fractal->add_option("--seed", fa->seed, "Random seed (same seed, same scene)")
       ->capture_default_str();
-  fractal->add_option("--category", fa->category, "Category of every cell (name or id)")
-      ->capture_default_str();
+  fractal->add_option("--category", fa->category,
+                      "Category of every cell (name or id; default: grass of generic-terrain)");
   fractal->add_option("--patches", fa->patches,
                       "Land-cover patches: comma-separated categories (names or ids)");
   fractal->add_option("--patch-size", fa->patch_size, "Mean patch spacing")->capture_default_str();

@@ -69,10 +69,22 @@ struct LoadedSigma0 {
   std::shared_ptr<const Sigma0Source> source;
 };
 
+// The backscatter source, loaded unless given: --backscatter, else the
+// library a scene raster names (RIS_BACKSCATTER_LIBRARY: `ris scene import`
+// and `ris scene fractal` write it), else the standard library.
 LoadedSigma0 load_sigma0(const RunRequest& r) {
   LoadedSigma0 in;
-  in.path = r.backscatter_path.empty() && r.sigma0 == nullptr ? default_sigma0_library_path()
-                                                              : r.backscatter_path;
+  in.path = r.backscatter_path;
+  if (r.backscatter_path.empty() && r.sigma0 == nullptr) {
+    const std::string named = r.scene == nullptr ? scene_backscatter_library(r.scene_path) : "";
+    if (!named.empty()) {
+      spdlog::info(
+          "{}: backscatter from {}, the library the scene names (--backscatter to "
+          "choose another)",
+          r.scene_path, named);
+    }
+    in.path = named.empty() ? default_sigma0_library_path() : named;
+  }
   in.source = r.sigma0 != nullptr ? r.sigma0 : load_sigma0_source(in.path);
   return in;
 }
