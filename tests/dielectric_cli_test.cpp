@@ -77,18 +77,18 @@ TEST(DielectricCli, CsvAndPlotAreWritten) {
 
 TEST(DielectricCli, BadInputExitsNonZeroNamingTheProblem) {
   auto r = run_ris("dielectric --model topp1980");
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("unknown dielectric model \"topp1980\""), std::string::npos) << r.output;
   r = run_ris("dielectric --model dobson1985 -f '30 GHz'");  // Dobson: 1.4-18 GHz
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("[1.4, 18] GHz"), std::string::npos) << r.output;
   r = run_ris("dielectric --model dobson1985 -f '30 GHz' --allow-extrapolation");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   r = run_ris("dielectric --moisture 0.3:0.1:0.05");
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("--moisture"), std::string::npos) << r.output;
   r = run_ris("dielectric --clay 0.7 --sand 0.5");
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("clay + sand"), std::string::npos) << r.output;
 }
 

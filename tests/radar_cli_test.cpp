@@ -47,7 +47,7 @@ altitude = "5 km"
 near_edge_distance = "10 km"
 )");
   const test::RunResult r = test::run_ris("radar info " + path.string());
-  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("bad.toml"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("polarisation"), std::string::npos) << r.output;
 }

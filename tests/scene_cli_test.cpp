@@ -19,9 +19,7 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-std::string q(const fs::path& p) {
-  return "'" + p.string() + "'";
-}
+using test::q;
 
 const std::string kGrid = "[grid]\nrows = 40\ncols = 60\ncell_size = '20 ft'\nbase_category = 1\n";
 

@@ -70,26 +70,26 @@ TEST(Sigma0Cli, PlotWritesAPng) {
 
 TEST(Sigma0Cli, BadInputExitsNonZeroNamingTheProblem) {
   auto r = run_ris("sigma0 --model 'name = \"nosuch\"'");
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("unknown backscatter model"), std::string::npos) << r.output;
   r = run_ris("sigma0 " + kOh + " -a 95");
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("--angles"), std::string::npos) << r.output;
   r = run_ris("sigma0 --library /no/such/lib.toml");
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   r = run_ris("sigma0 --category 99");
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("no category \"99\""), std::string::npos) << r.output;
   r = run_ris("sigma0 -f '35 GHz'");  // outside the crop library's 1-18 GHz
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("1..18 GHz"), std::string::npos) << r.output;
   r = run_ris("sigma0 " + kOh + " -p XX");
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   TempDir dir;
   // 0.3 GHz: ks = 0.063 < 0.1, outside Oh 1992's range: refused before any output.
   r = run_ris("sigma0 " + kOh + " -f '0.3 GHz' --plot " + (dir / "x.png").string() + " --out " +
               (dir / "x.txt").string());
-  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_FALSE(std::filesystem::exists(dir / "x.txt"));
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));  // nothing half-written
 }

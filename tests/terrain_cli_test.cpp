@@ -50,7 +50,7 @@ TEST(SceneImportCli, NoCrsRefusedWithoutPartialOutputThenAcceptedWithCrs) {
   write_geotiff<float>(dir / "nocrs.tif", h.data(), 30, 20, &g);
   const auto out = dir / "scene.tif";
   auto r = test::run_ris("scene import " + (dir / "nocrs.tif").string() + " -o " + out.string());
-  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("--crs"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(out));
   r = test::run_ris("scene import " + (dir / "nocrs.tif").string() + " --crs EPSG:4326 -o " +
@@ -77,7 +77,7 @@ TEST(SceneImportCli, LandCoverCodesAreMappedOrListed) {
   const std::string base = "scene import " + kDem + "SanAnd_dem.tif --landcover " +
                            (dir / "lc.tif").string() + " --mapping " + (dir / "map.toml").string();
   auto r = test::run_ris(base + " -o " + (dir / "a.tif").string());
-  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("30 ("), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "a.tif"));
 
@@ -185,7 +185,7 @@ TEST(SceneFractalCli, SameSeedSameSceneAndReliefAsAsked) {
   EXPECT_NE(p.metadata.at("RIS_CATEGORY_NAMES").find("forest"), std::string::npos);
 
   auto bad = test::run_ris("scene fractal --hurst 1.5 -o " + (dir / "e.tif").string());
-  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.output.find("--hurst"), std::string::npos) << bad.output;
 }
 

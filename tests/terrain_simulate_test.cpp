@@ -47,7 +47,8 @@ TEST(TerrainSimulate, GeographicDemAndAFinerUtmReprojectionGiveTheSameImage) {
   ASSERT_DOUBLE_EQ(direct.dx_m, 30.0);
 
   const RadarParams radar = west_of_sanand();
-  const test::CosineSigma0Source sigma0;
+  // A bare DEM's cells are all kDefaultCategory (ris/scene/scene.h).
+  const test::CosineSigma0Source sigma0({kDefaultCategory});
   const SlarSimulation a = simulate_slar(direct, radar, sigma0);
   const SlarSimulation b = simulate_slar(fine, radar, sigma0);
   // The same track (latitude/longitude into the same UTM zone) and image grid.

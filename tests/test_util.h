@@ -32,6 +32,11 @@ class TempDir {
   std::filesystem::path path_;
 };
 
+// A path single-quoted for the shell command run_ris builds.
+inline std::string q(const std::filesystem::path& p) {
+  return "'" + p.string() + "'";
+}
+
 inline void write_file(const std::filesystem::path& p, const std::string& text) {
   std::ofstream f(p);
   f << text;

@@ -40,7 +40,9 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/slar_products.h"
 #include "ris/sim/slar_simulation.h"
+#include "ris/sim/slar_stream.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 
 namespace ris::app {
@@ -222,6 +224,10 @@ void run_bench(const BenchArgs& a) {
   const int cols = a.cols > 0 ? a.cols : a.size;
   if (rows <= 0 || cols <= 0) throw InputError("", "--size", "expected a positive scene size");
   if (a.repeats < 1) throw InputError("", "--repeats", "expected 1 or more");
+  // The bench runs in memory: checked before the scene is made (a size of
+  // 1000000 once ended in std::bad_alloc).
+  require_memory(in_memory_run_bytes(rows, cols, "", "--size"), "", "--size",
+                 fmt::format("an in-memory run of {} x {} cells", cols, rows));
   const int max_threads = omp_get_max_threads();
   double load[3] = {0, 0, 0};
   if (getloadavg(load, 3) < 0) load[0] = -1.0;

@@ -19,6 +19,7 @@
 #include "command_registry.h"
 #include "ris/geometry/zero_doppler.h"
 #include "ris/io/ellipsoidal_dem.h"
+#include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -58,6 +59,7 @@ std::vector<std::vector<double>> read_points(const PointArgs& a, std::size_t n,
   std::vector<std::vector<double>> out;
   for (const std::string& p : a.points) out.push_back(numbers(p, n, "", option, what));
   if (!a.csv.empty()) {
+    require_regular_input(a.csv, "--csv");
     std::ifstream f(a.csv);
     if (!f) throw InputError(a.csv, "--csv", "cannot open the file");
     std::string line;

@@ -21,6 +21,7 @@
 
 #include "command_registry.h"
 #include "ris/image/scene_preview.h"
+#include "ris/io/safe_paths.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
@@ -116,6 +117,7 @@ void add_scene(CLI::App& app) {
                             "into a scene use `ris scene import`");
     }
     const ris::SceneDescription d = ris::read_scene_description(build_args->input);
+    ris::require_safe_output_file(build_args->output, "--output");
     const ris::Scene s = ris::build_scene(d);
     // The name and labels travel in the file, so previews of it keep them.
     ris::write_scene_geotiff(s, build_args->output,

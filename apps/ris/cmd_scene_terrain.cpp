@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "command_registry.h"
+#include "ris/io/safe_paths.h"
 #include "ris/scene/dem_import.h"
 #include "ris/scene/fractal_noise.h"
 #include "ris/scene/fractal_terrain.h"
@@ -27,6 +28,7 @@
 #include "ris/scene/scene_source.h"
 #include "ris/util/error.h"
 #include "ris/util/progress.h"
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 
 namespace {
@@ -58,6 +60,20 @@ std::vector<std::string> split_list(const std::string& text) {
     if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
   }
   return out;
+}
+
+// The category of every cell of a scene made without one (a bare DEM, a
+// fractal without --category or --patches): ris::kDefaultCategory, grass of
+// the shipped generic-terrain library, which the scene then names for `ris
+// simulate` (docs/terrain.md, "Categories").
+using ris::kDefaultCategoryName;
+constexpr const char* kDefaultLibrary = ris::kDefaultCategoryLibrary;
+
+void say_default_category(const std::string& library) {
+  spdlog::info(
+      "no --category: every cell is {} of {} (`ris simulate` takes that library for this "
+      "scene unless given --backscatter); --category chooses another",
+      kDefaultCategoryName, library);
 }
 
 // Names of categories in a library, empty when the library is absent and
@@ -121,33 +137,40 @@ void run_import(const ImportArgs& args) {
           ris::resolve_category(*mapping, args.default_category, "--default-category");
     }
   }
+  ris::require_regular_input(args.dem);
+  ris::require_safe_output_file(args.output, "--output");  // before the import's work
+  const std::string library =
+      args.library.empty() ? ris::app::data_path(kDefaultLibrary) : args.library;
+  std::string category = args.category;
+  if (category.empty() && !mapping) {
+    category = kDefaultCategoryName;
+    say_default_category(library);
+  }
   ris::DemImportOptions options;
   if (!args.cell_size.empty()) {
     options.cell_size_m = parse_option(args.cell_size, ris::Quantity::length, "--cell-size");
   }
   if (!args.crs.empty()) options.crs = args.crs;
-  if (!args.category.empty()) {
+  if (!category.empty()) {
     if (mapping) {
       throw ris::InputError("", "--category",
                             "--category is for DEMs without land cover (use the mapping's "
                             "default or fill, or --default-category)");
     }
-    const std::string library = args.library.empty()
-                                    ? ris::app::data_path("backscatter/generic-terrain.toml")
-                                    : args.library;
     options.category = ris::parse_category(
-        args.category, names_if_present(library, !args.library.empty()), "--category");
+        category, names_if_present(library, !args.library.empty()), "--category");
   }
   ris::ImportedDem dem = ris::import_dem(args.dem, options);
   ris::RasterMetadata metadata = dem.metadata;
   std::map<std::string, std::uint16_t> names;
   if (mapping && !mapping->library.empty()) {
     names = ris::read_category_names(mapping->library);
-  } else if (!args.category.empty()) {
-    names = names_if_present(args.library.empty()
-                                 ? ris::app::data_path("backscatter/generic-terrain.toml")
-                                 : args.library,
-                             !args.library.empty());
+    for (auto& [k, v] : ris::backscatter_library_metadata(mapping->library)) metadata[k] = v;
+  } else if (!category.empty()) {
+    names = names_if_present(library, !args.library.empty());
+    if (!names.empty()) {
+      for (auto& [k, v] : ris::backscatter_library_metadata(library)) metadata[k] = v;
+    }
   }
   std::string landcover_note;
   if (mapping) {
@@ -178,12 +201,13 @@ struct FractalArgs {
   std::string base = "0 m";
   double hurst = 0.8;
   std::uint64_t seed = 1;
-  std::string category = "0";
+  std::string category;  // default: kDefaultCategory
   std::string patches;
   std::string patch_size = "500 m";
   std::string library;
   std::string centre;
   std::string generator = "auto";
+  bool quiet = false;
 };
 
 std::pair<int, int> parse_size(const std::string& text) {
@@ -213,9 +237,12 @@ void run_fractal(const FractalArgs& args) {
   p.hurst = args.hurst;
   p.seed = args.seed;
   const std::string library =
-      args.library.empty() ? ris::app::data_path("backscatter/generic-terrain.toml") : args.library;
+      args.library.empty() ? ris::app::data_path(kDefaultLibrary) : args.library;
   const auto names = names_if_present(library, !args.library.empty());
-  p.category = ris::parse_category(args.category, names, "--category");
+  const bool default_category = args.category.empty() && args.patches.empty();
+  p.category = ris::parse_category(args.category.empty() ? kDefaultCategoryName : args.category,
+                                   names, "--category");
+  if (default_category) say_default_category(library);
   for (const std::string& item : split_list(args.patches)) {
     p.patch_categories.push_back(ris::parse_category(item, names, "--patches"));
   }
@@ -227,6 +254,15 @@ void run_fractal(const FractalArgs& args) {
         "", "--generator",
         fmt::format("expected auto, spectral or noise, got \"{}\"", args.generator));
   }
+  ris::check_fractal_params(p);
+  ris::require_safe_output_file(args.output, "--output");
+  // The file before any work: about 4 bytes a cell once compressed (a float
+  // elevation that compresses little, categories and mask that compress to
+  // almost nothing); --size 1000000 once ran silently towards 4 TB.
+  const std::int64_t cells = ris::checked_mul(p.rows, p.cols, "", "--size");
+  ris::require_disk(ris::checked_mul(cells, 4, "", "--size"),
+                    std::filesystem::absolute(args.output).parent_path(), "", "--size",
+                    fmt::format("a scene of {} x {} cells", p.cols, p.rows));
   const bool noise =
       args.generator == "noise" || (args.generator == "auto" && !ris::spectral_synthesis_fits(p));
 
@@ -268,6 +304,9 @@ void run_fractal(const FractalArgs& args) {
       {"RIS_VERTICAL_DATUM", "local: elevation above the scene's flat datum"},
       {"RIS_NODATA_CELLS", "0"},
   };
+  if (!names.empty()) {
+    for (auto& [k, v] : ris::backscatter_library_metadata(library)) metadata[k] = v;
+  }
   const std::string label = fmt::format("fractal terrain (seed {}, H = {})", p.seed, p.hurst);
 
   if (noise) {
@@ -285,7 +324,7 @@ void run_fractal(const FractalArgs& args) {
     std::vector<float> z(n);
     std::vector<std::uint16_t> cat(n);
     const std::vector<std::uint8_t> valid(n, 1);
-    ris::ProgressBar bar("scene fractal", p.rows, "rows");
+    ris::ProgressBar bar("scene fractal", p.rows, "rows", args.quiet);
     for (int r0 = 0; r0 < p.rows; r0 += kBlockRows) {
       const int rows = std::min(kBlockRows, p.rows - r0);
       gen.rows(r0, rows, z.data(), cat.data());
@@ -341,7 +380,7 @@ void add_scene_terrain(CLI::App& app) {
                          "Category (name or id) of land-cover codes the mapping does not list");
   import_cmd->add_option("--category", ia->category,
                          "Category (name or id) of every cell when there is no land cover "
-                         "(default 0)");
+                         "(default: grass of generic-terrain)");
   import_cmd->add_option("--library", ia->library,
                          "Category library for --category names (default: data/backscatter/"
                          "generic-terrain.toml)");
@@ -351,6 +390,7 @@ void add_scene_terrain(CLI::App& app) {
   auto* fractal = scene->add_subcommand(
       "fractal", "Generate seeded fractal terrain (fBm with a Hurst exponent) as a scene GeoTIFF");
   fractal->add_option("-o,--output", fa->output, "Scene GeoTIFF to write")->required();
+  fractal->add_flag("--quiet", fa->quiet, "No progress (a bar on a terminal, else log lines)");
   fractal->add_option("--size", fa->size, "Cells: N (square) or COLSxROWS")->capture_default_str();
   fractal->add_option("--cell-size", fa->cell_size, "Cell size")->capture_default_str();
   fractal->add_option("--relief", fa->relief, "Highest minus lowest elevation")
@@ -362,8 +402,8 @@ void add_scene_terrain(CLI::App& app) {
       ->capture_default_str();
   fractal->add_option("--seed", fa->seed, "Random seed (same seed, same scene)")
       ->capture_default_str();
-  fractal->add_option("--category", fa->category, "Category of every cell (name or id)")
-      ->capture_default_str();
+  fractal->add_option("--category", fa->category,
+                      "Category of every cell (name or id; default: grass of generic-terrain)");
   fractal->add_option("--patches", fa->patches,
                       "Land-cover patches: comma-separated categories (names or ids)");
   fractal->add_option("--patch-size", fa->patch_size, "Mean patch spacing")->capture_default_str();

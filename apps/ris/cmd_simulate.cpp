@@ -140,8 +140,8 @@ void run_simulate(SimulateArgs& a) {
     r.acquisition = a.acquisition.options();
   }
   if (!a.earth.empty()) r.earth = a.earth == "flat" ? EarthModel::flat : EarthModel::ellipsoid;
-  // Progress only on a terminal and without --quiet (ris/util/progress.h):
-  // percent of the run by stage, rate and time remaining.
+  // Progress unless --quiet (ris/util/progress.h): a bar on a terminal,
+  // plain lines in a log; percent of the run by stage, rate, time remaining.
   auto bar = std::make_shared<ProgressBar>("simulate", 100, "%", r.quiet);
   auto done_pct = std::make_shared<std::int64_t>(0);
   RunCallbacks callbacks;
@@ -181,7 +181,7 @@ void add_simulate(CLI::App& app) {
                   "Point targets (TOML, [[target]] tables): corner reflectors etc.");
   cmd->add_option("--seed", r.seed, "Fading seed")->capture_default_str();
   cmd->add_option("--threads", r.threads, "Threads (0: all cores)")->capture_default_str();
-  cmd->add_flag("--quiet", r.quiet, "No progress bar (it shows only on a terminal anyway)");
+  cmd->add_flag("--quiet", r.quiet, "No progress (a bar on a terminal, else plain log lines)");
   cmd->add_flag("--stream", r.stream,
                 "Stream the scene raster from its file in blocks of azimuth lines (bounded "
                 "memory; automatic when the scene is too large for memory)");

@@ -28,6 +28,8 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/study.h"
 #include "ris/util/error.h"
+#include "ris/util/progress.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris::app {
 namespace {
@@ -41,6 +43,7 @@ struct StudyArgs {
   std::uint64_t seed = 1;
   int threads = 0;
   int panel_px = 360;
+  bool quiet = false;
 };
 
 Scene load_study_scene(const std::string& path) {
@@ -51,10 +54,7 @@ Scene load_study_scene(const std::string& path) {
 }
 
 void run_study_command(const StudyArgs& a) {
-  if (a.threads < 0) {
-    throw InputError("", "--threads",
-                     fmt::format("expected 0 (all cores) or more, got {}", a.threads));
-  }
+  checked_thread_count(a.threads, "--threads");  // the cap (ris/util/resource_guard.h)
   if (a.panel_px < 16) {
     throw InputError("", "--panel-size", fmt::format("expected 16 or more, got {}", a.panel_px));
   }
@@ -66,11 +66,15 @@ void run_study_command(const StudyArgs& a) {
   StudyOptions options;
   options.seed = a.seed;
   options.scene_path = a.scene;
-  const bool tty = isatty(STDERR_FILENO) != 0;
-  if (tty) {
-    options.progress = [](std::string_view stage, double fraction) {
-      fmt::print(stderr, "\rris: study: {:3.0f}% {:<44}", 100.0 * fraction, stage);
-      std::fflush(stderr);
+  // A bar on a terminal, plain lines in a log, nothing with --quiet.
+  auto bar = std::make_shared<ProgressBar>("study", 100, "%", a.quiet);
+  auto done_pct = std::make_shared<std::int64_t>(0);
+  if (bar->enabled()) {
+    options.progress = [bar, done_pct](std::string_view stage, double fraction) {
+      const auto pct = static_cast<std::int64_t>(100.0 * fraction);
+      bar->advance(pct - *done_pct);
+      *done_pct = pct;
+      bar->set_stage(std::string(stage));
     };
   }
   const RadarParams radar = load_radar(a.radar);
@@ -83,7 +87,7 @@ void run_study_command(const StudyArgs& a) {
   ContactSheetStyle style;
   style.max_panel_px = a.panel_px;
   write_study_products(a.out, r, StudyRunInfo{a.scene, a.radar, backscatter, a.seed}, style);
-  if (tty) fmt::print(stderr, "\r{:<70}\r", "");
+  bar->finish();
 
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -142,6 +146,7 @@ void add_study(CLI::App& app) {
                   "Contact sheet: longer side of a panel, pixels (panels are never enlarged)")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
+  cmd->add_flag("--quiet", args->quiet, "No progress (a bar on a terminal, else log lines)");
   cmd->callback([args] { run_study_command(*args); });
 }
 

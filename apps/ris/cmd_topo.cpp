@@ -21,6 +21,7 @@
 #include "ris/io/ellipsoidal_dem.h"
 #include "ris/io/raster_io.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris::app {
 namespace {
@@ -54,6 +55,7 @@ std::vector<std::uint8_t> quicklook(const std::vector<float>& v) {
 }
 
 void run_topo(const TopoArgs& a) {
+  checked_thread_count(a.threads, "--threads");  // the cap (ris/util/resource_guard.h)
   const Acquisition acq = read_acquisition(a.acq.path, a.acq.options());
   const EllipsoidalDem dem = read_ellipsoidal_dem(a.dem);
   if (a.oversample < 0 || a.oversample > 64) {

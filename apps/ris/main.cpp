@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "command_registry.h"
+#include "ris/io/safe_paths.h"
 #include "ris/util/data_dir.h"
 #include "ris/util/error.h"
 #include "ris/util/memory_reuse.h"
@@ -38,6 +39,9 @@ std::string default_radar_path() {
 
 int main(int argc, char** argv) {
   ris::keep_freed_memory_for_reuse();
+  // One process, one run: outputs are checked against every input it read
+  // (ris/io/safe_paths.h).
+  ris::track_inputs(true);
   CLI::App app{"ris: radar image simulator (SLAR, SAR and PPI images from terrain)", "ris"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("ris ") + RIS_VERSION);
@@ -57,16 +61,23 @@ int main(int argc, char** argv) {
             [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [name, add] : commands) add(app);
 
+  // Exit status (docs/exit-codes.md): 0 done (and --help, --version); 2 a
+  // usage error (CLI11's own codes, 100 and up, are folded into 2); 1 an
+  // input error (a file, key, value or resource limit); 3 any other failure
+  // (out of memory, an I/O error, an internal error).
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const ris::InputError& e) {
     spdlog::error("{}", e.what());
-    return 2;
+    return 1;
+  } catch (const std::bad_alloc&) {
+    spdlog::error("out of memory (the inputs ask for more than the machine has)");
+    return 3;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
-    return 1;
+    return 3;
   }
   return 0;
 }

@@ -4,12 +4,14 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris::app {
 
@@ -49,8 +51,11 @@ inline std::vector<double> parse_number_list(const std::string& text, const std:
     const double b = parse_double(parts[1], option);
     const double step = parse_double(parts[2], option);
     if (!(step > 0.0) || b < a) throw InputError("", option, "expected start <= stop and step > 0");
-    const auto n = static_cast<long>(std::floor((b - a) / step + 1e-9));
-    for (long i = 0; i <= n; ++i) out.push_back(a + static_cast<double>(i) * step);
+    // At most a million values: a step of 1e-9 once hung the command.
+    const std::int64_t n = checked_count(std::floor((b - a) / step + 1e-9), 1000000, "", option,
+                                         "values (start:stop:step)");
+    out.reserve(static_cast<std::size_t>(n) + 1);
+    for (std::int64_t i = 0; i <= n; ++i) out.push_back(a + static_cast<double>(i) * step);
   } else {
     for (const auto& s : split(text, ',')) out.push_back(parse_double(s, option));
   }

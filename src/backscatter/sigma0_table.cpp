@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -52,6 +53,7 @@ bool same_frequency(double a_hz, double b_hz) {
 }  // namespace
 
 Sigma0Table Sigma0Table::load(const std::string& path) {
+  require_regular_input(path);
   std::ifstream in(path);
   if (!in) throw InputError(path, "", "cannot open the sigma0 table");
   Sigma0Table table;

@@ -13,6 +13,7 @@
 #include "ris/geometry/terrain_line.h"
 #include "ris/geometry/terrain_sample.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris {
 
@@ -199,7 +200,10 @@ SlarGeometry slar_geometry_layout(const Scene& scene, const Track& track, double
   const double along_cell_m =
       along_y ? scene.dy_m : (along_x ? scene.dx_m : std::min(scene.dx_m, scene.dy_m));
   g.line_spacing_m = line_spacing_m > 0.0 ? line_spacing_m : along_cell_m;
-  g.lines = std::max(1, static_cast<int>(std::floor(track.length_m / g.line_spacing_m + 1e-6)));
+  // Checked before the cast: a spacing of 0.001 mm once wrapped to one line.
+  g.lines = std::max<int>(
+      1, static_cast<int>(checked_count(std::floor(track.length_m / g.line_spacing_m + 1e-6),
+                                        kMaxItems, "", "azimuth_line_spacing", "azimuth lines")));
 
   // The scene's extent in u, from its corners.
   double u_min = std::numeric_limits<double>::infinity(), u_max = -u_min;

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris {
 
@@ -31,7 +32,11 @@ GroundRangeGrid ground_range_grid(const SlantRangeBins& bins, double altitude_m,
   g.reference_height_m = reference_height_m;
   g.near_m = ground(bins.near_m);
   g.spacing_m = spacing_m;
-  g.count = std::max(1, static_cast<int>(std::ceil((ground(bins.far_m()) - g.near_m) / spacing_m)));
+  // Checked before the cast (ris/util/resource_guard.h): the spacing is the
+  // azimuth line spacing, which a radar file may make tiny.
+  g.count = std::max(1, static_cast<int>(checked_count(
+                            std::ceil((ground(bins.far_m()) - g.near_m) / spacing_m), kMaxItems, "",
+                            "azimuth_line_spacing", "ground-range pixels a line")));
   return g;
 }
 

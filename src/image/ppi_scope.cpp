@@ -1,9 +1,12 @@
 #include "ris/image/ppi_scope.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
 
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -65,7 +68,17 @@ PpiScopeGrid ppi_scope_grid(const RadarParams& radar, const SlantRangeBins& rang
   const double radius = p.presentation == PpiPresentation::slant
                             ? far
                             : std::sqrt(std::max(0.0, far * far - depth_m * depth_m));
-  g.size = 2 * std::max(1, static_cast<int>(std::ceil(radius / g.pixel_m)));
+  // Checked before the cast and the allocation: a 1 mm pixel once ended in
+  // std::bad_alloc. The scope holds power (4 bytes), mask and greytone (1
+  // each) per pixel, plus copies while writing: 12 bytes a pixel.
+  constexpr std::int64_t kMaxHalfSize = 1 << 20;  // a 2 M x 2 M pixel scope
+  g.size = 2 * std::max(1, static_cast<int>(checked_count(std::ceil(radius / g.pixel_m),
+                                                          kMaxHalfSize, radar.source_file,
+                                                          "scan.pixel", "scope pixels a side")));
+  require_memory(checked_mul(checked_mul(g.size, g.size, radar.source_file, "scan.pixel"), 12,
+                             radar.source_file, "scan.pixel"),
+                 radar.source_file, "scan.pixel",
+                 fmt::format("a PPI scope of {} x {} pixels", g.size, g.size));
   return g;
 }
 

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <system_error>
 
+#include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -26,6 +27,7 @@ AtomicPath::AtomicPath(fs::path final_path) : final_(std::move(final_path)) {
     throw InputError(final_.string(), "",
                      "the output folder " + parent.string() + " does not exist");
   }
+  require_safe_output_file(final_);  // no device, FIFO, folder or input
   temp_ = final_;
   temp_ += unique_suffix();
   temp_ += final_.extension();
@@ -42,6 +44,7 @@ AtomicPath::~AtomicPath() {
 }
 
 void AtomicPath::commit() {
+  require_safe_output_file(final_);  // again: inputs read since the start count too
   std::error_code ec;
   fs::rename(temp_, final_, ec);
   if (ec)
@@ -88,14 +91,21 @@ StagedDirectory::~StagedDirectory() {
 
 void StagedDirectory::commit() {
   fs::create_directories(final_);
+  std::vector<fs::path> names;
   for (const auto& entry : fs::directory_iterator(staging_)) {
     const fs::path name = entry.path().filename();
     if (name.string().size() > 8 && name.extension() == ".xml" &&
         name.string().find(".aux.xml") != std::string::npos) {
       continue;  // GDAL statistics side-cars are not products
     }
+    names.push_back(name);
+  }
+  // Every destination checked before the first is moved: all or nothing.
+  for (const fs::path& name : names) require_safe_output_file(final_ / name);
+  for (const fs::path& name : names) {
+    const fs::path staged = staging_ / name;
     std::error_code ec;
-    fs::rename(entry.path(), final_ / name, ec);
+    fs::rename(staged, final_ / name, ec);
     if (ec) {
       throw InputError(final_.string(), "",
                        "cannot move " + name.string() + " into place: " + ec.message());

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <stdexcept>
 
+#include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -18,6 +20,7 @@ std::string quoted_alternatives(const std::vector<std::string_view>& texts) {
 }
 
 toml::table parse_toml_file(const std::string& path) {
+  require_regular_input(path);  // a FIFO would block the parser forever
   try {
     return toml::parse_file(path);
   } catch (const toml::parse_error& e) {
@@ -68,6 +71,7 @@ const toml::node& ConfigTable::require(const std::string& key) {
 double ConfigTable::get_double(const std::string& key) {
   const toml::node& node = require(key);
   if (auto v = node.value<double>(); v && (node.is_floating_point() || node.is_integer())) {
+    if (!std::isfinite(*v)) fail(key, fmt::format("expected a finite number, got {}", *v));
     return *v;
   }
   fail(key, "expected a number");
@@ -92,14 +96,28 @@ std::string ConfigTable::get_string(const std::string& key) {
 }
 
 namespace {
+// Every quantity read from a file is finite, and a length is within
+// kMaxLength_m of zero (a million km: past any orbit ris models, and small
+// enough that a height stored as a float stays finite; 1e39 m would not).
+constexpr double kMaxLength_m = 1e9;
+
+double checked_quantity(double v, Quantity q, const ConfigTable& t, const std::string& key) {
+  if (!std::isfinite(v)) t.fail(key, fmt::format("expected a finite value, got {}", v));
+  if (q == Quantity::length && std::abs(v) > kMaxLength_m) {
+    t.fail(key, fmt::format("{:g} m is out of physical bounds (expected at most {:g} m)", v,
+                            kMaxLength_m));
+  }
+  return v;
+}
+
 double node_quantity(const toml::node& node, Quantity q, const ConfigTable& t,
                      const std::string& key) {
   if (node.is_integer() || node.is_floating_point()) {
-    return from_default_unit(*node.value<double>(), q);
+    return checked_quantity(from_default_unit(*node.value<double>(), q), q, t, key);
   }
   if (auto s = node.as_string()) {
     try {
-      return parse_quantity(s->get(), q);
+      return checked_quantity(parse_quantity(s->get(), q), q, t, key);
     } catch (const std::invalid_argument& e) {
       t.fail(key, e.what());
     }

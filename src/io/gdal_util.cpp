@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -47,7 +48,7 @@ std::string last_gdal_error() {
 
 GdalDataset open_raster(const std::string& path) {
   ensure_gdal_registered();
-  if (!std::filesystem::exists(path)) throw InputError(path, "", "no such file");
+  require_regular_input(path);  // a FIFO would block GDAL forever
   CPLErrorReset();
   GDALDatasetH ds =
       GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "ris/io/gdal_util.h"
+#include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -108,9 +109,7 @@ IntensityImage read_intensity_image(const std::string& path, int band, PixelScal
   ensure_gdal_registered();
   IntensityImage img;
   const bool product = ends_with(path, ".h5") || ends_with(path, ".hdf5");
-  if (product && !std::filesystem::exists(path)) {
-    throw InputError(path, "", "no such file");
-  }
+  if (product) require_regular_input(path);
   img.source = product ? product_layer(path, band) : path;
   const int band_index = product ? 1 : band;
   // A product's layer is a GDAL subdataset name, not a path.

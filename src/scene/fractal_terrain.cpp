@@ -40,6 +40,15 @@ void check_params(const FractalParams& p) {
   if (!p.patch_categories.empty() && !(p.patch_size_m > 0.0)) {
     fail("--patch-size", "expected a positive patch size with patch categories");
   }
+  // Patches finer than a cell would give each cell an unrelated category
+  // (noise, not patches), and the patch seeds of a row grow as the extent
+  // over the patch size: 1 mm once hung the command.
+  if (!p.patch_categories.empty() && !(p.patch_size_m >= p.cell_m)) {
+    fail("--patch-size", fmt::format("patches of {:g} m are smaller than a cell ({:g} m): each "
+                                     "cell would get an unrelated category; expected at least "
+                                     "the cell size",
+                                     p.patch_size_m, p.cell_m));
+  }
 }
 
 // The smallest n >= target whose only prime factors are 2, 3 and 5 (fast

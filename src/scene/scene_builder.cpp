@@ -140,6 +140,13 @@ Scene build_scene(const SceneDescription& d) {
     if (object.paint(scene, g.base_elevation_m) == 0) {
       spdlog::warn("{}: {} covers no cell centre of the grid; ignored", d.source,
                    d.object_labels[i]);
+    } else if (object.smallest_feature_m() < g.cell_m) {
+      spdlog::warn(
+          "{}: {} has details of {:g} m, smaller than a cell ({:g} m): each cell takes the "
+          "object at its centre only, so its shape is lost (a checkerboard's squares alias "
+          "into a pattern that is not the board's); use cells of {:g} m or less",
+          d.source, d.object_labels[i], object.smallest_feature_m(), g.cell_m,
+          object.smallest_feature_m() / 2.0);
     }
   }
   scene.validate(d.source);

@@ -11,6 +11,7 @@
 #include "ris/io/gdal_util.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/scene/scene_io.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -25,6 +26,29 @@ std::map<std::string, std::string> scene_label_metadata(
     out[kCategoryNamesMetadata] = j.dump();
   }
   return out;
+}
+
+std::map<std::string, std::string> backscatter_library_metadata(const std::string& library) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path lib = fs::weakly_canonical(library, ec);
+  const fs::path data = fs::weakly_canonical(data_dir(), ec);
+  const fs::path rel = lib.lexically_relative(data);
+  const bool shipped = !rel.empty() && *rel.begin() != "..";
+  return {{kBackscatterLibraryMetadata, shipped ? rel.string() : lib.string()}};
+}
+
+std::string scene_backscatter_library(const std::string& scene_path) {
+  if (scene_path.empty() || is_scene_description(scene_path)) return "";
+  const GdalDataset ds = open_raster(scene_path);
+  const char* lib = GDALGetMetadataItem(handle(ds), kBackscatterLibraryMetadata, nullptr);
+  if (lib == nullptr || *lib == '\0') {
+    // An elevation raster alone: every cell is kDefaultCategory (scene.h).
+    return GDALGetRasterCount(handle(ds)) < 2 ? (data_dir() / kDefaultCategoryLibrary).string()
+                                              : "";
+  }
+  const std::filesystem::path p(lib);
+  return p.is_absolute() ? p.string() : (data_dir() / p).string();
 }
 
 namespace {

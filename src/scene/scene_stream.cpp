@@ -64,7 +64,7 @@ struct SceneStreamReader::Impl {
   GdalDataset ds;
   GdalDataset category_ds;  // a separate category raster, if any
   GDALRasterBandH elevation = nullptr;
-  GDALRasterBandH category = nullptr;  // null: every cell category 0
+  GDALRasterBandH category = nullptr;  // null: every cell kDefaultCategory
   std::string category_path;           // the file the categories come from
   int category_band = 1;
   mutable std::vector<float> scratch;
@@ -166,7 +166,7 @@ void SceneStreamReader::read(int row0, int rows, int col0, int cols, float* elev
     const bool ok = !std::isnan(elevation_m[i]);
     valid[i] = ok ? 1 : 0;
     if (!ok) elevation_m[i] = 0.0f;
-    category[i] = 0;
+    category[i] = kDefaultCategory;
   }
   if (impl_->category != nullptr) {
     std::vector<float>& cat = impl_->scratch;

@@ -8,6 +8,7 @@
 
 #include "ris/backscatter/library.h"
 #include "ris/io/ellipsoidal_dem.h"
+#include "ris/io/safe_paths.h"
 #include "ris/scene/dem_import.h"
 #include "ris/scene/scene_source.h"
 #include "ris/scene/scene_stream.h"
@@ -17,6 +18,7 @@
 #include "ris/sim/sar_coherent.h"
 #include "ris/sim/slar_products.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris {
 
@@ -69,10 +71,22 @@ struct LoadedSigma0 {
   std::shared_ptr<const Sigma0Source> source;
 };
 
+// The backscatter source, loaded unless given: --backscatter, else the
+// library a scene raster names (RIS_BACKSCATTER_LIBRARY: `ris scene import`
+// and `ris scene fractal` write it), else the standard library.
 LoadedSigma0 load_sigma0(const RunRequest& r) {
   LoadedSigma0 in;
-  in.path = r.backscatter_path.empty() && r.sigma0 == nullptr ? default_sigma0_library_path()
-                                                              : r.backscatter_path;
+  in.path = r.backscatter_path;
+  if (r.backscatter_path.empty() && r.sigma0 == nullptr) {
+    const std::string named = r.scene == nullptr ? scene_backscatter_library(r.scene_path) : "";
+    if (!named.empty()) {
+      spdlog::info(
+          "{}: backscatter from {}, the library the scene names (--backscatter to "
+          "choose another)",
+          r.scene_path, named);
+    }
+    in.path = named.empty() ? default_sigma0_library_path() : named;
+  }
   in.source = r.sigma0 != nullptr ? r.sigma0 : load_sigma0_source(in.path);
   return in;
 }
@@ -100,6 +114,25 @@ void check_scene_earth(const RunRequest& r, const RadarParams& radar) {
                    "expected \"flat\" or no earth key");
 }
 
+// About 7 bytes of products a scene cell: the streamed 40,000^2 example
+// (1.6 G cells) wrote 11 GB (README.md, "Scenes larger than memory").
+constexpr std::int64_t kProductBytesPerCell = 7;
+
+// The output folder, checked once every input is read and before any work:
+// no folder where a file is, no product over one of the run's inputs
+// (ris/io/safe_paths.h), room for the products (ris/util/resource_guard.h).
+void check_out_dir(const RunRequest& r, RadarMode mode, std::int64_t rows, std::int64_t cols) {
+  if (r.out_dir.empty()) return;
+  std::vector<std::string> stems{"metadata"};
+  for (std::string_view s : mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems()) {
+    stems.emplace_back(s);
+  }
+  require_safe_output_folder(r.out_dir, stems, "--out");
+  const std::int64_t cells = checked_mul(rows, cols, r.scene_path, "");
+  require_disk(checked_mul(cells, kProductBytesPerCell, r.scene_path, ""), r.out_dir, "", "--out",
+               fmt::format("the products of a {} x {} cell scene", cols, rows));
+}
+
 void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   if (!r.targets_path.empty() || (r.targets && !r.targets->empty())) {
     throw InputError(r.targets_path, "--targets",
@@ -116,6 +149,11 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   check_scene_earth(r, res.radar);
   const LoadedSigma0 sigma0 = load_sigma0(r);
   res.info = run_info(r, sigma0.path);
+  require_regular_input(r.scene_path, "--scene");
+  {
+    const SceneStreamReader probe(r.scene_path);  // the header only
+    check_out_dir(r, RadarMode::slar, probe.grid().rows, probe.grid().cols);
+  }
   SlarStreamOptions o;
   o.block_lines = r.block_lines;
   o.quiet = r.quiet;
@@ -156,7 +194,13 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   res.radar = load_radar_of(r);
   check_product_selection(r.products, acquisition_product_stems(), "--products");
   const Acquisition acq = read_acquisition(r.acquisition_path, r.acquisition);
+  require_regular_input(r.dem_path, "--dem");
   const EllipsoidalDem dem = read_ellipsoidal_dem(r.dem_path);
+  if (!r.out_dir.empty()) {  // checked before any work, as a scene run's (check_out_dir)
+    std::vector<std::string> stems{"metadata"};
+    for (std::string_view s : acquisition_product_stems()) stems.emplace_back(s);
+    require_safe_output_folder(r.out_dir, stems, "--out");
+  }
   const LoadedSigma0 sigma0 = load_sigma0(r);
   res.info = run_info(r, sigma0.path);
   res.info.scene_path = r.dem_path;
@@ -179,11 +223,11 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
 }  // namespace
 
 RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
-  if (r.threads < 0) {
-    throw InputError("", "--threads",
-                     fmt::format("expected 0 (all cores) or more, got {}", r.threads));
+  // Checked against the cap before OpenMP sees it (libgomp crashes on
+  // 100000 threads; ris/util/resource_guard.h).
+  if (checked_thread_count(r.threads, "--threads") > 0 && r.threads > 0) {
+    omp_set_num_threads(r.threads);
   }
-  if (r.threads > 0) omp_set_num_threads(r.threads);
   const Clock::time_point t0 = Clock::now();
   RunResult res;
   if (!r.acquisition_path.empty()) {
@@ -228,6 +272,7 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   }
   res.has_targets = !options.targets.empty();
   res.targets_path = r.targets_path;
+  check_out_dir(r, radar.mode, res.scene->rows, res.scene->cols);
 
   if (radar.mode == RadarMode::ppi) {
     res.kind = RunKind::ppi;

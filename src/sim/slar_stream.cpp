@@ -34,6 +34,7 @@
 #include "ris/util/error.h"
 #include "ris/util/progress.h"
 #include "ris/util/rank_select.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris {
 
@@ -140,15 +141,21 @@ inline bool valid_power(float p, std::uint8_t mask) {
 
 }  // namespace
 
+// An in-memory run holds the scene (7 bytes a cell), its scene-grid maps (5),
+// the geocoded products and their copies while writing: its peak RSS was 27.6
+// bytes a cell on an 8,000^2 scene (docs/performance.md).
+constexpr std::int64_t kInMemoryBytesPerCell = 28;
+
 bool scene_needs_streaming(std::int64_t rows, std::int64_t cols) {
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long page_size = sysconf(_SC_PAGE_SIZE);
   const double physical = (pages > 0 && page_size > 0) ? double(pages) * double(page_size) : 8e9;
-  // An in-memory run holds the scene (7 bytes a cell), its scene-grid maps
-  // (5), the geocoded products and their copies while writing: its peak RSS
-  // was 27.6 bytes a cell on an 8,000^2 scene (docs/performance.md).
-  constexpr double kInMemoryBytesPerCell = 28.0;
-  return double(rows) * double(cols) * kInMemoryBytesPerCell > physical / 2.0;
+  return double(rows) * double(cols) * double(kInMemoryBytesPerCell) > physical / 2.0;
+}
+
+std::int64_t in_memory_run_bytes(std::int64_t rows, std::int64_t cols, const std::string& file,
+                                 const std::string& key) {
+  return checked_mul(checked_mul(rows, cols, file, key), kInMemoryBytesPerCell, file, key);
 }
 
 namespace {

@@ -39,7 +39,8 @@ ProgressBar::ProgressBar(std::string label, std::int64_t total, std::string unit
     : label_(std::move(label)),
       unit_(std::move(unit)),
       total_(std::max<std::int64_t>(total, 1)),
-      enabled_(!quiet && stderr_is_terminal()),
+      enabled_(!quiet),
+      terminal_(stderr_is_terminal()),
       start_(std::chrono::steady_clock::now()) {}
 
 ProgressBar::~ProgressBar() {
@@ -80,15 +81,21 @@ void ProgressBar::draw(bool force) {
   const std::int64_t now_ns =
       std::chrono::duration_cast<std::chrono::nanoseconds>(now - start_).count();
   std::int64_t next = next_draw_ns_.load(std::memory_order_relaxed);
+  // A bar redrawn in place on a terminal; a plain line every 10 s in a log.
+  const std::int64_t interval_ns = terminal_ ? 100'000'000 : 10'000'000'000;
   if (!force &&
-      (now_ns < next || !next_draw_ns_.compare_exchange_strong(next, now_ns + 100'000'000)))
+      (now_ns < next || !next_draw_ns_.compare_exchange_strong(next, now_ns + interval_ns)))
     return;
   std::unique_lock<std::mutex> lock(draw_mutex_, std::try_to_lock);
   if (!lock.owns_lock() || finished_) return;
   const double elapsed = 1e-9 * double(now_ns);
   const std::string line = format_line(label_, done_.load(std::memory_order_relaxed), total_, unit_,
                                        elapsed, stage_, 24);
-  fmt::print(stderr, "\r{:<100}", line);
+  if (terminal_) {
+    fmt::print(stderr, "\r{:<100}", line);
+  } else {
+    fmt::print(stderr, "{}\n", line);
+  }
   std::fflush(stderr);
 }
 
@@ -97,6 +104,7 @@ void ProgressBar::finish() {
   std::lock_guard<std::mutex> lock(draw_mutex_);
   if (finished_) return;
   finished_ = true;
+  if (!terminal_) return;  // log lines stay
   fmt::print(stderr, "\r{:<100}\r", "");
   std::fflush(stderr);
 }

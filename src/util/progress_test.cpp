@@ -16,7 +16,7 @@ TEST(ProgressBar, LineShowsFractionRateAndTimeRemaining) {
   EXPECT_NE(line.find("geometry"), std::string::npos) << line;
 }
 
-TEST(ProgressBar, QuietOrNotATerminalDrawsNothing) {
+TEST(ProgressBar, QuietDrawsNothingALogGetsPlainLines) {
   ::testing::internal::CaptureStderr();
   ProgressBar quiet("x", 10, "", true);
   EXPECT_FALSE(quiet.enabled());
@@ -24,9 +24,20 @@ TEST(ProgressBar, QuietOrNotATerminalDrawsNothing) {
   quiet.set_stage("stage");
   quiet.finish();
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
-  // ctest runs with stderr redirected: not a terminal.
-  ProgressBar piped("x", 10, "", false);
-  EXPECT_EQ(piped.enabled(), stderr_is_terminal());
+  // ctest runs with stderr redirected: not a terminal, so plain lines (one
+  // per stage change), never a carriage return.
+  if (stderr_is_terminal()) GTEST_SKIP() << "stderr is a terminal";
+  ::testing::internal::CaptureStderr();
+  ProgressBar piped("x", 10, "rows", false);
+  EXPECT_TRUE(piped.enabled());
+  piped.advance(5);
+  piped.set_stage("writing");
+  piped.finish();
+  const std::string log = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(log.find("ris x: ["), std::string::npos) << log;
+  EXPECT_NE(log.find("50%"), std::string::npos) << log;
+  EXPECT_NE(log.find("writing\n"), std::string::npos) << log;
+  EXPECT_EQ(log.find('\r'), std::string::npos) << log;
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ struct DemImportOptions {
   // when the file has none, and overrides the file's CRS otherwise.
   std::optional<std::string> crs;
   // Category given to every valid cell (land cover comes later, landcover.h).
-  std::uint16_t category = 0;
+  std::uint16_t category = kDefaultCategory;
   // Names of the options, for messages (command-line flags or config keys).
   std::string cell_size_key = "--cell-size";
   std::string crs_key = "--crs";

@@ -80,6 +80,16 @@ struct Scene {
   void validate(const std::string& source) const;
 };
 
+// The category of every cell of a scene that gives none (an elevation
+// raster without a category band; `ris scene import` and `ris scene
+// fractal` without --category): grass, id 21 of the shipped
+// data/backscatter/generic-terrain.toml, which `ris simulate` then takes as
+// the backscatter library (docs/terrain.md, "Categories"). Id 0 of old was
+// in no shipped library, so such scenes did not simulate without options.
+inline constexpr std::uint16_t kDefaultCategory = 21;
+inline constexpr const char* kDefaultCategoryName = "grass";
+inline constexpr const char* kDefaultCategoryLibrary = "backscatter/generic-terrain.toml";
+
 // Refuses (InputError naming `source` and `key`) a grid whose memory estimate
 // exceeds the limit; the message prints the estimate. The default limit is
 // half of physical memory.

@@ -23,6 +23,7 @@
 //   {"cone", "a right circular cone", parse_cone},
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -82,6 +83,13 @@ class SceneObject {
   // grid's base plane. Returns the number of cells whose centre lies in the
   // footprint (0 when the object misses every cell centre).
   virtual std::size_t paint(Scene& scene, float base_elevation_m) const = 0;
+  // The smallest detail the object draws, metres: by default the narrower
+  // side of its bounds; a checkerboard's square. A detail smaller than a
+  // cell is lost (cells take the object only where their centre falls).
+  virtual double smallest_feature_m() const {
+    const Bounds b = bounds();
+    return std::min(b.x_max_m - b.x_min_m, b.y_max_m - b.y_min_m);
+  }
 };
 
 // One entry of the object-type table.

@@ -30,6 +30,21 @@ struct LoadedScene {
 inline constexpr const char* kSceneNameMetadata = "RIS_SCENE_NAME";
 inline constexpr const char* kCategoryNamesMetadata = "RIS_CATEGORY_NAMES";
 
+// The backscatter library whose ids the scene's categories are (written by
+// `ris scene import` and `ris scene fractal`): a path relative to the data
+// folder for a shipped library, else as given. `ris simulate` uses it when
+// no --backscatter is given.
+inline constexpr const char* kBackscatterLibraryMetadata = "RIS_BACKSCATTER_LIBRARY";
+
+// The metadata item above for a library path: relative to the data folder
+// when the library is inside it.
+std::map<std::string, std::string> backscatter_library_metadata(const std::string& library);
+
+// The library a scene raster names (kBackscatterLibraryMetadata, resolved
+// against the data folder); for an elevation raster alone (one band) the
+// library of kDefaultCategory; "" for a description or another raster.
+std::string scene_backscatter_library(const std::string& scene_path);
+
 // The metadata items above for a name and labels (empty ones left out).
 std::map<std::string, std::string> scene_label_metadata(
     const std::string& name, const std::map<std::uint16_t, std::string>& category_names);

@@ -92,4 +92,9 @@ SlarStreamSummary simulate_slar_streamed(const std::filesystem::path& scene_path
 // check_scene_fits_in_memory. `ris simulate` streams then.
 bool scene_needs_streaming(std::int64_t rows, std::int64_t cols);
 
+// The memory of an in-memory run of a rows x cols scene (28 bytes a cell,
+// checked arithmetic; InputError naming file and key on overflow).
+std::int64_t in_memory_run_bytes(std::int64_t rows, std::int64_t cols, const std::string& file,
+                                 const std::string& key);
+
 }  // namespace ris

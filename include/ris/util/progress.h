@@ -1,9 +1,11 @@
-// A terminal progress bar with rate and time remaining, for long runs.
+// A progress bar with rate and time remaining, for long runs.
 //
-// Drawn on stderr only when stderr is a terminal and not quiet; otherwise
-// every call is a no-op, so scripts and logs stay clean. Thread-safe: any
-// thread may call advance() (the count is atomic; redraws are throttled to
-// ~10 per second and done by whichever thread crosses the interval).
+// On a terminal: a bar on stderr redrawn in place (~10 times a second). When
+// stderr is not a terminal (a script, a log): the same text as plain lines,
+// one every 10 s and one at each stage change, so a log shows a long run is
+// alive. quiet: nothing at all. Thread-safe: any thread may call advance()
+// (the count is atomic; redraws are throttled and done by whichever thread
+// crosses the interval).
 //
 //   ris simulate: [##########..........]  52%  1.3 G cells  410 M cells/s  ETA 3 s
 //
@@ -24,7 +26,7 @@ namespace ris {
 class ProgressBar {
  public:
   // total: units of work (> 0); unit: their name in the rate ("cells").
-  // quiet: never draw. The bar is also off when stderr is not a terminal.
+  // quiet: never draw.
   ProgressBar(std::string label, std::int64_t total, std::string unit, bool quiet = false);
   ~ProgressBar();
   ProgressBar(const ProgressBar&) = delete;
@@ -49,6 +51,7 @@ class ProgressBar {
   std::string label_, unit_, stage_;
   std::int64_t total_;
   bool enabled_;
+  bool terminal_;  // a bar in place; else plain log lines
   bool finished_ = false;
   std::atomic<std::int64_t> done_{0};
   std::atomic<std::int64_t> next_draw_ns_{0};

@@ -26,6 +26,7 @@
 #include <sstream>
 
 #include "backscatter/models/models.h"
+#include "ris/io/safe_paths.h"
 #include "ris/util/data_dir.h"
 #include "ris/util/error.h"
 
@@ -42,6 +43,7 @@ struct Row {
 
 std::vector<Row> load_rows(const std::string& path, const std::string& terrain,
                            const ConfigTable& t) {
+  require_regular_input(path, t.key_path("file"));
   std::ifstream in(path);
   if (!in) t.fail("file", "cannot open the Ulaby-Dobson coefficient file " + path);
   std::vector<Row> rows;

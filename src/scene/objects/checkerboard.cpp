@@ -38,6 +38,7 @@ class Checkerboard final : public SceneObject {
         categories_(std::move(categories)) {}
   std::string_view type() const override { return "checkerboard"; }
   Bounds bounds() const override { return place_.bounds_of(0.0, 0.0, length_m_, width_m_); }
+  double smallest_feature_m() const override { return square_m_; }
   std::size_t paint(Scene& scene, float) const override {
     const auto n = static_cast<std::int64_t>(categories_.size());
     return paint_cells(scene, bounds(), [&](double x_m, double y_m, float&, std::uint16_t& c) {
