@@ -12,22 +12,30 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
 #include <nlohmann/json.hpp>
 
 #include "ris/backscatter/backscatter_model.h"
+#include "ris/backscatter/dielectric.h"
 #include "ris/backscatter/library.h"
 #include "ris/image/geocode.h"
+#include "ris/image/greytone_image.h"
 #include "ris/image/slar_image.h"
 #include "ris/io/config_table.h"
 #include "ris/scene/dem_import.h"
+#include "ris/scene/landcover.h"
 #include "ris/scene/scene.h"
 #include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
@@ -39,7 +47,9 @@
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/run.h"
 #include "ris/sim/slar_products.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/error.h"
+#include "ris/util/units.h"
 
 namespace py = pybind11;
 
@@ -82,6 +92,27 @@ py::array_t<T> copy(const T* data, std::vector<py::ssize_t> shape) {
   return a;
 }
 
+// An image's mean power as mean_power_slant.tif / mean_power_bscope.tif
+// hold it: NaN where no data.
+py::array_t<float> mean_power_nan(const ris::SlarImage& img, std::vector<py::ssize_t> shape) {
+  py::array_t<float> a = copy(img.mean_power_w.data(), std::move(shape));
+  float* d = a.mutable_data();
+  for (py::ssize_t i = 0; i < a.size(); ++i)
+    if (img.mask[static_cast<std::size_t>(i)] & ris::pixel_flag::kNoData)
+      d[i] = std::numeric_limits<float>::quiet_NaN();
+  return a;
+}
+
+// Equation 15's film constants as a list (density_range, gamma, k1, k2, m1,
+// m2; python/ris/__init__.py's _FILM_KEYS) and back.
+std::vector<double> film_list(const ris::FilmParams& f) {
+  return {f.density_range, f.gamma, f.k1, f.k2, f.m1, f.m2};
+}
+ris::FilmParams film_params(const std::vector<double>& v) {
+  RIS_CHECK(v.size() == 6);
+  return {v[0], v[1], v[2], v[3], v[4], v[5]};
+}
+
 struct PyScene {
   std::shared_ptr<const ris::Scene> scene;
   std::string path;  // where it was read from ("" when built from arrays)
@@ -108,12 +139,18 @@ PyScene scene_from_arrays(py::array_t<float, py::array::c_style> elevation_m,
 
 PyScene load_scene(const std::string& path, std::optional<std::string> category_path,
                    std::optional<double> cell_size_m, std::optional<std::string> crs,
-                   int category) {
+                   std::optional<std::string> category) {
   if (!ris::is_scene_description(path) && ris::dem_needs_import(path)) {
     ris::DemImportOptions opt;
     opt.cell_size_m = cell_size_m;
     opt.crs = crs;
-    opt.category = static_cast<std::uint16_t>(category);
+    // As `ris scene import --category`: an id or a name of the generic-terrain
+    // library; none: kDefaultCategory (grass).
+    if (category) {
+      opt.category = ris::parse_category(
+          *category, ris::read_category_names(ris::data_dir() / ris::kDefaultCategoryLibrary),
+          "category");
+    }
     opt.cell_size_key = "cell_size_m";
     opt.crs_key = "crs";
     return PyScene{std::make_shared<ris::Scene>(ris::import_dem(path, opt).scene), path, ""};
@@ -153,6 +190,25 @@ struct PyResult {
   const ris::SlarPictures& pictures() const {
     slar();
     return *res->slar_pictures;
+  }
+  const ris::PpiSimulation& ppi() const {
+    if (!res->ppi) {
+      throw ris::InputError(res->info.radar_path, "mode",
+                            "this product exists for PPI runs only (a SLAR or SAR run: use "
+                            "mean_power_w, slant_grey, ...)");
+    }
+    return *res->ppi;
+  }
+  const ris::PpiPictures& ppi_pictures() const {
+    ppi();
+    return *res->ppi_pictures;
+  }
+  // The image of this run's slant-range products: the SLAR/SAR image or the
+  // PPI's B-scope (rays as lines).
+  const ris::SlarImage& slant_image() const { return res->ppi ? res->ppi->bscope : slar().image; }
+  std::vector<py::ssize_t> bscope_shape() const { return {ppi().bscope.lines, ppi().bscope.bins}; }
+  std::vector<py::ssize_t> scope_shape() const {
+    return {ppi().scope_grid.size, ppi().scope_grid.size};
   }
   std::vector<py::ssize_t> slant_shape() const { return {slar().image.lines, slar().image.bins}; }
   std::vector<py::ssize_t> ground_shape() const {
@@ -275,6 +331,92 @@ py::array_t<double> model_sigma0(const std::string& model_toml,
   return out;
 }
 
+// Soil permittivity (eps' - j eps'', as std::complex(eps', -eps'')) of
+// `model` at each (moisture, frequency) pair, as `ris dielectric` computes it;
+// the soil's texture is shared. Validity-range problems are refused (naming
+// the range) unless allow_extrapolation, when they come back as warnings.
+std::pair<py::array_t<std::complex<double>>, std::vector<std::string>> permittivity(
+    const std::string& model_name, py::array_t<double, py::array::c_style> moisture_m3_m3,
+    py::array_t<double, py::array::c_style> frequency_hz, double clay, double sand,
+    double bulk_density_g_cm3, double temperature_c, const std::string& conductivity_name,
+    bool allow_extrapolation) {
+  const std::optional<ris::DielectricModel> model = ris::parse_dielectric_model(model_name);
+  if (!model) {
+    throw ris::InputError("", "model",
+                          "unknown dielectric model \"" + model_name +
+                              "\" (known: dobson1985, hallikainen1985, mironov2009)");
+  }
+  const std::optional<ris::DobsonConductivity> conductivity =
+      ris::parse_dobson_conductivity(conductivity_name);
+  if (!conductivity) {
+    throw ris::InputError(
+        "", "conductivity",
+        "expected dobson1985 or peplinski1995, got \"" + conductivity_name + "\"");
+  }
+  RIS_CHECK(moisture_m3_m3.size() == frequency_hz.size());
+  py::array_t<std::complex<double>> out(moisture_m3_m3.size());
+  std::vector<std::string> warnings;
+  const double* mv = moisture_m3_m3.data();
+  const double* f = frequency_hz.data();
+  std::complex<double>* o = out.mutable_data();
+  for (py::ssize_t i = 0; i < moisture_m3_m3.size(); ++i) {
+    const ris::SoilComposition soil{mv[i],         clay,         sand, bulk_density_g_cm3,
+                                    temperature_c, *conductivity};
+    for (const std::string& problem : ris::dielectric_validity(*model, soil, f[i])) {
+      const std::string msg = std::string(ris::to_string(*model)) + ": " + problem;
+      if (!allow_extrapolation) {
+        throw ris::InputError("", "model", msg + " (allow_extrapolation=True to go on)");
+      }
+      if (std::find(warnings.begin(), warnings.end(), msg) == warnings.end()) {
+        warnings.push_back(msg);
+      }
+    }
+    o[i] = ris::soil_permittivity(*model, soil, f[i]);
+  }
+  return {out, warnings};
+}
+
+// `ris greytone` on an array: fading and equation 15 from a lines x bins
+// mean power (W, NaN = no data) with the radar's film (or `film`), reference
+// and fading law. N per bin comes from `looks_per_bin` when given, else from
+// the radar's range bins (the array must then have the radar's bins, as
+// `ris greytone` requires).
+py::dict greytone(const PyRadar& radar, py::array_t<float, py::array::c_style> mean_power_w,
+                  std::uint64_t seed, std::optional<std::vector<double>> film,
+                  std::optional<std::vector<double>> looks_per_bin) {
+  RIS_CHECK(mean_power_w.ndim() == 2);
+  const int lines = static_cast<int>(mean_power_w.shape(0));
+  const int bins = static_cast<int>(mean_power_w.shape(1));
+  ris::RadarParams r = radar.radar;
+  if (film) r.film = film_params(*film);
+  if (!looks_per_bin && bins != r.range_bins) {
+    throw ris::InputError("", "mean_power_w",
+                          "expected " + std::to_string(r.range_bins) +
+                              " columns (the radar's range bins, " + r.source_file + "), got " +
+                              std::to_string(bins) + "; or give looks per bin");
+  }
+  const std::span<const float> p(mean_power_w.data(),
+                                 static_cast<std::size_t>(mean_power_w.size()));
+  std::optional<ris::GreytoneImage> g;
+  {
+    py::gil_scoped_release nogil;
+    g = looks_per_bin ? ris::make_greytone_image(r, p, lines, bins, std::move(*looks_per_bin), seed)
+                      : ris::make_greytone_image(r, p, lines, bins, r.near_slant_range_m,
+                                                 r.range_bin_m, seed);
+  }
+  const std::vector<py::ssize_t> shape{lines, bins};
+  py::dict out;
+  out["grey"] = copy(g->greytone.data(), shape);
+  out["speckled_power_w"] = copy(g->speckled_power_w.data(), shape);
+  out["looks_per_bin"] = copy(g->looks_per_bin.data(), {bins});
+  out["reference_power_w"] = g->map.reference_power_w();
+  out["reference_greytone"] = g->map.reference_greytone();
+  out["greytones_per_decade"] = g->map.greytones_per_decade();
+  out["film"] = film_list(r.film);
+  out["fading"] = r.switches.fading;
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_ris, m) {
@@ -334,11 +476,18 @@ PYBIND11_MODULE(_ris, m) {
   py::class_<PyRadar>(m, "_Radar")
       .def_property_readonly("source", [](const PyRadar& r) { return r.radar.source_file; })
       .def("params", [](const PyRadar& r) { return json_to_python(ris::radar_to_json(r.radar)); })
-      .def("derived", [](const PyRadar& r) {
-        return json_to_python(ris::derived_to_json(ris::derive(r.radar)));
-      });
+      .def("derived",
+           [](const PyRadar& r) {
+             return json_to_python(ris::derived_to_json(ris::derive(r.radar)));
+           })
+      .def("film", [](const PyRadar& r) { return film_list(r.radar.film); });
   m.def("_load_radar", [](const std::string& path) { return PyRadar{ris::load_radar(path)}; });
   m.def("_radar_from_toml", &radar_from_text);
+  // `ris greytone --radar`'s default (apps/ris/main.cpp's default_radar_path).
+  m.def("_default_radar", [] {
+    return PyRadar{ris::load_radar((ris::data_dir() / "radars" / "seed-fig4-5.toml").string())};
+  });
+  m.def("_greytone", &greytone);
 
   py::class_<PyResult>(m, "_Result")
       .def_property_readonly("warnings", [](const PyResult& r) { return r.warnings; })
@@ -361,16 +510,7 @@ PYBIND11_MODULE(_ris, m) {
       .def_property_readonly("seed", [](const PyResult& r) { return r.res->info.seed; })
       .def("metadata", [](const PyResult& r) { return json_to_python(r.metadata()); })
       .def("mean_power_w",
-           [](const PyResult& r) {
-             const ris::SlarImage& img = r.slar().image;
-             py::array_t<float> a = copy(img.mean_power_w.data(), r.slant_shape());
-             float* d = a.mutable_data();
-             // As mean_power_slant.tif: NaN where no data.
-             for (py::ssize_t i = 0; i < a.size(); ++i)
-               if (img.mask[static_cast<std::size_t>(i)] & ris::pixel_flag::kNoData)
-                 d[i] = std::numeric_limits<float>::quiet_NaN();
-             return a;
-           })
+           [](const PyResult& r) { return mean_power_nan(r.slar().image, r.slant_shape()); })
       .def("speckled_power_w",
            [](const PyResult& r) {
              return copy(r.pictures().speckled_power_w.data(), r.slant_shape());
@@ -396,7 +536,7 @@ PYBIND11_MODULE(_ris, m) {
            })
       .def("slant_range_m",
            [](const PyResult& r) {
-             const ris::SlarImage& img = r.slar().image;
+             const ris::SlarImage& img = r.slant_image();
              py::array_t<double> a(img.bins);
              for (int j = 0; j < img.bins; ++j) a.mutable_data()[j] = img.range.centre_m(j);
              return a;
@@ -428,13 +568,66 @@ PYBIND11_MODULE(_ris, m) {
                  *r.res->scene, r.slar().track, r.slar().image, r.pictures().slant_grey);
              return copy(g.data(), r.scene_shape());
            })
+      .def("bscope_mean_power_w",
+           [](const PyResult& r) { return mean_power_nan(r.ppi().bscope, r.bscope_shape()); })
+      .def("bscope_speckled_power_w",
+           [](const PyResult& r) {
+             return copy(r.ppi_pictures().speckled_power_w.data(), r.bscope_shape());
+           })
+      .def("bscope_grey",
+           [](const PyResult& r) {
+             return copy(r.ppi_pictures().bscope_grey.data(), r.bscope_shape());
+           })
+      .def("bscope_mask",
+           [](py::object self) {
+             const PyResult& r = self.cast<const PyResult&>();
+             return view(r.ppi().bscope.mask.data(), r.bscope_shape(), self);
+           })
+      .def("scope_power_w",
+           [](const PyResult& r) {
+             return copy(r.ppi_pictures().scope_power_w.data(), r.scope_shape());
+           })
+      .def("scope_mask",
+           [](const PyResult& r) {
+             return copy(r.ppi_pictures().scope_mask.data(), r.scope_shape());
+           })
+      .def("scope_grey",
+           [](const PyResult& r) {
+             return copy(r.ppi_pictures().scope_grey.data(), r.scope_shape());
+           })
+      .def("ray_azimuth_deg",
+           [](const PyResult& r) {
+             const ris::PpiGeometry& g = r.ppi().geometry;
+             py::array_t<double> a(r.ppi().bscope.lines);
+             for (py::ssize_t k = 0; k < a.size(); ++k)
+               a.mutable_data()[k] = ris::rad_to_deg(g.azimuth_rad(g.pad + static_cast<int>(k)));
+             return a;
+           })
+      .def("scope_axes_m",
+           [](const PyResult& r) {
+             const ris::PpiScopeGrid& g = r.ppi().scope_grid;
+             py::array_t<double> east(g.size), north(g.size);
+             for (int k = 0; k < g.size; ++k) {
+               east.mutable_data()[k] = g.east_m(k);
+               north.mutable_data()[k] = g.north_m(k);
+             }
+             return py::make_tuple(east, north);
+           })
+      .def("line_spacing_m", [](const PyResult& r) { return r.slant_image().line_spacing_m; })
+      .def("scope_presentation",
+           [](const PyResult& r) {
+             return r.ppi().scope_grid.presentation == ris::PpiPresentation::slant ? "slant"
+                                                                                   : "ground";
+           })
+      .def("site_m",
+           [](const PyResult& r) {
+             return py::make_tuple(r.ppi().geometry.site_x_m, r.ppi().geometry.site_y_m);
+           })
       .def("rerender",
            [](PyResult& r, std::uint64_t seed, std::optional<std::vector<double>> film) {
              py::gil_scoped_release nogil;
              if (film) {
-               RIS_CHECK(film->size() == 6);
-               const ris::FilmParams f{(*film)[0], (*film)[1], (*film)[2],
-                                       (*film)[3], (*film)[4], (*film)[5]};
+               const ris::FilmParams f = film_params(*film);
                ris::rerender(*r.res, seed, &f);
              } else {
                ris::rerender(*r.res, seed);
@@ -442,9 +635,7 @@ PYBIND11_MODULE(_ris, m) {
            })
       .def("film",
            [](const PyResult& r) {
-             const ris::FilmParams& f =
-                 r.res->slar ? r.res->slar->radar.film : r.res->ppi->radar.film;
-             return std::vector<double>{f.density_range, f.gamma, f.k1, f.k2, f.m1, f.m2};
+             return film_list(r.res->slar ? r.res->slar->radar.film : r.res->ppi->radar.film);
            })
       .def("write", [](const PyResult& r, const std::string& dir) {
         py::gil_scoped_release nogil;
@@ -463,6 +654,7 @@ PYBIND11_MODULE(_ris, m) {
   });
   m.def("_category_sigma0", &category_sigma0);
   m.def("_model_sigma0", &model_sigma0);
+  m.def("_permittivity", &permittivity);
   m.def("_list_models", [] {
     std::vector<std::pair<std::string, std::string>> out;
     for (const ris::ModelInfo& i : ris::backscatter_model_names())

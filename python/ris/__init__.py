@@ -37,6 +37,10 @@ __all__ = [
     "simulate",
     "sigma0",
     "list_models",
+    "DIELECTRIC_MODELS",
+    "permittivity",
+    "Greytones",
+    "greytone",
 ]
 
 
@@ -62,6 +66,27 @@ def _grid(name, value, dtype, shape=None):
         if a.size and (a.min() < info.min or a.max() > info.max):
             raise _error(name, f"{name}: values must lie in [{info.min}, {info.max}]")
     return np.ascontiguousarray(a, dtype=dtype)
+
+
+def _xarray():
+    """The xarray module, or an ImportError saying how to get it."""
+    try:
+        import xarray
+    except ImportError as e:
+        raise ImportError(
+            "ris: to_xarray() needs xarray, which is not installed (Debian: apt-get install "
+            "python3-xarray, or make deps); the numpy arrays (result.mean_power_w, "
+            "scene.elevation_m, ...) work without it") from e
+    return xarray
+
+
+def _xy_coords(x, y):
+    return {"x": ("x", x, {"units": "m", "long_name": "x (east) of the cell centre"}),
+            "y": ("y", y, {"units": "m", "long_name": "y (north) of the cell centre"})}
+
+
+def _crs_attrs(crs):
+    return {"crs_wkt": crs or ""}
 
 
 class Scene:
@@ -152,6 +177,24 @@ class Scene:
         """The file it was read from, or None."""
         return self._impl.path or None
 
+    def xy_m(self):
+        """(x, y): the cell centres' coordinates in metres (x east along a
+        row, y north down the rows), from the geotransform."""
+        x0, dx, _, y0, _, dy = self.geotransform
+        rows, cols = self.shape
+        return x0 + (np.arange(cols) + 0.5) * dx, y0 + (np.arange(rows) + 0.5) * dy
+
+    def to_xarray(self):
+        """The scene as an ``xarray.Dataset`` (elevation_m, category, valid on
+        dims y, x; coordinates in metres; the CRS as WKT in attrs["crs_wkt"]).
+        Needs Debian's python3-xarray (ImportError otherwise)."""
+        xr = _xarray()
+        x, y = self.xy_m()
+        data = {"elevation_m": (("y", "x"), self.elevation_m, {"units": "m"}),
+                "category": (("y", "x"), self.category, {"no_data": 65535}),
+                "valid": (("y", "x"), self.valid, {"meaning": "1 data, 0 no data"})}
+        return xr.Dataset(data, coords=_xy_coords(x, y), attrs=_crs_attrs(self.crs))
+
     def write(self, path):
         """Writes the scene as a ris scene GeoTIFF (as ``ris scene build -o``)."""
         self._impl.write(str(path))
@@ -160,12 +203,20 @@ class Scene:
         return f"<ris.Scene {self.shape[1]} x {self.shape[0]} cells of {self.cell_size_m[0]:g} m>"
 
 
-def load_scene(path, category_path=None, cell_size_m=None, crs=None, category=0):
+def load_scene(path, category_path=None, cell_size_m=None, crs=None, category=None):
     """A scene from a file: a description (.toml), a ris scene GeoTIFF, or a
     DEM (any GDAL raster). A DEM in a geographic CRS is reprojected into UTM
     as ``ris scene import`` does (cell_size_m, crs and category are its
-    options); category_path: a category raster on the DEM's grid."""
-    return Scene(_ris._load_scene(str(path), category_path, cell_size_m, crs, int(category)))
+    options; category: an id or a name of data/backscatter/generic-terrain.toml,
+    default 21, its grass, as the command line); category_path: a category
+    raster on the DEM's grid. Simulate such a scene with
+    backscatter="data/backscatter/generic-terrain.toml" (or a library that
+    has the category)."""
+    if category is not None and (isinstance(category, bool)
+                                 or not isinstance(category, (str, numbers.Integral))):
+        raise _error("category", f"category: expected an id or a name, got {category!r}")
+    return Scene(_ris._load_scene(str(path), category_path, cell_size_m, crs,
+                                  None if category is None else str(category)))
 
 
 def _toml_value(v, key):
@@ -249,10 +300,32 @@ def load_radar(path):
 _FILM_KEYS = ("density_range", "gamma", "k1", "k2", "m1", "m2")
 
 
+def _film_values(current, film):
+    """The six film constants (a list in _FILM_KEYS order) with those of the
+    dict `film` replaced; None when film is None (keep the current ones)."""
+    if film is None:
+        return None
+    if not isinstance(film, dict):
+        raise _error("film", f"film: expected a dict with any of {list(_FILM_KEYS)}, got {film!r}")
+    unknown = set(film) - set(_FILM_KEYS)
+    if unknown:
+        raise _error("film", f"film: unknown keys {sorted(unknown)}; expected {list(_FILM_KEYS)}")
+    values = dict(zip(_FILM_KEYS, current))
+    for k, v in film.items():
+        try:
+            values[k] = float(v)
+        except (TypeError, ValueError):
+            raise _error("film", f"film.{k}: expected a number, got {v!r}")
+        if not math.isfinite(values[k]):
+            raise _error("film", f"film.{k}: expected a finite number, got {v!r}")
+    return [values[k] for k in _FILM_KEYS]
+
+
 class Result:
     """One simulation. Products are numpy arrays: slant-range ones are
     lines x bins (near range first), ground-range ones lines x ground bins,
-    scene-grid ones rows x cols of the scene. Powers in watts."""
+    scene-grid ones rows x cols of the scene. Powers in watts. A PPI run has
+    the bscope_* and scope_* arrays instead."""
 
     def __init__(self, impl, scene):
         self._impl = impl
@@ -288,6 +361,45 @@ class Result:
     geocoded_grey = property(lambda self: self._impl.geocoded_grey(),
                              doc="Slant greytones on the scene grid (geocoded_grey.tif).")
 
+    # PPI runs (B-scope: rays x slant-range bins, rays clockwise from the
+    # scan start; scope: the Cartesian picture centred on the radar, north up).
+    bscope_mean_power_w = property(lambda self: self._impl.bscope_mean_power_w(),
+                                   doc="PPI: mean power (W), rays x bins, NaN where no data "
+                                       "(mean_power_bscope.tif).")
+    bscope_speckled_power_w = property(lambda self: self._impl.bscope_speckled_power_w(),
+                                       doc="PPI: power after fading (W), rays x bins "
+                                           "(speckled_power_bscope.tif).")
+    bscope_grey = property(lambda self: self._impl.bscope_grey(),
+                           doc="PPI: greytones 0..255, rays x bins (bscope.png).")
+    bscope_mask = property(lambda self: self._impl.bscope_mask(),
+                           doc="PPI: pixel flags, rays x bins (mask_bscope.tif; read-only view).")
+    scope_power_w = property(lambda self: self._impl.scope_power_w(),
+                             doc="PPI: speckled power (W) on the scope, NaN outside "
+                                 "(ppi_scope_power.tif).")
+    scope_mask = property(lambda self: self._impl.scope_mask(),
+                          doc="PPI: pixel flags on the scope (ppi_scope_mask.tif).")
+    scope_grey = property(lambda self: self._impl.scope_grey(),
+                          doc="PPI: greytones on the scope, range rings drawn (ppi_scope.png).")
+    ray_azimuth_deg = property(lambda self: self._impl.ray_azimuth_deg(),
+                               doc="PPI: azimuth (deg clockwise from north) of each B-scope "
+                                   "row's ray centre.")
+
+    @property
+    def scope_axes_m(self):
+        """PPI: (east, north) in metres from the radar of the scope's column
+        and row centres (slant or ground radius, per scope_presentation)."""
+        return self._impl.scope_axes_m()
+
+    @property
+    def scope_presentation(self):
+        """PPI: 'slant' (radius = slant range) or 'ground' (a map, georeferenced)."""
+        return self._impl.scope_presentation()
+
+    @property
+    def site_m(self):
+        """PPI: the radar site's (x, y) in the scene's frame, metres."""
+        return self._impl.site_m()
+
     @property
     def metadata(self):
         """metadata.json's content as a dict."""
@@ -298,19 +410,77 @@ class Result:
         """Equation 15's film constants in use, as a dict."""
         return dict(zip(_FILM_KEYS, self._impl.film()))
 
+    def to_xarray(self):
+        """The products as an ``xarray.Dataset`` (needs Debian's python3-xarray;
+        ImportError otherwise, the numpy attributes need nothing more).
+
+        SLAR/SAR: slant products on dims (line, bin), ground-range ones on
+        (line, ground_bin), scene-grid ones on (y, x). PPI: the B-scope on
+        (ray, bin), the scope on (y, x). Coordinates: line = along-track
+        distance of the line centre (m), bin = slant range (m), ground_bin =
+        ground range (m), x/y = scene coordinates of cell centres (m), ray =
+        azimuth (deg). attrs: crs_wkt (the scene's CRS, "" for a local
+        frame), kind, seed, metadata (metadata.json as a JSON string).
+        """
+        xr = _xarray()
+        import json
+        attrs = dict(_crs_attrs(self.scene.crs), kind=self.kind, seed=self.seed,
+                     metadata=json.dumps(self.metadata))
+        slant = self.slant_range_m
+        bin_coord = ("bin", slant, {"units": "m", "long_name": "slant range of the bin centre"})
+        w = {"units": "W"}
+        if self.kind == "ppi":
+            return self._ppi_xarray(xr, bin_coord, attrs)
+        lines = self.mean_power_w.shape[0]
+        spacing = self._impl.line_spacing_m()
+        x, y = self.scene.xy_m()
+        coords = dict(_xy_coords(x, y),
+                      line=("line", (np.arange(lines) + 0.5) * spacing,
+                            {"units": "m", "long_name": "along-track distance of the line centre"}),
+                      bin=bin_coord,
+                      ground_bin=("ground_bin", self.ground_range_m,
+                                  {"units": "m", "long_name": "ground range of the bin centre"}))
+        lb, lg, yx = ("line", "bin"), ("line", "ground_bin"), ("y", "x")
+        data = {"mean_power_w": (lb, self.mean_power_w, w),
+                "speckled_power_w": (lb, self.speckled_power_w, w),
+                "slant_grey": (lb, self.slant_grey),
+                "mask_slant": (lb, self.mask_slant),
+                "ground_power_w": (lg, self.ground_power_w, w),
+                "ground_grey": (lg, self.ground_grey),
+                "ground_mask": (lg, self.ground_mask),
+                "scene_mask": (yx, self.scene_mask),
+                "local_incidence_deg": (yx, self.local_incidence_deg, {"units": "deg"}),
+                "geocoded_power_w": (yx, self.geocoded_power_w, w),
+                "geocoded_grey": (yx, self.geocoded_grey)}
+        return xr.Dataset(data, coords=coords, attrs=attrs)
+
+    def _ppi_xarray(self, xr, bin_coord, attrs):
+        east, north = self.scope_axes_m
+        if self.scope_presentation == "ground":  # a map in the scene's frame
+            sx, sy = self.site_m
+            coords = _xy_coords(sx + east, sy + north)
+        else:  # radius = slant range: not a map, metres from the radar
+            coords = _xy_coords(east, north)
+            attrs["crs_wkt"] = ""
+        attrs["scope_presentation"] = self.scope_presentation
+        coords["bin"] = bin_coord
+        coords["ray"] = ("ray", self.ray_azimuth_deg,
+                         {"units": "deg", "long_name": "azimuth of the ray centre, clockwise from north"})
+        rb, yx, w = ("ray", "bin"), ("y", "x"), {"units": "W"}
+        data = {"bscope_mean_power_w": (rb, self.bscope_mean_power_w, w),
+                "bscope_speckled_power_w": (rb, self.bscope_speckled_power_w, w),
+                "bscope_grey": (rb, self.bscope_grey),
+                "bscope_mask": (rb, self.bscope_mask),
+                "scope_power_w": (yx, self.scope_power_w, w),
+                "scope_mask": (yx, self.scope_mask),
+                "scope_grey": (yx, self.scope_grey)}
+        return xr.Dataset(data, coords=coords, attrs=attrs)
+
     def rerender(self, seed, film=None):
         """Fading and greytones again with another seed and, when given, other
         film constants (a dict with any of density_range, gamma, k1, k2, m1,
         m2); the geometry and mean power are kept. Returns self."""
-        values = None
-        if film is not None:
-            current = self.film
-            unknown = set(film) - set(_FILM_KEYS)
-            if unknown:
-                raise _error("film", f"film: unknown keys {sorted(unknown)}; expected {list(_FILM_KEYS)}")
-            current.update({k: float(v) for k, v in film.items()})
-            values = [current[k] for k in _FILM_KEYS]
-        self._impl.rerender(_seed(seed), values)
+        self._impl.rerender(_seed(seed), _film_values(self._impl.film(), film))
         return self
 
     def write(self, out_dir):
@@ -412,3 +582,126 @@ def sigma0(model_or_category, angles_deg, frequency_hz, polarisation="HH", libra
 def list_models():
     """The backscatter models: a dict name -> one-line summary."""
     return dict(_ris._list_models())
+
+
+DIELECTRIC_MODELS = ("dobson1985", "hallikainen1985", "mironov2009")
+
+
+def _fraction(name, value):
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise _error(name, f"{name}: expected a number, got {value!r}")
+    if not (0.0 <= v <= 1.0):
+        raise _error(name, f"{name}: expected a fraction in [0, 1], got {value!r}")
+    return v
+
+
+def permittivity(model, moisture_m3_m3, frequency_hz, clay=0.2, sand=0.4, bulk_density_g_cm3=1.5,
+                 temperature_c=20.0, conductivity="dobson1985", allow_extrapolation=False):
+    """Soil relative permittivity from a dielectric model, as ``ris dielectric``.
+
+    model: "dobson1985", "hallikainen1985" or "mironov2009" (DIELECTRIC_MODELS).
+    moisture_m3_m3: volumetric water content mv in [0, 1] (any shape).
+    frequency_hz: scalar or array, broadcast against the moisture.
+    clay, sand: mass fractions, 0..1 (mironov2009 does not use sand).
+    bulk_density_g_cm3, temperature_c: dry bulk density (g/cm3) and soil
+        temperature (deg C), used by dobson1985.
+    conductivity: dobson1985's effective-conductivity fit, "dobson1985"
+        (1.4-18 GHz) or "peplinski1995" (0.3-1.3 GHz).
+    allow_extrapolation: outside a model's validity range, warn
+        (``warnings.warn``) instead of raising InputError.
+    Returns complex128 of the broadcast shape, eps = eps' - j eps'' (imaginary
+    part -eps'' <= 0; ``ris dielectric`` prints eps' and eps'').
+    """
+    if not isinstance(model, str):
+        raise _error("model", f"model: expected one of {list(DIELECTRIC_MODELS)}, got {model!r}")
+    mv = np.asarray(moisture_m3_m3, dtype=np.float64)
+    freq = np.asarray(frequency_hz, dtype=np.float64)
+    try:
+        mv, freq = np.broadcast_arrays(mv, freq)
+    except ValueError as e:
+        raise _error("moisture_m3_m3", f"moisture_m3_m3 and frequency_hz do not broadcast: {e}")
+    if np.any(~np.isfinite(mv)) or np.any((mv < 0.0) | (mv > 1.0)):
+        raise _error("moisture_m3_m3", "moisture_m3_m3: expected volumetric moisture in [0, 1] m3/m3")
+    if np.any(~np.isfinite(freq)) or np.any(freq <= 0.0):
+        raise _error("frequency_hz", "frequency_hz: expected frequencies > 0 Hz")
+    clay, sand = _fraction("clay", clay), _fraction("sand", sand)
+    if clay + sand > 1.0 + 1e-9:
+        raise _error("sand", "sand: clay + sand exceeds 1 (mass fractions of the same soil)")
+    rho = float(bulk_density_g_cm3)
+    if not (0.0 < rho < 2.66):
+        raise _error("bulk_density_g_cm3",
+                     "bulk_density_g_cm3: expected a dry bulk density in (0, 2.66) g/cm3")
+    temp = float(temperature_c)
+    if not math.isfinite(temp):
+        raise _error("temperature_c", "temperature_c: expected a finite temperature in deg C")
+    eps, problems = _ris._permittivity(model, np.ascontiguousarray(mv).reshape(-1),
+                                       np.ascontiguousarray(freq).reshape(-1), clay, sand, rho,
+                                       temp, str(conductivity), bool(allow_extrapolation))
+    for w in problems:
+        _warnings.warn(w, stacklevel=2)
+    return eps.reshape(mv.shape)
+
+
+class Greytones:
+    """What ris.greytone returns: the picture and the greytone map used."""
+
+    def __init__(self, d):
+        self.grey = d["grey"]  #: uint8 greytones, lines x bins (greytone.png)
+        self.speckled_power_w = d["speckled_power_w"]  #: float32 W after fading (--speckled)
+        self.looks_per_bin = d["looks_per_bin"]  #: N per range bin
+        self.reference_power_w = d["reference_power_w"]  #: P_ref (W)
+        self.reference_greytone = d["reference_greytone"]  #: G_ref
+        self.greytones_per_decade = d["greytones_per_decade"]  #: 255 gamma / X
+        self.film = dict(zip(_FILM_KEYS, d["film"]))  #: equation 15's constants used
+        self.fading = d["fading"]  #: whether fading was applied (the radar's switch)
+
+    def __repr__(self):
+        return (f"<ris.Greytones {self.grey.shape[1]} x {self.grey.shape[0]}, "
+                f"P_ref {self.reference_power_w:.4g} W -> G_ref {self.reference_greytone:.0f}>")
+
+
+def greytone(mean_power_w, radar=None, seed=1, film=None, looks=None):
+    """Fading and equation 15's greytones from a mean-power array, without
+    geometry: ``ris greytone POWER.tif --radar R --seed N`` on an array.
+
+    mean_power_w: 2-D mean power in watts, lines x range bins (near range
+        first), NaN = no data (greytone 0), e.g. Result.mean_power_w or
+        mean_power_slant.tif's pixels (converted to float32).
+    radar: a Radar (or path or dict) giving the film, reference, fading law
+        and switches; None: ``ris greytone``'s default (seed-fig4-5.toml).
+    seed: fading seed (as ``--seed``).
+    film: a dict with any of density_range, gamma, k1, k2, m1, m2 replacing
+        the radar's film constants.
+    looks: independent samples N per range bin: a number or one per column
+        (> 0); None: from the radar's range bins at their ranges, and then
+        the array needs the radar's number of range bins (as the CLI).
+    Returns a Greytones (grey, speckled_power_w, reference_power_w, ...).
+    """
+    if radar is None:
+        impl = _ris._default_radar()
+    elif isinstance(radar, Radar):
+        impl = radar._impl
+    elif isinstance(radar, dict):
+        impl = Radar.from_dict(radar)._impl
+    else:
+        impl = load_radar(radar)._impl
+    p = np.asarray(mean_power_w)
+    if p.ndim != 2:
+        raise _error("mean_power_w", f"mean_power_w: expected a 2-D array (lines, bins), got {p.ndim} dimensions")
+    if not (np.issubdtype(p.dtype, np.floating) or np.issubdtype(p.dtype, np.integer)):
+        raise _error("mean_power_w", f"mean_power_w: expected powers in watts, got {p.dtype}")
+    p = np.ascontiguousarray(p, dtype=np.float32)
+    if np.any(np.isinf(p)) or np.any(p < 0):
+        raise _error("mean_power_w", "mean_power_w: expected powers >= 0 W (NaN = no data)")
+    n = None
+    if looks is not None:
+        n = np.broadcast_to(np.asarray(looks, dtype=np.float64), (p.shape[1],)) \
+            if np.ndim(looks) == 0 else np.asarray(looks, dtype=np.float64)
+        if n.shape != (p.shape[1],):
+            raise _error("looks", f"looks: expected a number or one per column ({p.shape[1]}), got shape {n.shape}")
+        if not np.all(np.isfinite(n) & (n > 0)):
+            raise _error("looks", "looks: expected finite numbers of looks > 0")
+        n = [float(v) for v in n]
+    return Greytones(_ris._greytone(impl, p, _seed(seed), _film_values(impl.film(), film), n))

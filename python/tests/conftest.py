@@ -6,6 +6,7 @@ import subprocess
 
 import numpy as np
 import pytest
+from osgeo import gdal
 
 import ris
 
@@ -27,6 +28,32 @@ SMALL_RADAR = {
     "azimuth_beamwidth": "5 mrad",
     "track": {"altitude": "3000 m", "near_edge_distance": "4000 m"},
 }
+
+
+gdal.UseExceptions()
+
+
+def read_raster(path, band=1):
+    """A raster's band as numpy (GDAL)."""
+    ds = gdal.Open(str(path))  # kept while the band is read (the band does not own it)
+    return ds.GetRasterBand(band).ReadAsArray()
+
+
+def same_array(a, b):
+    """Equal values, NaN where the other has NaN, same shape."""
+    return a.shape == b.shape and np.array_equal(a, b, equal_nan=a.dtype.kind == "f")
+
+
+def metadata_without_timing(meta):
+    """metadata.json without what differs between two runs of the same input
+    (wall-clock times)."""
+    def strip(x):
+        if isinstance(x, dict):
+            return {k: strip(v) for k, v in x.items() if "seconds" not in k and "time" not in k}
+        if isinstance(x, list):
+            return [strip(v) for v in x]
+        return x
+    return strip(meta)
 
 
 def run_cli(*args):

@@ -7,35 +7,10 @@ import threading
 
 import numpy as np
 import pytest
-from osgeo import gdal
 
 import ris
-from conftest import STANDARD_RADAR, STANDARD_SCENE, SMALL_RADAR, run_cli, small_scene
-
-gdal.UseExceptions()
-
-
-def read_raster(path):
-    ds = gdal.Open(str(path))
-    return ds.GetRasterBand(1).ReadAsArray()
-
-
-def same_array(a, b):
-    """Equal values, NaN where the other has NaN, same shape."""
-    return a.shape == b.shape and np.array_equal(a, b, equal_nan=a.dtype.kind == "f")
-
-
-def metadata_without_timing(meta):
-    """metadata.json without what differs between two runs of the same input
-    (wall-clock times)."""
-    def strip(x):
-        if isinstance(x, dict):
-            return {k: strip(v) for k, v in x.items() if "seconds" not in k and "time" not in k}
-        if isinstance(x, list):
-            return [strip(v) for v in x]
-        return x
-    return strip(meta)
-
+from conftest import (STANDARD_RADAR, STANDARD_SCENE, SMALL_RADAR, metadata_without_timing,
+                      read_raster, run_cli, same_array, small_scene)
 
 @pytest.fixture(scope="module")
 def standard(tmp_path_factory):

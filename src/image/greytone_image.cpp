@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <utility>
 
 #include "ris/image/speckle.h"
 #include "ris/sensor/radar_derived.h"
@@ -23,14 +24,22 @@ std::vector<double> looks_per_bin(const RadarParams& radar, int bins, double nea
 GreytoneImage make_greytone_image(const RadarParams& radar, std::span<const float> mean_power_w,
                                   int lines, int bins, double near_range_m, double bin_m,
                                   std::uint64_t seed, std::span<const std::uint8_t> no_data) {
+  return make_greytone_image(radar, mean_power_w, lines, bins,
+                             looks_per_bin(radar, bins, near_range_m, bin_m), seed, no_data);
+}
+
+GreytoneImage make_greytone_image(const RadarParams& radar, std::span<const float> mean_power_w,
+                                  int lines, int bins, std::vector<double> looks,
+                                  std::uint64_t seed, std::span<const std::uint8_t> no_data) {
   RIS_CHECK(lines >= 0 && bins >= 0);
+  RIS_CHECK(looks.size() == static_cast<std::size_t>(bins));
   RIS_CHECK(mean_power_w.size() ==
             static_cast<std::size_t>(lines) * static_cast<std::size_t>(bins));
   RIS_CHECK(no_data.empty() || no_data.size() == mean_power_w.size());
   // The reference comes from the mean power, so the grey scale does not
   // depend on the fading seed.
   GreytoneImage out{{}, {}, {}, make_greytone_map(radar, mean_power_w, no_data)};
-  out.looks_per_bin = looks_per_bin(radar, bins, near_range_m, bin_m);
+  out.looks_per_bin = std::move(looks);
   out.speckled_power_w.assign(mean_power_w.begin(), mean_power_w.end());
   if (!no_data.empty()) {
     for (std::size_t i = 0; i < no_data.size(); ++i) {

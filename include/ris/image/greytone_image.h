@@ -41,4 +41,11 @@ GreytoneImage make_greytone_image(const RadarParams& radar, std::span<const floa
                                   int lines, int bins, double near_range_m, double bin_m,
                                   std::uint64_t seed, std::span<const std::uint8_t> no_data = {});
 
+// The same with N given per range bin (looks_per_bin.size() == bins, each
+// finite and > 0) instead of from the radar's geometry: a mean-power array
+// whose ranges are not known (the Python API's ris.greytone(looks=...)).
+GreytoneImage make_greytone_image(const RadarParams& radar, std::span<const float> mean_power_w,
+                                  int lines, int bins, std::vector<double> looks_per_bin,
+                                  std::uint64_t seed, std::span<const std::uint8_t> no_data = {});
+
 }  // namespace ris
