@@ -616,8 +616,11 @@ def permittivity(model, moisture_m3_m3, frequency_hz, clay=0.2, sand=0.4, bulk_d
     """
     if not isinstance(model, str):
         raise _error("model", f"model: expected one of {list(DIELECTRIC_MODELS)}, got {model!r}")
-    mv = np.asarray(moisture_m3_m3, dtype=np.float64)
-    freq = np.asarray(frequency_hz, dtype=np.float64)
+    try:
+        mv = np.asarray(moisture_m3_m3, dtype=np.float64)
+        freq = np.asarray(frequency_hz, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise _error("moisture_m3_m3", f"moisture_m3_m3, frequency_hz: expected numbers: {e}")
     try:
         mv, freq = np.broadcast_arrays(mv, freq)
     except ValueError as e:

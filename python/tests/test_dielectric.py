@@ -69,6 +69,7 @@ def test_outside_the_validity_range_raises_or_warns():
     (dict(moisture_m3_m3=1.2), "moisture_m3_m3"),
     (dict(moisture_m3_m3=float("nan")), "moisture_m3_m3"),
     (dict(frequency_hz=0.0), "frequency_hz"),
+    (dict(moisture_m3_m3="wet"), "moisture_m3_m3"),
     (dict(clay=0.7, sand=0.5), "sand"),
     (dict(clay=-0.1), "clay"),
     (dict(bulk_density_g_cm3=3.0), "bulk_density_g_cm3"),

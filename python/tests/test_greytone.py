@@ -75,6 +75,8 @@ def test_looks_set_the_speckle_spread():
 @pytest.mark.parametrize("kwargs, key", [
     (dict(mean_power_w=np.zeros(5)), "mean_power_w"),
     (dict(mean_power_w=np.full((3, 4), -1.0)), "mean_power_w"),
+    (dict(mean_power_w=np.array([["a", "b"]])), "mean_power_w"),
+    (dict(mean_power_w=np.full((3, 4), np.inf)), "mean_power_w"),
     (dict(looks=[1.0, 2.0]), "looks"),
     (dict(looks=0.0), "looks"),
     (dict(film={"gama": 1}), "film"),
@@ -92,3 +94,12 @@ def test_without_looks_the_columns_must_be_the_radars_bins():
     with pytest.raises(ris.InputError, match="range bins") as e:
         ris.greytone(np.ones((3, 4)) * 1e-12)
     assert e.value.key == "mean_power_w"
+
+
+def test_strided_and_other_dtypes_are_converted():
+    p = np.logspace(-14, -10, 600).reshape(20, 30)  # float64
+    want = ris.greytone(np.ascontiguousarray(p[:, ::2], dtype=np.float32), looks=3.0, seed=2)
+    for a in (p[:, ::2], np.asfortranarray(p[:, ::2])):
+        got = ris.greytone(a, looks=3.0, seed=2)
+        assert np.array_equal(got.grey, want.grey)
+        assert np.array_equal(got.speckled_power_w, want.speckled_power_w)
