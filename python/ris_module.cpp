@@ -117,6 +117,10 @@ struct PyScene {
   std::shared_ptr<const ris::Scene> scene;
   std::string path;  // where it was read from ("" when built from arrays)
   std::string name;
+  // The backscatter library the scene's categories are ids of, which
+  // simulate() takes when given none (as `ris simulate` does for a scene
+  // raster that names one): "" for the standard library.
+  std::string library;
 };
 
 PyScene scene_from_arrays(py::array_t<float, py::array::c_style> elevation_m,
@@ -134,7 +138,7 @@ PyScene scene_from_arrays(py::array_t<float, py::array::c_style> elevation_m,
   s->category.assign(category.data(), category.data() + category.size());
   s->valid.assign(valid.data(), valid.data() + valid.size());
   s->validate("Scene.from_arrays");
-  return PyScene{std::move(s), "", ""};
+  return PyScene{std::move(s), "", "", ""};
 }
 
 PyScene load_scene(const std::string& path, std::optional<std::string> category_path,
@@ -153,10 +157,14 @@ PyScene load_scene(const std::string& path, std::optional<std::string> category_
     }
     opt.cell_size_key = "cell_size_m";
     opt.crs_key = "crs";
-    return PyScene{std::make_shared<ris::Scene>(ris::import_dem(path, opt).scene), path, ""};
+    // The import's categories are ids of that library (`ris scene import`
+    // names it in the scene GeoTIFF it writes).
+    return PyScene{std::make_shared<ris::Scene>(ris::import_dem(path, opt).scene), path, "",
+                   (ris::data_dir() / ris::kDefaultCategoryLibrary).string()};
   }
   ris::LoadedScene in = ris::load_scene_source(path, category_path);
-  return PyScene{std::make_shared<ris::Scene>(std::move(in.scene)), path, in.name};
+  return PyScene{std::make_shared<ris::Scene>(std::move(in.scene)), path, in.name,
+                 ris::scene_backscatter_library(path)};
 }
 
 struct PyRadar {
@@ -237,7 +245,7 @@ PyResult simulate(const PyScene& scene, const PyRadar& radar, const std::string&
   r.scene_path = scene.path;
   r.radar = radar.radar;
   r.radar_path = radar.radar.source_file;
-  r.backscatter_path = backscatter;
+  r.backscatter_path = backscatter.empty() ? scene.library : backscatter;
   r.targets_path = targets;
   r.seed = seed;
   r.threads = threads;
@@ -444,6 +452,7 @@ PYBIND11_MODULE(_ris, m) {
       .def_property_readonly("crs", [](const PyScene& s) { return s.scene->crs_wkt; })
       .def_property_readonly("path", [](const PyScene& s) { return s.path; })
       .def_property_readonly("name", [](const PyScene& s) { return s.name; })
+      .def_property_readonly("library", [](const PyScene& s) { return s.library; })
       .def_property_readonly("geotransform",
                              [](const PyScene& s) {
                                const auto g = s.scene->geotransform();

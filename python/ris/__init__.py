@@ -177,6 +177,14 @@ class Scene:
         """The file it was read from, or None."""
         return self._impl.path or None
 
+    @property
+    def backscatter_library(self):
+        """The backscatter library the scene's category ids belong to (that a
+        ``ris scene import``/``fractal`` GeoTIFF names, or generic-terrain.toml
+        for a DEM loaded here), which simulate() uses when given none; None:
+        the standard library."""
+        return self._impl.library or None
+
     def xy_m(self):
         """(x, y): the cell centres' coordinates in metres (x east along a
         row, y north down the rows), from the geotransform."""
@@ -209,9 +217,9 @@ def load_scene(path, category_path=None, cell_size_m=None, crs=None, category=No
     as ``ris scene import`` does (cell_size_m, crs and category are its
     options; category: an id or a name of data/backscatter/generic-terrain.toml,
     default 21, its grass, as the command line); category_path: a category
-    raster on the DEM's grid. Simulate such a scene with
-    backscatter="data/backscatter/generic-terrain.toml" (or a library that
-    has the category)."""
+    raster on the DEM's grid. Such a scene (and a scene GeoTIFF that names
+    its library) is simulated with that library unless simulate() is given
+    another (Scene.backscatter_library), as ``ris simulate``."""
     if category is not None and (isinstance(category, bool)
                                  or not isinstance(category, (str, numbers.Integral))):
         raise _error("category", f"category: expected an id or a name, got {category!r}")
@@ -501,7 +509,8 @@ def simulate(scene, radar, backscatter=None, seed=1, threads=0, targets=None, pr
     scene: a Scene (or a path, loaded with load_scene).
     radar: a Radar (or a path, or a dict for Radar.from_dict).
     backscatter: a category library (.toml) or sigma0 table (.csv) path;
-        None: the standard library.
+        None: the library the scene names (scene.backscatter_library), else
+        the standard library, as ``ris simulate``.
     seed: fading seed; threads: OpenMP threads (0: all cores).
     targets: a point-target file (TOML, [[target]] tables), or None.
     progress: optional callable(stage: str, fraction_done: float).

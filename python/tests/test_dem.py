@@ -1,6 +1,7 @@
 """An imported DEM simulates in Python as `ris scene import` + `ris simulate`."""
 
 import json
+import os
 
 import numpy as np
 import pytest
@@ -21,10 +22,11 @@ def dem_runs(tmp_path_factory):
     """tests/golden/dem-sanand's two CLI steps, and the same in Python."""
     base = tmp_path_factory.mktemp("dem")
     run_cli("scene", "import", DEM, "-o", base / "scene.tif")
+    # No --backscatter: the library the imported scene names (generic-terrain).
     run_cli("simulate", "--quiet", "--scene", base / "scene.tif", "--radar", RADAR,
-            "--backscatter", LIBRARY, "--seed", 2, "--out", base / "cli")
+            "--seed", 2, "--out", base / "cli")
     scene = ris.load_scene(DEM)
-    result = ris.simulate(scene, ris.load_radar(RADAR), backscatter=LIBRARY, seed=2)
+    result = ris.simulate(scene, ris.load_radar(RADAR), seed=2)
     result.write(base / "py")
     return base, scene, result
 
@@ -41,6 +43,14 @@ def test_imported_scene_is_the_clis(dem_runs):
     assert np.array_equal(scene.category[valid], cat[valid])
     assert set(np.unique(scene.category[scene.valid == 1])) == {21}  # grass, as the CLI
     assert "UTM" in scene.crs or "32611" in scene.crs
+    assert os.path.samefile(scene.backscatter_library, LIBRARY)
+    assert os.path.samefile(ris.load_scene(base / "scene.tif").backscatter_library, LIBRARY)
+
+
+def test_the_scene_geotiff_simulates_as_the_dem(dem_runs):
+    base, _, r = dem_runs
+    again = ris.simulate(ris.load_scene(base / "scene.tif"), ris.load_radar(RADAR), seed=2)
+    assert np.array_equal(again.speckled_power_w, r.speckled_power_w, equal_nan=True)
 
 
 def test_products_are_the_cli_bytes(dem_runs):
