@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import ris
-from conftest import DATA, STANDARD_SCENE, read_raster, run_cli
+from conftest import DATA, STANDARD_SCENE, metadata_without_timing, read_raster, run_cli
 
 
 PPI_RADAR = DATA / "radars" / "ppi-ground-mast-30m.toml"
@@ -19,7 +19,21 @@ def ppi(tmp_path_factory):
     run_cli("simulate", "--quiet", "--scene", STANDARD_SCENE, "--radar", PPI_RADAR, "--seed", 4,
             "--out", base / "cli")
     result = ris.simulate(ris.load_scene(STANDARD_SCENE), ris.load_radar(PPI_RADAR), seed=4)
+    result.write(base / "py")
     return base / "cli", result
+
+
+def test_written_products_are_the_cli_bytes(ppi):
+    cli, _ = ppi
+    py = cli.parent / "py"
+    names = sorted(p.name for p in cli.iterdir())
+    assert "bscope.png" in names and names == sorted(p.name for p in py.iterdir())
+    for name in names:
+        a, b = (cli / name).read_bytes(), (py / name).read_bytes()
+        if name == "metadata.json":
+            assert metadata_without_timing(json.loads(a)) == metadata_without_timing(json.loads(b))
+        else:
+            assert a == b, name
 
 
 def test_arrays_are_the_cli_files_pixels(ppi):
