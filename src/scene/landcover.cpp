@@ -142,7 +142,11 @@ LandCoverMapping read_landcover_mapping(const fs::path& path) {
   }
   if (head->has("nodata")) {
     for (double v : head->get_double_array("nodata")) {
-      if (v != std::floor(v)) head->fail("nodata", "expected integer codes");
+      // Codes are raster values read as doubles: integers up to 2^53 are
+      // exact there, and a larger one (or infinity) has no integer code.
+      if (v != std::floor(v) || !(std::fabs(v) <= 9007199254740992.0)) {
+        head->fail("nodata", "expected integer codes of at most 2^53 in magnitude");
+      }
       m.nodata_codes.insert(static_cast<std::int64_t>(v));
     }
   }
