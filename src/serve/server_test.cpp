@@ -216,6 +216,17 @@ TEST_F(ServeApi, InspectorReadsAPixel) {
   const double bin = state["run"]["range_bin_m"];
   EXPECT_NEAR(s["slant_range_m"].get<double>(), near + 10.5 * bin, 1e-6);
   EXPECT_TRUE(s.contains("greytone"));
+  // The ground image's pixel and the slant pixel at its range.
+  r = client().Get("/api/inspect?view=ground&x=100&y=300");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const nlohmann::json g = json_of(r);
+  ASSERT_TRUE(g.contains("pixel"));
+  const double H = 40000 * 0.3048;
+  const double R = g["pixel"]["slant_range_m"];
+  // The slant bin holds the ground pixel's range, within half a bin; h_ref is
+  // 0 (the standard scene's median elevation).
+  EXPECT_NEAR(std::hypot(g["ground_range_m"].get<double>(), H), R, 0.5 * bin + 1e-6);
   r = client().Get("/api/inspect?view=scene&x=500&y=100");
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
