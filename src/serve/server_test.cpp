@@ -295,5 +295,22 @@ TEST_F(ServeApi, ProductsOneByOneAndAsZip) {
   EXPECT_EQ(zip->body.substr(0, 2), "PK");
 }
 
+TEST_F(ServeApi, PresetMessagesNameThePresetFile) {
+  auto r = post("/api/simulate", R"({"radar_preset": "seed-fig7.toml"})");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  EXPECT_NE(json_of(client().Get("/api/state"))["radar"]["path"].get<std::string>().find(
+                "seed-fig7.toml"),
+            std::string::npos);
+  r = post("/api/simulate", R"({"radar": {"pulse_widht": "1 us"}})");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  EXPECT_NE(json_of(r)["error"].get<std::string>().find("seed-fig7.toml: "), std::string::npos);
+  r = post("/api/simulate", R"({"radar_preset": "no-such-radar.toml"})");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  ASSERT_EQ(post("/api/simulate", R"({"radar_preset": "seed-fig4-5.toml"})")->status, 200);
+}
+
 }  // namespace
 }  // namespace ris
