@@ -409,6 +409,7 @@ std::string Session::radar_toml() const {
 
 nlohmann::json Session::write_products() {
   std::lock_guard lock(mutex_);
+  std::filesystem::create_directories(inputs_.out_dir);
   const std::filesystem::path dir = inputs_.out_dir / fmt::format("products-run{}", run_id_);
   if (!std::filesystem::exists(dir)) write_run_products(result_, dir);
   products_.clear();
