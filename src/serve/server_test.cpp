@@ -196,6 +196,24 @@ TEST_F(ServeApi, SimulateFilmOnlyAndImages) {
   EXPECT_EQ(bad->status, 400);
 }
 
+TEST_F(ServeApi, FadingOffIsFilmOnlyAndIgnoresTheSeed) {
+  auto r = post("/api/simulate", R"({"radar": {"film": {"terms": {"fading": false}}}, "seed": 3})");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  EXPECT_TRUE(json_of(r)["film_only"].get<bool>());
+  const auto no_fading = client().Get("/api/image/slant.png");
+  ASSERT_EQ(post("/api/simulate", R"({"seed": 4})")->status, 200);
+  const auto other_seed = client().Get("/api/image/slant.png");
+  ASSERT_TRUE(no_fading && other_seed);
+  EXPECT_EQ(no_fading->body, other_seed->body);  // no speckle: the seed does nothing
+  r = post("/api/simulate", R"({"radar": {"film": {"terms": {"fading": true}}}})");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200);
+  const auto fading = client().Get("/api/image/slant.png");
+  ASSERT_TRUE(fading);
+  EXPECT_NE(fading->body, other_seed->body);
+}
+
 TEST_F(ServeApi, DepressionSetsNearRange) {
   const auto r = post("/api/simulate", R"({"depression": "25 deg"})");
   ASSERT_TRUE(r);

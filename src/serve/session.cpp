@@ -234,9 +234,11 @@ SimulateOutcome Session::simulate(const std::string& body) {
   const bool same_inputs = bs_name == backscatter_name_ && result_.kind != RunKind::streamed;
   if (same_inputs && film_only_change(radar_doc_, doc, radar_, radar)) {
     // Film, fading law and switch: the image chain after the mean power.
-    RadarParams& used = result_.slar ? result_.slar->radar : result_.ppi->radar;
-    used.switches.fading = radar.switches.fading;
-    used.fading = radar.fading;
+    for (RadarParams* used :
+         {&(result_.slar ? result_.slar->radar : result_.ppi->radar), &result_.radar}) {
+      used->switches.fading = radar.switches.fading;
+      used->fading = radar.fading;
+    }
     rerender(result_, static_cast<std::uint64_t>(seed), &radar.film);
     result_.radar.film = radar.film;
     last_film_only_ = true;
