@@ -276,6 +276,7 @@ function makeZoomable(viewport, stage, img, onClick, paint) {
 // ---- the pixel inspector ----
 const inspectorRows = [
   ['view', 'view'], ['row', 'row'], ['col', 'col'], ['line', 'line'], ['bin', 'bin'],
+  ['ground_range_m', 'ground range, m'],
   ['elevation_m', 'elevation, m'], ['category_name', 'category'],
   ['local_incidence_deg', 'local incidence, deg'], ['sigma0_db', 'sigma0, dB'],
   ['slant_range_m', 'slant range, m'], ['incidence_deg', 'incidence, deg'],

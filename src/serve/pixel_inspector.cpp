@@ -66,6 +66,25 @@ nlohmann::json slant_pixel(const RunResult& run, int line, int bin) {
           {"flags", flags_json(sim.image.mask[i], false)}};
 }
 
+// A ground-range pixel (line, column j): its ground range over h_ref, its own
+// greytone and flags, and the slant pixel at the same range,
+// R = sqrt(u^2 + (H - h_ref)^2) (ris/image/ground_range.h).
+nlohmann::json ground_pixel(const RunResult& run, int line, int j) {
+  const SlarSimulation& sim = *run.slar;
+  const GroundRangeGrid& g = sim.ground_grid;
+  const std::size_t i = static_cast<std::size_t>(line) * g.count + j;
+  const double u = g.centre_m(j);
+  const double R = std::hypot(u, g.altitude_m - g.reference_height_m);
+  nlohmann::json out = {{"line", line},
+                        {"ground_range_m", u},
+                        {"greytone", run.slar_pictures->ground_grey[i]},
+                        {"flags", flags_json(run.slar_pictures->ground_mask[i], false)}};
+  const int bin =
+      static_cast<int>(std::floor((R - sim.image.range.near_m) / sim.image.range.bin_m));
+  if (bin >= 0 && bin < sim.image.bins) out["pixel"] = slant_pixel(run, line, bin);
+  return out;
+}
+
 nlohmann::json scene_cell(const RunResult& run, const Sigma0Source& sigma0, int col, int row) {
   const Scene& scene = *run.scene;
   const SlarSimulation& sim = *run.slar;
@@ -126,6 +145,9 @@ nlohmann::json inspect_pixel(const RunResult& run, const Sigma0Source& sigma0,
   if (view == "slant") {
     check_inside(x, y, run.slar->image.bins, run.slar->image.lines, view);
     j = slant_pixel(run, y, x);
+  } else if (view == "ground") {
+    check_inside(x, y, run.slar->ground_grid.count, run.slar->image.lines, view);
+    j = ground_pixel(run, y, x);
   } else if (view == "scene" || view == "geocoded") {
     check_inside(x, y, run.scene->cols, run.scene->rows, view);
     j = scene_cell(run, sigma0, x, y);

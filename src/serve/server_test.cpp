@@ -196,6 +196,24 @@ TEST_F(ServeApi, SimulateFilmOnlyAndImages) {
   EXPECT_EQ(bad->status, 400);
 }
 
+TEST_F(ServeApi, FadingOffIsFilmOnlyAndIgnoresTheSeed) {
+  auto r = post("/api/simulate", R"({"radar": {"film": {"terms": {"fading": false}}}, "seed": 3})");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  EXPECT_TRUE(json_of(r)["film_only"].get<bool>());
+  const auto no_fading = client().Get("/api/image/slant.png");
+  ASSERT_EQ(post("/api/simulate", R"({"seed": 4})")->status, 200);
+  const auto other_seed = client().Get("/api/image/slant.png");
+  ASSERT_TRUE(no_fading && other_seed);
+  EXPECT_EQ(no_fading->body, other_seed->body);  // no speckle: the seed does nothing
+  r = post("/api/simulate", R"({"radar": {"film": {"terms": {"fading": true}}}})");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200);
+  const auto fading = client().Get("/api/image/slant.png");
+  ASSERT_TRUE(fading);
+  EXPECT_NE(fading->body, other_seed->body);
+}
+
 TEST_F(ServeApi, DepressionSetsNearRange) {
   const auto r = post("/api/simulate", R"({"depression": "25 deg"})");
   ASSERT_TRUE(r);
@@ -216,6 +234,17 @@ TEST_F(ServeApi, InspectorReadsAPixel) {
   const double bin = state["run"]["range_bin_m"];
   EXPECT_NEAR(s["slant_range_m"].get<double>(), near + 10.5 * bin, 1e-6);
   EXPECT_TRUE(s.contains("greytone"));
+  // The ground image's pixel and the slant pixel at its range.
+  r = client().Get("/api/inspect?view=ground&x=100&y=300");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const nlohmann::json g = json_of(r);
+  ASSERT_TRUE(g.contains("pixel"));
+  const double H = 40000 * 0.3048;
+  const double R = g["pixel"]["slant_range_m"];
+  // The slant bin holds the ground pixel's range, within half a bin; h_ref is
+  // 0 (the standard scene's median elevation).
+  EXPECT_NEAR(std::hypot(g["ground_range_m"].get<double>(), H), R, 0.5 * bin + 1e-6);
   r = client().Get("/api/inspect?view=scene&x=500&y=100");
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
@@ -282,6 +311,23 @@ TEST_F(ServeApi, ProductsOneByOneAndAsZip) {
   ASSERT_TRUE(zip);
   ASSERT_EQ(zip->status, 200);
   EXPECT_EQ(zip->body.substr(0, 2), "PK");
+}
+
+TEST_F(ServeApi, PresetMessagesNameThePresetFile) {
+  auto r = post("/api/simulate", R"({"radar_preset": "seed-fig7.toml"})");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  EXPECT_NE(json_of(client().Get("/api/state"))["radar"]["path"].get<std::string>().find(
+                "seed-fig7.toml"),
+            std::string::npos);
+  r = post("/api/simulate", R"({"radar": {"pulse_widht": "1 us"}})");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  EXPECT_NE(json_of(r)["error"].get<std::string>().find("seed-fig7.toml: "), std::string::npos);
+  r = post("/api/simulate", R"({"radar_preset": "no-such-radar.toml"})");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  ASSERT_EQ(post("/api/simulate", R"({"radar_preset": "seed-fig4-5.toml"})")->status, 200);
 }
 
 }  // namespace

@@ -97,21 +97,23 @@ Session::Session(ServeInputs inputs) : inputs_(std::move(inputs)) {
     scene_.path = inputs_.scene_path;
     scene_.scene = std::make_shared<const Scene>(load_scene_source(inputs_.scene_path).scene);
   }
-  radar_doc_ = parse_toml_file(inputs_.radar_path);
-  radar_ = radar_from_toml(radar_doc_, inputs_.radar_path);
+  radar_path_ = inputs_.radar_path;
+  radar_doc_ = parse_toml_file(radar_path_);
+  radar_ = radar_from_toml(radar_doc_, radar_path_);
   seed_ = inputs_.seed;
-  result_ = run(scene_, radar_, sigma0_, bs_path, seed_);
+  result_ = run(scene_, radar_, radar_path_, sigma0_, bs_path, seed_);
   last_seconds_ = result_.seconds;
   run_id_ = 1;
 }
 
 RunResult Session::run(const SceneState& scene, const RadarParams& radar,
+                       const std::string& radar_path,
                        const std::shared_ptr<const Sigma0Source>& sigma0,
                        const std::string& backscatter_path, std::uint64_t seed) const {
   RunRequest r;
   r.scene_path = scene.path;
   r.scene = scene.scene;
-  r.radar_path = inputs_.radar_path;
+  r.radar_path = radar_path;
   r.radar = radar;
   r.backscatter_path = backscatter_path;
   r.sigma0 = sigma0;
@@ -172,7 +174,7 @@ nlohmann::json Session::state() const {
   }
   return {{"scene", scene},
           {"radar",
-           {{"path", inputs_.radar_path},
+           {{"path", radar_path_},
             {"description", toml_to_json(radar_doc_)},
             {"params", radar_to_json(radar_)}}},
           {"radar_presets", presets},
@@ -199,24 +201,27 @@ SimulateOutcome Session::simulate(const std::string& body) {
   if (seed < 0) t.fail("seed", "expected a seed >= 0");
   // The radar: a preset replaces the description, then overrides, then the
   // depression angle (which needs the altitude as overridden).
+  // Messages name the file the description came from, as the CLI's would.
   toml::table doc = radar_doc_;
+  std::string radar_path = radar_path_;
   if (auto preset = t.get_string_opt("radar_preset")) {
     const auto it = radar_presets_.find(*preset);
     if (it == radar_presets_.end()) t.fail("radar_preset", "unknown radar \"" + *preset + "\"");
-    doc = parse_toml_file(it->second);
+    radar_path = it->second;
+    doc = parse_toml_file(radar_path);
   }
   if (const toml::node* overrides = t.raw("radar")) {
     if (!overrides->is_table()) t.fail("radar", "expected an object of radar-file keys");
     merge_toml(doc, *overrides->as_table());
   }
-  RadarParams radar = radar_from_toml(doc, inputs_.radar_path);
+  RadarParams radar = radar_from_toml(doc, radar_path);
   if (auto depression = t.get_quantity_opt("depression", Quantity::angle)) {
     set_near_range_depression(doc, radar, *depression);
-    radar = radar_from_toml(doc, inputs_.radar_path);
+    radar = radar_from_toml(doc, radar_path);
   }
   if (auto swath = t.get_quantity_opt("swath", Quantity::length)) {
     set_slant_swath(doc, radar, *swath);
-    radar = radar_from_toml(doc, inputs_.radar_path);
+    radar = radar_from_toml(doc, radar_path);
   }
   std::string bs_name = backscatter_name_;
   if (auto name = t.get_string_opt("backscatter")) {
@@ -229,22 +234,25 @@ SimulateOutcome Session::simulate(const std::string& body) {
   const bool same_inputs = bs_name == backscatter_name_ && result_.kind != RunKind::streamed;
   if (same_inputs && film_only_change(radar_doc_, doc, radar_, radar)) {
     // Film, fading law and switch: the image chain after the mean power.
-    RadarParams& used = result_.slar ? result_.slar->radar : result_.ppi->radar;
-    used.switches.fading = radar.switches.fading;
-    used.fading = radar.fading;
+    for (RadarParams* used :
+         {&(result_.slar ? result_.slar->radar : result_.ppi->radar), &result_.radar}) {
+      used->switches.fading = radar.switches.fading;
+      used->fading = radar.fading;
+    }
     rerender(result_, static_cast<std::uint64_t>(seed), &radar.film);
     result_.radar.film = radar.film;
     last_film_only_ = true;
   } else {
     std::shared_ptr<const Sigma0Source> sigma0 = sigma0_;
     if (bs_name != backscatter_name_) sigma0 = load_sigma0_source(backscatter_files_.at(bs_name));
-    result_ = run(scene_, radar, sigma0, backscatter_files_.at(bs_name),
+    result_ = run(scene_, radar, radar_path, sigma0, backscatter_files_.at(bs_name),
                   static_cast<std::uint64_t>(seed));
     sigma0_ = sigma0;
     backscatter_name_ = bs_name;
     last_film_only_ = false;
   }
   radar_doc_ = std::move(doc);
+  radar_path_ = radar_path;
   radar_ = radar;
   seed_ = static_cast<std::uint64_t>(seed);
   ++run_id_;
@@ -260,7 +268,8 @@ const toml::array& Session::objects() const {
 }
 
 nlohmann::json Session::apply_scene(SceneState next, bool push_undo) {
-  result_ = run(next, radar_, sigma0_, backscatter_files_.at(backscatter_name_), seed_);
+  result_ =
+      run(next, radar_, radar_path_, sigma0_, backscatter_files_.at(backscatter_name_), seed_);
   if (push_undo) {
     undo_.push_back(std::move(scene_));
     if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
@@ -402,6 +411,7 @@ std::string Session::radar_toml() const {
 
 nlohmann::json Session::write_products() {
   std::lock_guard lock(mutex_);
+  std::filesystem::create_directories(inputs_.out_dir);
   const std::filesystem::path dir = inputs_.out_dir / fmt::format("products-run{}", run_id_);
   if (!std::filesystem::exists(dir)) write_run_products(result_, dir);
   products_.clear();

@@ -110,7 +110,7 @@ class Session {
     std::shared_ptr<const Scene> scene;
   };
   SceneState scene_from_doc(toml::table doc);
-  RunResult run(const SceneState& scene, const RadarParams& radar,
+  RunResult run(const SceneState& scene, const RadarParams& radar, const std::string& radar_path,
                 const std::shared_ptr<const Sigma0Source>& sigma0,
                 const std::string& backscatter_path, std::uint64_t seed) const;
   nlohmann::json run_summary() const;
@@ -133,6 +133,7 @@ class Session {
   SceneState scene_;
   std::vector<SceneState> undo_;  // scenes are immutable: states share them
   toml::table radar_doc_;
+  std::string radar_path_;  // where radar_doc_ came from (named in messages)
   RadarParams radar_;
   std::string backscatter_name_;
   std::shared_ptr<const Sigma0Source> sigma0_;
