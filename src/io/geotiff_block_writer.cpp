@@ -14,6 +14,23 @@
 
 namespace ris {
 
+std::string band_unit(const std::string& description, const RasterMetadata& metadata, int bands) {
+  const auto units = metadata.find("RIS_UNITS");
+  if (bands == 1 && units != metadata.end()) return units->second;
+  const std::string name = description.substr(0, description.find(' '));
+  const auto ends_with = [&name](const std::string& tail) {
+    return name.size() > tail.size() &&
+           name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  if (name.find("mask") != std::string::npos) return "bits";
+  if (name.find("grey") != std::string::npos) return "greytone";
+  if (ends_with("_m")) return "m";
+  if (ends_with("_w")) return "W";
+  if (ends_with("_deg")) return "deg";
+  if (ends_with("_db")) return "dB";
+  return "";
+}
+
 namespace {
 
 template <typename T>
@@ -85,6 +102,8 @@ GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int
     if (nodata) GDALSetRasterNoDataValue(band, *nodata);
     const std::string& d = band_descriptions[static_cast<std::size_t>(b)];
     if (!d.empty()) GDALSetDescription(band, d.c_str());
+    const std::string unit = band_unit(d, metadata, bands_);
+    if (!unit.empty()) GDALSetRasterUnitType(band, unit.c_str());
   }
   int bx = 0, by = 0;
   GDALGetBlockSize(GDALGetRasterBand(ds, 1), &bx, &by);

@@ -1,5 +1,6 @@
 #include "ris/io/geotiff_block_writer.h"
 
+#include <gdal.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -75,6 +76,26 @@ TEST(GeoTiffBlockWriter, NothingIsLeftWithoutClose) {
     w.write(row.data(), 1);
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+TEST(GeoTiffBlockWriter, EveryBandDeclaresItsUnit) {
+  EXPECT_EQ(band_unit("speckled_power_w", {{"RIS_UNITS", "W"}}, 1), "W");
+  EXPECT_EQ(band_unit("elevation_m", {}, 2), "m");
+  EXPECT_EQ(band_unit("category", {}, 2), "");
+  EXPECT_EQ(band_unit("mask", {}, 1), "bits");
+  EXPECT_EQ(band_unit("latitude_deg (WGS 84)", {}, 1), "deg");
+  EXPECT_EQ(band_unit("greytone", {}, 1), "greytone");
+  test::TempDir dir;
+  GeoTiffBlockWriter<float> w(dir / "u.tif", 4, 3, {"elevation_m", "category"}, nullptr);
+  const std::vector<float> z(12, 1.0f);
+  w.write({z.data(), z.data()}, 3);
+  w.close();
+  GDALAllRegister();
+  GDALDatasetH ds = GDALOpen((dir / "u.tif").c_str(), GA_ReadOnly);
+  ASSERT_NE(ds, nullptr);
+  EXPECT_STREQ(GDALGetRasterUnitType(GDALGetRasterBand(ds, 1)), "m");
+  EXPECT_STREQ(GDALGetRasterUnitType(GDALGetRasterBand(ds, 2)), "");
+  GDALClose(ds);
 }
 
 }  // namespace

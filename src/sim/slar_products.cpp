@@ -75,7 +75,7 @@ SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img) {
   if (file == "mean_power_slant.tif")
     return {slant_meta("mean power before speckle", "W"), "mean_power_w", nan, false};
   if (file == "speckled_power_slant.tif")
-    return {slant_meta("power after fading", "W"), "speckled_power_w", std::nullopt, false};
+    return {slant_meta("power after fading", "W"), "speckled_power_w", nan, false};
   if (file == "mask_slant.tif")
     return {slant_meta("mask: 1 shadow, 2 layover, 4 no data", "bits"), "mask", std::nullopt,
             false};

@@ -50,6 +50,14 @@ struct GeoTiffCompression {
   bool all_threads = true;      // NUM_THREADS=ALL_CPUS
 };
 
+// The unit a band declares (GDAL's unit type, which QGIS and rasterio show),
+// so every product carries one without each writer naming it: a single
+// band takes the file's RIS_UNITS metadata; otherwise the description's
+// suffix says it ("elevation_m" -> m, "mean_power_w" -> W, "..._deg" ->
+// deg, "..._db" -> dB); a mask's bits are "bits", a greytone "greytone", a
+// category id none ("").
+std::string band_unit(const std::string& description, const RasterMetadata& metadata, int bands);
+
 template <typename T>
 class GeoTiffBlockWriter {
  public:
