@@ -203,6 +203,19 @@ TEST(HardeningCli, ObjectsSmallerThanACellWarnWithTheConsequence) {
   EXPECT_THAT(r.output, HasSubstr("alias"));
 }
 
+TEST(HardeningCli, StreamedRunWithAnUndefinedCategoryFailsAtItsFirstCell) {
+  test::TempDir dir;
+  // Categories 1-3 are ku-geometric's, not generic-terrain's.
+  ASSERT_EQ(test::run_ris("scene fractal --quiet --size 300 --patches 1,2,3 -o " + q(dir / "s.tif"))
+                .exit_code,
+            0);
+  const auto before = listing(dir.path());
+  expect_refused(
+      test::run_ris("simulate --quiet --stream --scene " + q(dir / "s.tif") + " --backscatter " +
+                    data("backscatter/generic-terrain.toml") + " --out " + q(dir / "out")),
+      1, "uses it, first at row 0, column 0", dir.path(), before);
+}
+
 TEST(HardeningCli, BareDemAndFractalSceneSimulateWithShippedFiles) {
   test::TempDir dir;
   // The README's fractal example as printed, with its shipped radar.

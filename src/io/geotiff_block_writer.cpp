@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 #include "ris/io/atomic_file.h"
 #include "ris/io/gdal_util.h"
@@ -56,7 +58,21 @@ struct GeoTiffBlockWriter<T>::Impl {
   explicit Impl(const std::filesystem::path& path) : out(path) {}
   AtomicPath out;
   GdalDataset ds;
+  bool overviews = false;  // build them at close()
+  std::string resampling;  // "AVERAGE" or "NEAREST"
 };
+
+namespace {
+
+// Overview factors 2, 4, 8, ... while the overview keeps >= 256 pixels on
+// its longer side.
+std::vector<int> overview_levels(int cols, int rows) {
+  std::vector<int> levels;
+  for (int f = 2; std::max(cols, rows) / f >= 256; f *= 2) levels.push_back(f);
+  return levels;
+}
+
+}  // namespace
 
 template <typename T>
 GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int cols, int rows,
@@ -91,6 +107,10 @@ GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int
   if (ds == nullptr)
     throw InputError(path.string(), "", "cannot create GeoTIFF: " + last_gdal_error());
   impl_->ds.reset(ds);
+  impl_->overviews =
+      compression.overviews && static_cast<long long>(cols) * rows >= kOverviewMinPixels;
+  const auto units = metadata.find("RIS_UNITS");
+  impl_->resampling = units != metadata.end() && units->second == "W" ? "AVERAGE" : "NEAREST";
   if (georef != nullptr) {
     std::array<double, 6> gt = georef->geotransform;
     GDALSetGeoTransform(ds, gt.data());
@@ -202,6 +222,15 @@ void GeoTiffBlockWriter<T>::close() {
   RIS_CHECK(impl_->ds != nullptr);
   RIS_CHECK(written_ == length_);
   CPLErrorReset();
+  if (impl_->overviews) {
+    std::vector<int> levels = overview_levels(cols_, rows_);
+    if (!levels.empty() && GDALBuildOverviews(handle(impl_->ds), impl_->resampling.c_str(),
+                                              static_cast<int>(levels.size()), levels.data(), 0,
+                                              nullptr, nullptr, nullptr) != CE_None) {
+      throw InputError(impl_->out.final_path().string(), "",
+                       "cannot build overviews: " + last_gdal_error());
+    }
+  }
   GDALClose(impl_->ds.release());
   if (CPLGetLastErrorType() == CE_Failure || CPLGetLastErrorType() == CE_Fatal) {
     throw InputError(impl_->out.final_path().string(), "", "write failed: " + last_gdal_error());

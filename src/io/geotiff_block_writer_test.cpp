@@ -98,5 +98,25 @@ TEST(GeoTiffBlockWriter, EveryBandDeclaresItsUnit) {
   GDALClose(ds);
 }
 
+TEST(GeoTiffBlockWriter, LargeRastersGetOverviewsUnlessTurnedOff) {
+  test::TempDir dir;
+  const int n = 4096;  // kOverviewMinPixels
+  const std::vector<std::uint8_t> zeros(std::size_t(n) * 64, 0);
+  for (const bool on : {true, false}) {
+    GeoTiffCompression c;
+    c.overviews = on;
+    const auto path = dir / (on ? "on.tif" : "off.tif");
+    GeoTiffBlockWriter<std::uint8_t> w(path, n, n, {"mask"}, nullptr, std::nullopt, {}, c);
+    for (int r = 0; r < n; r += 64) w.write(zeros.data(), 64);
+    w.close();
+    GDALAllRegister();
+    GDALDatasetH ds = GDALOpen(path.c_str(), GA_ReadOnly);
+    ASSERT_NE(ds, nullptr);
+    // 2, 4, ..., 16: the last keeps 256 pixels a side.
+    EXPECT_EQ(GDALGetOverviewCount(GDALGetRasterBand(ds, 1)), on ? 4 : 0);
+    GDALClose(ds);
+  }
+}
+
 }  // namespace
 }  // namespace ris

@@ -250,8 +250,8 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
   const SlarImage& img = sim.image;
   const ProductSelection& want = info.products;
   const int png_level = png_compression_level(info.compression);
-  const GeoTiffCompression float_tif = geotiff_compression(info.compression, true);
-  const GeoTiffCompression int_tif = geotiff_compression(info.compression, false);
+  const GeoTiffCompression float_tif = product_tiff_settings(info, true);
+  const GeoTiffCompression int_tif = product_tiff_settings(info, false);
   // One task per file, run concurrently (each opens its own GDAL dataset),
   // the largest first; every file is complete before the folder commits.
   std::vector<std::function<void()>> tasks;

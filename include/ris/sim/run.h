@@ -68,6 +68,7 @@ struct RunRequest {
   // Which products and how compressed (ris/sim/run_info.h).
   ProductSelection products;
   CompressionPreset compression = CompressionPreset::fast;
+  bool overviews = true;  // internal overviews on large products
 };
 
 struct RunCallbacks {
