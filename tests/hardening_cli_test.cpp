@@ -114,6 +114,12 @@ TEST(HardeningCli, DeviceFifoAndFolderOutputsAreRefused) {
   expect_refused(test::run_ris("simulate --quiet --out " + q(dir / "file")), 1,
                  "is a regular file; expected a folder", dir.path(), before);
   EXPECT_EQ(test::read_file(dir / "file"), "not a folder\n");
+  // A product's name taken by a folder in the output folder: refused before
+  // the run, not when the products are moved in.
+  fs::create_directories(dir / "out" / "metadata.json");
+  const auto out_before = listing(dir / "out");
+  expect_refused(test::run_ris("simulate --quiet --out " + q(dir / "out")), 1,
+                 "metadata.json: '--out': is a folder", dir / "out", out_before);
 }
 
 TEST(HardeningCli, OutputThatIsAnInputIsRefusedAndTheInputKept) {
@@ -135,7 +141,7 @@ TEST(HardeningCli, OutputThatIsAnInputIsRefusedAndTheInputKept) {
   expect_refused(
       test::run_ris("simulate --quiet --scene " + q(dir / "out" / "mean_power_slant.tif") +
                     " --out " + q(dir / "out")),
-      1, "would replace its own input", dir / "out", before);
+      1, "is also an input of this run", dir / "out", before);
   EXPECT_EQ(test::read_file(dir / "out" / "mean_power_slant.tif"), scene_bytes);
 }
 
