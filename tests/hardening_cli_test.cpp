@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -145,7 +146,19 @@ TEST(HardeningCli, OutputThatIsAnInputIsRefusedAndTheInputKept) {
   EXPECT_EQ(test::read_file(dir / "out" / "mean_power_slant.tif"), scene_bytes);
 }
 
+// The memory ceiling of ris runs in this scope (RIS_MAX_MEMORY_MB): a
+// refusal must not depend on the test machine's free memory (a big one
+// would otherwise start the 50 GB run).
+class MemoryCeiling {
+ public:
+  explicit MemoryCeiling(const char* mb) { ::setenv("RIS_MAX_MEMORY_MB", mb, 1); }
+  ~MemoryCeiling() { ::unsetenv("RIS_MAX_MEMORY_MB"); }
+  MemoryCeiling(const MemoryCeiling&) = delete;
+  MemoryCeiling& operator=(const MemoryCeiling&) = delete;
+};
+
 TEST(HardeningCli, LineCountOverflowAndHugeImagesAreRefused) {
+  const MemoryCeiling ceiling("2048");
   test::TempDir dir;
   // 0.001 mm over the track once wrapped to a one-line image (exit 0).
   const fs::path tiny = radar_with(dir, "seed-fig4-5.toml", "azimuth_line_spacing = \"0.001 mm\"");
@@ -162,9 +175,15 @@ TEST(HardeningCli, LineCountOverflowAndHugeImagesAreRefused) {
   const fs::path ppi = radar_with(dir, "ppi-ground-mast-30m.toml", "pixel = \"1 mm\"", "[scan]");
   expect_refused(test::run_ris("simulate --quiet --radar " + q(ppi) + " --out " + q(dir / "out")),
                  1, "'scan.pixel'", dir.path(), before);
+  // 1.8 M rays of a PPI: their geometry would not fit.
+  const fs::path rays =
+      radar_with(dir, "ppi-ground-mast-30m.toml", "ray_spacing = \"2e-4 deg\"", "[scan]");
+  expect_refused(test::run_ris("simulate --quiet --radar " + q(rays) + " --out " + q(dir / "out")),
+                 1, "'scan.ray_spacing': the geometry of 1805002 rays", dir.path(), before);
 }
 
 TEST(HardeningCli, HugeSizesAreRefusedBeforeAnyWork) {
+  const MemoryCeiling ceiling("2048");
   test::TempDir dir;
   const auto before = listing(dir.path());
   expect_refused(test::run_ris("scene fractal --quiet --size 1000000 -o " + q(dir / "f.tif")), 1,

@@ -20,6 +20,20 @@ namespace {
 
 constexpr const char* kNoLimitsEnv = "RIS_NO_RESOURCE_LIMITS";
 constexpr const char* kMaxThreadsEnv = "RIS_MAX_THREADS";
+constexpr const char* kMaxMemoryEnv = "RIS_MAX_MEMORY_MB";
+
+// $RIS_MAX_MEMORY_MB in bytes, or -1 when unset.
+std::int64_t memory_cap_bytes() {
+  const char* env = std::getenv(kMaxMemoryEnv);
+  if (env == nullptr || *env == '\0') return -1;
+  char* end = nullptr;
+  const long long mb = std::strtoll(env, &end, 10);
+  if (end == env || *end != '\0' || mb < 1 || mb > (1LL << 40)) {
+    throw InputError("", kMaxMemoryEnv,
+                     fmt::format("expected a whole number of MiB >= 1, got \"{}\"", env));
+  }
+  return mb * 1024 * 1024;
+}
 
 int core_count() {
   const unsigned n = std::thread::hardware_concurrency();
@@ -135,7 +149,9 @@ bool resource_limits_disabled() {
 
 void require_memory(std::int64_t bytes, const std::string& file, const std::string& key,
                     const std::string& what) {
-  require(bytes, available_memory_bytes(), file, key, what, "memory");
+  const std::int64_t cap = memory_cap_bytes();
+  const std::int64_t available = available_memory_bytes();
+  require(bytes, cap > 0 ? std::min(cap, available) : available, file, key, what, "memory");
 }
 
 void require_disk(std::int64_t bytes, const fs::path& out, const std::string& file,
