@@ -146,13 +146,19 @@ TEST(HardeningCli, OutputThatIsAnInputIsRefusedAndTheInputKept) {
   EXPECT_EQ(test::read_file(dir / "out" / "mean_power_slant.tif"), scene_bytes);
 }
 
-// The memory ceiling of ris runs in this scope (RIS_MAX_MEMORY_MB): a
-// refusal must not depend on the test machine's free memory (a big one
-// would otherwise start the 50 GB run).
+// The memory and disk ceilings of ris runs in this scope (RIS_MAX_MEMORY_MB,
+// RIS_MAX_DISK_MB): a refusal must not depend on the test machine's free
+// memory or disk (a big one would otherwise start the 50 GB run).
 class MemoryCeiling {
  public:
-  explicit MemoryCeiling(const char* mb) { ::setenv("RIS_MAX_MEMORY_MB", mb, 1); }
-  ~MemoryCeiling() { ::unsetenv("RIS_MAX_MEMORY_MB"); }
+  explicit MemoryCeiling(const char* mb) {
+    ::setenv("RIS_MAX_MEMORY_MB", mb, 1);
+    ::setenv("RIS_MAX_DISK_MB", mb, 1);
+  }
+  ~MemoryCeiling() {
+    ::unsetenv("RIS_MAX_MEMORY_MB");
+    ::unsetenv("RIS_MAX_DISK_MB");
+  }
   MemoryCeiling(const MemoryCeiling&) = delete;
   MemoryCeiling& operator=(const MemoryCeiling&) = delete;
 };

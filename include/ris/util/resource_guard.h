@@ -8,8 +8,9 @@
 // allocation or long loop. A refusal is an InputError naming the key, the
 // estimate and the limit, and how to raise the limit:
 //   RIS_MAX_THREADS=N            allow up to N threads (default 4x cores)
-//   RIS_MAX_MEMORY_MB=N          allow at most N MiB, below what is
-//                                available (a shared machine; tests)
+//   RIS_MAX_MEMORY_MB=N          allow at most N MiB of memory, or
+//   RIS_MAX_DISK_MB=N            of disk, below what is available (a
+//                                shared machine; tests)
 //   RIS_NO_RESOURCE_LIMITS=1     skip the memory, disk and work checks
 //                                (warn instead; for a machine with swap or
 //                                a disk that std::filesystem cannot see)
