@@ -160,11 +160,13 @@ class Scene:
         return f"<ris.Scene {self.shape[1]} x {self.shape[0]} cells of {self.cell_size_m[0]:g} m>"
 
 
-def load_scene(path, category_path=None, cell_size_m=None, crs=None, category=0):
+def load_scene(path, category_path=None, cell_size_m=None, crs=None, category=21):
     """A scene from a file: a description (.toml), a ris scene GeoTIFF, or a
     DEM (any GDAL raster). A DEM in a geographic CRS is reprojected into UTM
     as ``ris scene import`` does (cell_size_m, crs and category are its
-    options); category_path: a category raster on the DEM's grid."""
+    options; category defaults to 21, grass of
+    data/backscatter/generic-terrain.toml, as in ``ris scene import``);
+    category_path: a category raster on the DEM's grid."""
     return Scene(_ris._load_scene(str(path), category_path, cell_size_m, crs, int(category)))
 
 
