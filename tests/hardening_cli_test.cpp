@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -114,6 +115,12 @@ TEST(HardeningCli, DeviceFifoAndFolderOutputsAreRefused) {
   expect_refused(test::run_ris("simulate --quiet --out " + q(dir / "file")), 1,
                  "is a regular file; expected a folder", dir.path(), before);
   EXPECT_EQ(test::read_file(dir / "file"), "not a folder\n");
+  // A product's name taken by a folder in the output folder: refused before
+  // the run, not when the products are moved in.
+  fs::create_directories(dir / "out" / "metadata.json");
+  const auto out_before = listing(dir / "out");
+  expect_refused(test::run_ris("simulate --quiet --out " + q(dir / "out")), 1,
+                 "metadata.json: '--out': is a folder", dir / "out", out_before);
 }
 
 TEST(HardeningCli, OutputThatIsAnInputIsRefusedAndTheInputKept) {
@@ -135,11 +142,29 @@ TEST(HardeningCli, OutputThatIsAnInputIsRefusedAndTheInputKept) {
   expect_refused(
       test::run_ris("simulate --quiet --scene " + q(dir / "out" / "mean_power_slant.tif") +
                     " --out " + q(dir / "out")),
-      1, "would replace its own input", dir / "out", before);
+      1, "is also an input of this run", dir / "out", before);
   EXPECT_EQ(test::read_file(dir / "out" / "mean_power_slant.tif"), scene_bytes);
 }
 
+// The memory and disk ceilings of ris runs in this scope (RIS_MAX_MEMORY_MB,
+// RIS_MAX_DISK_MB): a refusal must not depend on the test machine's free
+// memory or disk (a big one would otherwise start the 50 GB run).
+class MemoryCeiling {
+ public:
+  explicit MemoryCeiling(const char* mb) {
+    ::setenv("RIS_MAX_MEMORY_MB", mb, 1);
+    ::setenv("RIS_MAX_DISK_MB", mb, 1);
+  }
+  ~MemoryCeiling() {
+    ::unsetenv("RIS_MAX_MEMORY_MB");
+    ::unsetenv("RIS_MAX_DISK_MB");
+  }
+  MemoryCeiling(const MemoryCeiling&) = delete;
+  MemoryCeiling& operator=(const MemoryCeiling&) = delete;
+};
+
 TEST(HardeningCli, LineCountOverflowAndHugeImagesAreRefused) {
+  const MemoryCeiling ceiling("2048");
   test::TempDir dir;
   // 0.001 mm over the track once wrapped to a one-line image (exit 0).
   const fs::path tiny = radar_with(dir, "seed-fig4-5.toml", "azimuth_line_spacing = \"0.001 mm\"");
@@ -156,9 +181,15 @@ TEST(HardeningCli, LineCountOverflowAndHugeImagesAreRefused) {
   const fs::path ppi = radar_with(dir, "ppi-ground-mast-30m.toml", "pixel = \"1 mm\"", "[scan]");
   expect_refused(test::run_ris("simulate --quiet --radar " + q(ppi) + " --out " + q(dir / "out")),
                  1, "'scan.pixel'", dir.path(), before);
+  // 1.8 M rays of a PPI: their geometry would not fit.
+  const fs::path rays =
+      radar_with(dir, "ppi-ground-mast-30m.toml", "ray_spacing = \"2e-4 deg\"", "[scan]");
+  expect_refused(test::run_ris("simulate --quiet --radar " + q(rays) + " --out " + q(dir / "out")),
+                 1, "'scan.ray_spacing': the geometry of 1805002 rays", dir.path(), before);
 }
 
 TEST(HardeningCli, HugeSizesAreRefusedBeforeAnyWork) {
+  const MemoryCeiling ceiling("2048");
   test::TempDir dir;
   const auto before = listing(dir.path());
   expect_refused(test::run_ris("scene fractal --quiet --size 1000000 -o " + q(dir / "f.tif")), 1,
@@ -201,6 +232,19 @@ TEST(HardeningCli, ObjectsSmallerThanACellWarnWithTheConsequence) {
   EXPECT_THAT(r.output, HasSubstr("object[0] (checkerboard) has details of 3 m, smaller than a "
                                   "cell (10 m)"));
   EXPECT_THAT(r.output, HasSubstr("alias"));
+}
+
+TEST(HardeningCli, StreamedRunWithAnUndefinedCategoryFailsAtItsFirstCell) {
+  test::TempDir dir;
+  // Categories 1-3 are ku-geometric's, not generic-terrain's.
+  ASSERT_EQ(test::run_ris("scene fractal --quiet --size 300 --patches 1,2,3 -o " + q(dir / "s.tif"))
+                .exit_code,
+            0);
+  const auto before = listing(dir.path());
+  expect_refused(
+      test::run_ris("simulate --quiet --stream --scene " + q(dir / "s.tif") + " --backscatter " +
+                    data("backscatter/generic-terrain.toml") + " --out " + q(dir / "out")),
+      1, "uses it, first at row 0, column 0", dir.path(), before);
 }
 
 TEST(HardeningCli, BareDemAndFractalSceneSimulateWithShippedFiles) {

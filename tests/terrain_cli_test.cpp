@@ -111,11 +111,13 @@ start_latlon = [34.13, -118.55]
 end_latlon = [34.22, -118.55]
 )");
   const auto out = dir / "run";
-  auto r = test::run_ris("simulate --scene " + kDem + "SanAnd_dem.tif --radar " +
-                         (dir / "radar.toml").string() + " --backscatter " + ris::test::data_dir() +
-                         "/backscatter/generic-terrain.toml --out " + out.string());
-  // Without land cover every cell is category 0, which the generic library lacks.
-  EXPECT_NE(r.exit_code, 0);
+  // Without land cover every cell is the default category (grass of the
+  // generic library, kDefaultCategory), whose library ris then takes.
+  auto r = test::run_ris("simulate --quiet --scene " + kDem + "SanAnd_dem.tif --radar " +
+                         (dir / "radar.toml").string() + " --out " + (dir / "bare").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("generic-terrain.toml, the library the scene names"), std::string::npos)
+      << r.output;
   ASSERT_EQ(test::run_ris("scene import " + kDem + "SanAnd_dem.tif --category grass -o " +
                           (dir / "grass.tif").string())
                 .exit_code,

@@ -86,6 +86,20 @@ std::map<std::string, std::uint16_t> names_if_present(const std::string& library
   return {};
 }
 
+// Records the library (RIS_BACKSCATTER_LIBRARY, for `ris simulate`) when it
+// defines every category the scene uses: ids given bare (`--patches
+// 1,2,3`) may be another library's, and then none is recorded.
+void record_library(ris::RasterMetadata& metadata, const std::string& library,
+                    const std::map<std::string, std::uint16_t>& names,
+                    const std::set<std::uint16_t>& used) {
+  if (names.empty()) return;
+  for (const std::uint16_t c : used) {
+    const auto defines = [c](const auto& name_id) { return name_id.second == c; };
+    if (std::none_of(names.begin(), names.end(), defines)) return;
+  }
+  for (auto& [k, v] : ris::backscatter_library_metadata(library)) metadata[k] = v;
+}
+
 // Legend labels (RIS_CATEGORY_NAMES, ris/scene/scene_source.h) of the
 // categories a scene uses, from a library's names.
 ris::RasterMetadata category_labels(const std::string& scene_name,
@@ -168,9 +182,7 @@ void run_import(const ImportArgs& args) {
     for (auto& [k, v] : ris::backscatter_library_metadata(mapping->library)) metadata[k] = v;
   } else if (!category.empty()) {
     names = names_if_present(library, !args.library.empty());
-    if (!names.empty()) {
-      for (auto& [k, v] : ris::backscatter_library_metadata(library)) metadata[k] = v;
-    }
+    record_library(metadata, library, names, {options.category});
   }
   std::string landcover_note;
   if (mapping) {
@@ -304,9 +316,10 @@ void run_fractal(const FractalArgs& args) {
       {"RIS_VERTICAL_DATUM", "local: elevation above the scene's flat datum"},
       {"RIS_NODATA_CELLS", "0"},
   };
-  if (!names.empty()) {
-    for (auto& [k, v] : ris::backscatter_library_metadata(library)) metadata[k] = v;
-  }
+  record_library(metadata, library, names,
+                 p.patch_categories.empty() ? std::set<std::uint16_t>{p.category}
+                                            : std::set<std::uint16_t>(p.patch_categories.begin(),
+                                                                      p.patch_categories.end()));
   const std::string label = fmt::format("fractal terrain (seed {}, H = {})", p.seed, p.hurst);
 
   if (noise) {

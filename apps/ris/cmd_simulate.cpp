@@ -192,6 +192,9 @@ void add_simulate(CLI::App& app) {
                   "Write only these products, comma-separated file stems (docs/outputs.md; "
                   "default: all; metadata.json always)")
       ->delimiter(',');
+  cmd->add_flag("--overviews,!--no-overviews", r.overviews,
+                "Internal overviews on products of 4096^2 pixels or more, so a GIS opens them at "
+                "any zoom (default; --no-overviews: none, a faster write)");
   cmd->add_option("--compress", args->compress,
                   "Compression: fast (default), small (smallest files, slower), none")
       ->capture_default_str();

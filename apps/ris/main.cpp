@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
   CLI::App app{"ris: radar image simulator (SLAR, SAR and PPI images from terrain)", "ris"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("ris ") + RIS_VERSION);
+  app.footer(
+      "Exit status: 0 done, 1 an input error (file, key, value, unsafe output or resource "
+      "limit), 2 a usage error (the command line), 3 any other failure (docs/limits.md).");
   // Messages go to stderr as "ris: level: text"; -v is read before parsing so
   // that it applies to everything the subcommands print.
   spdlog::set_default_logger(spdlog::stderr_color_mt("ris"));

@@ -13,6 +13,7 @@
 #include "ris/geometry/terrain_sample.h"
 #include "ris/scene/geo_frame.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -110,6 +111,12 @@ PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar_in
   g.samples = std::max(1, static_cast<int>(std::ceil(std::min(u_far, u_corner) / g.sample_step_m)));
   g.track.altitude_m = H;
 
+  // The rays' geometry before it is allocated (ris/util/resource_guard.h):
+  // 31 bytes a sample, as a SLAR line's; a fine ray spacing multiplies it.
+  require_memory(checked_mul(checked_mul(g.lines, g.samples, radar.source_file, "scan.ray_spacing"),
+                             31, radar.source_file, "scan.ray_spacing"),
+                 radar.source_file, "scan.ray_spacing",
+                 fmt::format("the geometry of {} rays x {} samples", g.lines, g.samples));
   g.allocate_samples();
 
   const TerrainTexels tex = terrain_texels(scene);

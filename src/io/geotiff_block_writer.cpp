@@ -6,13 +6,32 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 #include "ris/io/atomic_file.h"
 #include "ris/io/gdal_util.h"
 #include "ris/util/error.h"
 
 namespace ris {
+
+std::string band_unit(const std::string& description, const RasterMetadata& metadata, int bands) {
+  const auto units = metadata.find("RIS_UNITS");
+  if (bands == 1 && units != metadata.end()) return units->second;
+  const std::string name = description.substr(0, description.find(' '));
+  const auto ends_with = [&name](const std::string& tail) {
+    return name.size() > tail.size() &&
+           name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  if (name.find("mask") != std::string::npos) return "bits";
+  if (name.find("grey") != std::string::npos) return "greytone";
+  if (ends_with("_m")) return "m";
+  if (ends_with("_w")) return "W";
+  if (ends_with("_deg")) return "deg";
+  if (ends_with("_db")) return "dB";
+  return "";
+}
 
 namespace {
 
@@ -39,7 +58,21 @@ struct GeoTiffBlockWriter<T>::Impl {
   explicit Impl(const std::filesystem::path& path) : out(path) {}
   AtomicPath out;
   GdalDataset ds;
+  bool overviews = false;  // build them at close()
+  std::string resampling;  // "AVERAGE" or "NEAREST"
 };
+
+namespace {
+
+// Overview factors 2, 4, 8, ... while the overview keeps >= 256 pixels on
+// its longer side.
+std::vector<int> overview_levels(int cols, int rows) {
+  std::vector<int> levels;
+  for (int f = 2; std::max(cols, rows) / f >= 256; f *= 2) levels.push_back(f);
+  return levels;
+}
+
+}  // namespace
 
 template <typename T>
 GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int cols, int rows,
@@ -74,6 +107,10 @@ GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int
   if (ds == nullptr)
     throw InputError(path.string(), "", "cannot create GeoTIFF: " + last_gdal_error());
   impl_->ds.reset(ds);
+  impl_->overviews =
+      compression.overviews && static_cast<long long>(cols) * rows >= kOverviewMinPixels;
+  const auto units = metadata.find("RIS_UNITS");
+  impl_->resampling = units != metadata.end() && units->second == "W" ? "AVERAGE" : "NEAREST";
   if (georef != nullptr) {
     std::array<double, 6> gt = georef->geotransform;
     GDALSetGeoTransform(ds, gt.data());
@@ -85,6 +122,8 @@ GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int
     if (nodata) GDALSetRasterNoDataValue(band, *nodata);
     const std::string& d = band_descriptions[static_cast<std::size_t>(b)];
     if (!d.empty()) GDALSetDescription(band, d.c_str());
+    const std::string unit = band_unit(d, metadata, bands_);
+    if (!unit.empty()) GDALSetRasterUnitType(band, unit.c_str());
   }
   int bx = 0, by = 0;
   GDALGetBlockSize(GDALGetRasterBand(ds, 1), &bx, &by);
@@ -183,6 +222,15 @@ void GeoTiffBlockWriter<T>::close() {
   RIS_CHECK(impl_->ds != nullptr);
   RIS_CHECK(written_ == length_);
   CPLErrorReset();
+  if (impl_->overviews) {
+    std::vector<int> levels = overview_levels(cols_, rows_);
+    if (!levels.empty() && GDALBuildOverviews(handle(impl_->ds), impl_->resampling.c_str(),
+                                              static_cast<int>(levels.size()), levels.data(), 0,
+                                              nullptr, nullptr, nullptr) != CE_None) {
+      throw InputError(impl_->out.final_path().string(), "",
+                       "cannot build overviews: " + last_gdal_error());
+    }
+  }
   GDALClose(impl_->ds.release());
   if (CPLGetLastErrorType() == CE_Failure || CPLGetLastErrorType() == CE_Fatal) {
     throw InputError(impl_->out.final_path().string(), "", "write failed: " + last_gdal_error());

@@ -1,5 +1,6 @@
 #include "ris/io/geotiff_block_writer.h"
 
+#include <gdal.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -75,6 +76,46 @@ TEST(GeoTiffBlockWriter, NothingIsLeftWithoutClose) {
     w.write(row.data(), 1);
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+TEST(GeoTiffBlockWriter, EveryBandDeclaresItsUnit) {
+  EXPECT_EQ(band_unit("speckled_power_w", {{"RIS_UNITS", "W"}}, 1), "W");
+  EXPECT_EQ(band_unit("elevation_m", {}, 2), "m");
+  EXPECT_EQ(band_unit("category", {}, 2), "");
+  EXPECT_EQ(band_unit("mask", {}, 1), "bits");
+  EXPECT_EQ(band_unit("latitude_deg (WGS 84)", {}, 1), "deg");
+  EXPECT_EQ(band_unit("greytone", {}, 1), "greytone");
+  test::TempDir dir;
+  GeoTiffBlockWriter<float> w(dir / "u.tif", 4, 3, {"elevation_m", "category"}, nullptr);
+  const std::vector<float> z(12, 1.0f);
+  w.write({z.data(), z.data()}, 3);
+  w.close();
+  GDALAllRegister();
+  GDALDatasetH ds = GDALOpen((dir / "u.tif").c_str(), GA_ReadOnly);
+  ASSERT_NE(ds, nullptr);
+  EXPECT_STREQ(GDALGetRasterUnitType(GDALGetRasterBand(ds, 1)), "m");
+  EXPECT_STREQ(GDALGetRasterUnitType(GDALGetRasterBand(ds, 2)), "");
+  GDALClose(ds);
+}
+
+TEST(GeoTiffBlockWriter, LargeRastersGetOverviewsUnlessTurnedOff) {
+  test::TempDir dir;
+  const int n = 4096;  // kOverviewMinPixels
+  const std::vector<std::uint8_t> zeros(std::size_t(n) * 64, 0);
+  for (const bool on : {true, false}) {
+    GeoTiffCompression c;
+    c.overviews = on;
+    const auto path = dir / (on ? "on.tif" : "off.tif");
+    GeoTiffBlockWriter<std::uint8_t> w(path, n, n, {"mask"}, nullptr, std::nullopt, {}, c);
+    for (int r = 0; r < n; r += 64) w.write(zeros.data(), 64);
+    w.close();
+    GDALAllRegister();
+    GDALDatasetH ds = GDALOpen(path.c_str(), GA_ReadOnly);
+    ASSERT_NE(ds, nullptr);
+    // 2, 4, ..., 16: the last keeps 256 pixels a side.
+    EXPECT_EQ(GDALGetOverviewCount(GDALGetRasterBand(ds, 1)), on ? 4 : 0);
+    GDALClose(ds);
+  }
 }
 
 }  // namespace

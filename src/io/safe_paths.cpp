@@ -88,13 +88,13 @@ void require_safe_output_folder(const fs::path& dir, const std::vector<std::stri
   if (!fs::is_directory(s)) {
     throw InputError(dir.string(), key, "is " + kind_of(s) + "; expected a folder");
   }
-  for (const fs::path& input : tracked_inputs()) {
-    if (!fs::equivalent(input.parent_path(), dir, ec) || ec) continue;
-    const std::string stem = input.stem().string();
+  // A product's name already taken by a folder, FIFO or device, or by one
+  // of the run's inputs: refused now rather than when the finished products
+  // are moved in.
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string stem = entry.path().stem().string();
     if (std::find(product_stems.begin(), product_stems.end(), stem) != product_stems.end()) {
-      throw InputError(dir.string(), key,
-                       "the run would replace its own input " + input.string() +
-                           "; write the outputs to another folder");
+      require_safe_output_file(entry.path(), key);
     }
   }
 }

@@ -1,11 +1,13 @@
 #include "ris/scene/scene.h"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <unistd.h>
 
 #include <cmath>
 
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris {
 
@@ -48,11 +50,20 @@ void check_scene_fits_in_memory(std::int64_t rows, std::int64_t cols, const std:
   const double physical = (pages > 0 && page_size > 0) ? double(pages) * double(page_size) : 8e9;
   const double limit = physical / 2.0;
   const double estimate = double(rows) * double(cols) * double(Scene::bytes_per_cell());
+  if (estimate > limit && resource_limits_disabled()) {
+    spdlog::warn(
+        "{}: '{}': a {} x {} grid needs about {:.1f} GiB, above half of physical memory "
+        "({:.1f} GiB); going on (RIS_NO_RESOURCE_LIMITS)",
+        source, key, cols, rows, estimate / 1073741824.0, limit / 1073741824.0);
+    return;
+  }
   if (estimate > limit) {
-    throw InputError(source, key,
-                     fmt::format("a {} x {} grid needs about {:.1f} GiB for the scene alone; "
-                                 "refusing (limit {:.1f} GiB, half of physical memory)",
-                                 cols, rows, estimate / 1073741824.0, limit / 1073741824.0));
+    throw InputError(
+        source, key,
+        fmt::format("a {} x {} grid needs about {:.1f} GiB for the scene alone; "
+                    "refusing (limit {:.1f} GiB, half of physical memory; RIS_NO_RESOURCE_LIMITS=1 "
+                    "tries anyway)",
+                    cols, rows, estimate / 1073741824.0, limit / 1073741824.0));
   }
 }
 

@@ -83,8 +83,8 @@ void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene
   const SlarImage& b = sim.bscope;
   const PpiScopeGrid& sg = sim.scope_grid;
   const int png_level = png_compression_level(info.compression);
-  const GeoTiffCompression float_tif = geotiff_compression(info.compression, true);
-  const GeoTiffCompression int_tif = geotiff_compression(info.compression, false);
+  const GeoTiffCompression float_tif = product_tiff_settings(info, true);
+  const GeoTiffCompression int_tif = product_tiff_settings(info, false);
   const RasterMetadata bmeta = {{"RIS_ROWS", "rays, clockwise from the scan start"},
                                 {"RIS_COLUMNS", "slant-range bins, near first"},
                                 {"RIS_NEAR_SLANT_RANGE_M", fmt::format("{:.6f}", b.range.near_m)},

@@ -100,6 +100,7 @@ SlarRunInfo run_info(const RunRequest& r, const std::string& backscatter_path) {
                    r.threads > 0 ? r.threads : omp_get_max_threads()};
   info.products = r.products;
   info.compression = r.compression;
+  info.overviews = r.overviews;
   return info;
 }
 

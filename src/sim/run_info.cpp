@@ -20,4 +20,10 @@ void check_product_selection(const ProductSelection& selection,
   }
 }
 
+GeoTiffCompression product_tiff_settings(const SlarRunInfo& info, bool floating_point) {
+  GeoTiffCompression c = geotiff_compression(info.compression, floating_point);
+  c.overviews = info.overviews;
+  return c;
+}
+
 }  // namespace ris

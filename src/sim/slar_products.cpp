@@ -75,7 +75,7 @@ SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img) {
   if (file == "mean_power_slant.tif")
     return {slant_meta("mean power before speckle", "W"), "mean_power_w", nan, false};
   if (file == "speckled_power_slant.tif")
-    return {slant_meta("power after fading", "W"), "speckled_power_w", std::nullopt, false};
+    return {slant_meta("power after fading", "W"), "speckled_power_w", nan, false};
   if (file == "mask_slant.tif")
     return {slant_meta("mask: 1 shadow, 2 layover, 4 no data", "bits"), "mask", std::nullopt,
             false};
@@ -257,8 +257,8 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
   const SlarImage& img = sim.image;
   const ProductSelection& want = info.products;
   const int png_level = png_compression_level(info.compression);
-  const GeoTiffCompression float_tif = geotiff_compression(info.compression, true);
-  const GeoTiffCompression int_tif = geotiff_compression(info.compression, false);
+  const GeoTiffCompression float_tif = product_tiff_settings(info, true);
+  const GeoTiffCompression int_tif = product_tiff_settings(info, false);
   // One task per file, run concurrently (each opens its own GDAL dataset),
   // the largest first; every file is complete before the folder commits.
   std::vector<std::function<void()>> tasks;

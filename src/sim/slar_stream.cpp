@@ -8,10 +8,12 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "ris/backscatter/sigma0_lut.h"
@@ -79,7 +81,11 @@ struct SceneSummary {
   FloatRankSelect elevation;       // pass 1 of the median elevation
 };
 
-SceneSummary summarise_scene(const SceneStreamReader& in, int block_rows, ProgressBar& bar) {
+// on_new_category(c, row, col): called at the first cell of each category,
+// so a category the backscatter source lacks stops the run there rather
+// than after the whole pass.
+SceneSummary summarise_scene(const SceneStreamReader& in, int block_rows, ProgressBar& bar,
+                             const std::function<void(std::uint16_t, int, int)>& on_new_category) {
   const Scene& g = in.grid();
   SceneSummary s;
   std::vector<std::uint8_t> seen(65536, 0);
@@ -97,6 +103,10 @@ SceneSummary summarise_scene(const SceneStreamReader& in, int block_rows, Progre
         continue;
       }
       ++s.valid_cells;
+      if (seen[cat[i]] == 0) {
+        on_new_category(cat[i], r0 + static_cast<int>(i / sz(g.cols)),
+                        static_cast<int>(i % sz(g.cols)));
+      }
       seen[cat[i]] = 1;
       const float h = z[i];
       if (h < s.h_min) s.h_min = h;
@@ -180,7 +190,17 @@ class StreamRun {
     bar_.emplace("simulate (streamed)", 3 * std::int64_t(grid().rows) * grid().cols, "cells",
                  options_.quiet);
     stage("scene statistics");
-    ss_ = summarise_scene(in_, scene_block_rows_, *bar_);
+    // Every category checked against the backscatter source at its first
+    // cell (a scene of one undefined category fails at once, not after the
+    // pass).
+    ss_ = summarise_scene(in_, scene_block_rows_, *bar_, [&](std::uint16_t c, int row, int col) {
+      if (c == kNoDataCategory || sigma0.has_category(c)) return;
+      throw InputError(backscatter_file_, "",
+                       fmt::format("no backscatter for category {} (the scene {} uses it, "
+                                   "first at row {}, column {}; add it to the backscatter "
+                                   "file or give another with --backscatter)",
+                                   c, in_.path(), row, col));
+    });
     stage_done();
     set_up_stages(sigma0);
     dir_.emplace(out_dir_);
@@ -277,8 +297,8 @@ class StreamRun {
     const SlarRasterSpec spec = slar_raster_spec(file, sim().image);
     return std::make_unique<GeoTiffBlockWriter<T>>(
         dir_->path(file), cols, rows, std::vector<std::string>{spec.band},
-        spec.georeferenced ? &georef_ : nullptr, spec.nodata, spec.metadata, GeoTiffCompression{},
-        order);
+        spec.georeferenced ? &georef_ : nullptr, spec.nodata, spec.metadata,
+        product_tiff_settings(info_, std::is_floating_point_v<T>), order);
   }
 
   // ---- Pass 1: lines in blocks through the line engine ------------------

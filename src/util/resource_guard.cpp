@@ -20,6 +20,26 @@ namespace {
 
 constexpr const char* kNoLimitsEnv = "RIS_NO_RESOURCE_LIMITS";
 constexpr const char* kMaxThreadsEnv = "RIS_MAX_THREADS";
+constexpr const char* kMaxMemoryEnv = "RIS_MAX_MEMORY_MB";
+constexpr const char* kMaxDiskEnv = "RIS_MAX_DISK_MB";
+
+// A ceiling in MiB from the environment, in bytes; -1 when unset.
+std::int64_t env_cap_bytes(const char* name) {
+  const char* env = std::getenv(name);
+  if (env == nullptr || *env == '\0') return -1;
+  char* end = nullptr;
+  const long long mb = std::strtoll(env, &end, 10);
+  if (end == env || *end != '\0' || mb < 1 || mb > (1LL << 40)) {
+    throw InputError("", name, fmt::format("expected a whole number of MiB >= 1, got \"{}\"", env));
+  }
+  return mb * 1024 * 1024;
+}
+
+// What the machine has, lowered to the environment's ceiling when set.
+std::int64_t capped(std::int64_t have, const char* env_name) {
+  const std::int64_t cap = env_cap_bytes(env_name);
+  return cap > 0 ? std::min(cap, have) : have;
+}
 
 int core_count() {
   const unsigned n = std::thread::hardware_concurrency();
@@ -135,12 +155,13 @@ bool resource_limits_disabled() {
 
 void require_memory(std::int64_t bytes, const std::string& file, const std::string& key,
                     const std::string& what) {
-  require(bytes, available_memory_bytes(), file, key, what, "memory");
+  require(bytes, capped(available_memory_bytes(), kMaxMemoryEnv), file, key, what, "memory");
 }
 
 void require_disk(std::int64_t bytes, const fs::path& out, const std::string& file,
                   const std::string& key, const std::string& what) {
-  require(bytes, free_disk_bytes(out), file, key, what, "disk at " + out.string());
+  require(bytes, capped(free_disk_bytes(out), kMaxDiskEnv), file, key, what,
+          "disk at " + out.string());
 }
 
 std::string format_bytes(std::int64_t bytes) {

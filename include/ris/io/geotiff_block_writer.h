@@ -48,7 +48,24 @@ struct GeoTiffCompression {
   int level = 1;                // ZLEVEL= (DEFLATE) or ZSTD_LEVEL= (ZSTD)
   int predictor = 1;            // PREDICTOR= (1 none, 2 integer, 3 floating point)
   bool all_threads = true;      // NUM_THREADS=ALL_CPUS
+  // Internal overviews (halvings down to ~256 pixels a side) when the raster
+  // has at least kOverviewMinPixels, so a GIS opens a large product at any
+  // zoom without reading it whole: averaged for power (RIS_UNITS W), nearest
+  // for everything else (masks, categories, greytones, angles). `ris
+  // simulate --no-overviews` turns them off.
+  bool overviews = true;
 };
+
+// 4096 x 4096: smaller rasters open quickly without overviews.
+inline constexpr long long kOverviewMinPixels = 4096LL * 4096LL;
+
+// The unit a band declares (GDAL's unit type, which QGIS and rasterio show),
+// so every product carries one without each writer naming it: a single
+// band takes the file's RIS_UNITS metadata; otherwise the description's
+// suffix says it ("elevation_m" -> m, "mean_power_w" -> W, "..._deg" ->
+// deg, "..._db" -> dB); a mask's bits are "bits", a greytone "greytone", a
+// category id none ("").
+std::string band_unit(const std::string& description, const RasterMetadata& metadata, int bands);
 
 template <typename T>
 class GeoTiffBlockWriter {

@@ -39,8 +39,9 @@ void require_regular_input(const std::string& path, const std::string& key = "")
 void require_safe_output_file(const std::filesystem::path& path, const std::string& key = "");
 
 // The same for an output folder: InputError when it exists and is not a
-// folder, or when a recorded input lies directly in it under one of the
-// names the run will write (stems: file names without extension).
+// folder, when it holds something other than a regular file under one of
+// the names the run will write (stems: file names without extension), or
+// when a recorded input lies directly in it under such a name.
 void require_safe_output_folder(const std::filesystem::path& dir,
                                 const std::vector<std::string>& product_stems,
                                 const std::string& key = "");

@@ -70,6 +70,7 @@ struct RunRequest {
   // Which products and how compressed (ris/sim/run_info.h).
   ProductSelection products;
   CompressionPreset compression = CompressionPreset::fast;
+  bool overviews = true;  // internal overviews on large products
 
   // A run on a real acquisition's radar grid instead of a scene
   // (ris/sim/acquisition_simulation.h; scene_path is not read): the product

@@ -43,6 +43,12 @@ struct SlarRunInfo {
   std::int64_t max_png_pixels = kMaxPngPixels;
   ProductSelection products = {};
   CompressionPreset compression = CompressionPreset::fast;
+  // Internal overviews on large GeoTIFF products (`--no-overviews`: off).
+  bool overviews = true;
 };
+
+// The GeoTIFF settings of a run's products: its compression preset for
+// floating-point or integer samples, with overviews unless turned off.
+GeoTiffCompression product_tiff_settings(const SlarRunInfo& info, bool floating_point);
 
 }  // namespace ris

@@ -5,8 +5,10 @@
 
 namespace ris {
 
-// The data folder: $RIS_DATA when set and non-empty (installed copies, tests
-// of relocated data), else the source tree's data/ folder compiled in.
+// The data folder: $RIS_DATA when set and non-empty (tests of relocated
+// data); else <prefix>/share/ris/data when the running executable is
+// <prefix>/bin/ris and that folder exists (`cmake --install`); else the
+// source tree's data/ folder compiled in (a build tree).
 std::filesystem::path data_dir();
 
 }  // namespace ris

@@ -8,6 +8,9 @@
 // allocation or long loop. A refusal is an InputError naming the key, the
 // estimate and the limit, and how to raise the limit:
 //   RIS_MAX_THREADS=N            allow up to N threads (default 4x cores)
+//   RIS_MAX_MEMORY_MB=N          allow at most N MiB of memory, or
+//   RIS_MAX_DISK_MB=N            of disk, below what is available (a
+//                                shared machine; tests)
 //   RIS_NO_RESOURCE_LIMITS=1     skip the memory, disk and work checks
 //                                (warn instead; for a machine with swap or
 //                                a disk that std::filesystem cannot see)
@@ -58,8 +61,9 @@ std::int64_t free_disk_bytes(const std::filesystem::path& path);
 // Whether $RIS_NO_RESOURCE_LIMITS is set (checks warn instead of refusing).
 bool resource_limits_disabled();
 
-// InputError (file, key) when `bytes` exceed the available memory; what:
-// what the memory is for. Warns instead when the limits are off.
+// InputError (file, key) when `bytes` exceed the available memory (or
+// $RIS_MAX_MEMORY_MB when lower); what: what the memory is for. Warns
+// instead when the limits are off.
 void require_memory(std::int64_t bytes, const std::string& file, const std::string& key,
                     const std::string& what);
 // InputError when `bytes` exceed the free disk at `out`.
