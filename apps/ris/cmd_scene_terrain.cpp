@@ -27,6 +27,7 @@
 #include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
 #include "ris/util/error.h"
+#include "ris/util/path_exists.h"
 #include "ris/util/progress.h"
 #include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
@@ -80,7 +81,7 @@ void say_default_category(const std::string& library) {
 // not needed (ids only).
 std::map<std::string, std::uint16_t> names_if_present(const std::string& library,
                                                       bool explicit_library) {
-  if (explicit_library || std::filesystem::exists(library)) {
+  if (explicit_library || ris::path_exists(library)) {
     return ris::read_category_names(library);
   }
   return {};

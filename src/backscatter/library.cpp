@@ -14,6 +14,7 @@
 #include "ris/io/config_table.h"
 #include "ris/util/data_dir.h"
 #include "ris/util/error.h"
+#include "ris/util/path_exists.h"
 
 namespace ris {
 
@@ -236,7 +237,7 @@ std::unique_ptr<Sigma0Source> load_library(const std::string& path) {
 
 std::unique_ptr<Sigma0Source> load_sigma0_source(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
-  if (!std::filesystem::exists(path)) {
+  if (!path_exists(path)) {
     throw InputError(path, "", "backscatter file not found");
   }
   if (ext == ".csv") {

@@ -8,6 +8,7 @@
 
 #include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
+#include "ris/util/path_exists.h"
 
 namespace ris {
 
@@ -70,7 +71,7 @@ void write_text_file_atomic(const fs::path& path, const std::string& text) {
 
 StagedDirectory::StagedDirectory(fs::path final_dir) : final_(std::move(final_dir)) {
   if (final_.empty()) final_ = ".";
-  if (fs::exists(final_) && !fs::is_directory(final_)) {
+  if (path_exists(final_) && !fs::is_directory(final_)) {
     throw InputError(final_.string(), "", "the output path exists and is not a folder");
   }
   fs::path parent = fs::absolute(final_).parent_path();

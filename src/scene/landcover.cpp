@@ -17,6 +17,7 @@
 #include "ris/io/gdal_util.h"
 #include "ris/util/data_dir.h"
 #include "ris/util/error.h"
+#include "ris/util/path_exists.h"
 
 namespace ris {
 
@@ -33,7 +34,7 @@ fs::path resolve_library(const std::string& library, const fs::path& mapping_pat
   const fs::path p(library);
   if (p.is_absolute()) return p;
   const fs::path beside = mapping_path.parent_path() / p;
-  if (fs::exists(beside)) return beside;
+  if (path_exists(beside)) return beside;
   return data_dir() / p;
 }
 
@@ -41,7 +42,7 @@ fs::path resolve_library(const std::string& library, const fs::path& mapping_pat
 // keys are read: the models are the backscatter library's business).
 std::map<std::string, std::uint16_t> library_names(const fs::path& library,
                                                    const std::string& mapping_file) {
-  if (!fs::exists(library)) {
+  if (!path_exists(library)) {
     throw InputError(mapping_file, "mapping.library",
                      "the category library " + library.string() + " does not exist");
   }
@@ -52,7 +53,7 @@ std::map<std::string, std::uint16_t> library_names(const fs::path& library,
 
 std::map<std::string, std::uint16_t> read_category_names(const fs::path& library) {
   const std::string lib = library.string();
-  if (!fs::exists(library)) throw InputError(lib, "", "no such category library");
+  if (!path_exists(library)) throw InputError(lib, "", "no such category library");
   toml::table doc = parse_toml_file(lib);
   std::map<std::string, std::uint16_t> names;
   const toml::array* cats = doc["category"].as_array();
@@ -121,7 +122,7 @@ std::int64_t parse_code(const std::string& text, const std::string& file) {
 
 LandCoverMapping read_landcover_mapping(const fs::path& path) {
   const std::string file = path.string();
-  if (!fs::exists(path)) throw InputError(file, "", "no such file");
+  if (!path_exists(path)) throw InputError(file, "", "no such file");
   toml::table doc = parse_toml_file(file);
   ConfigTable root(doc, file, "");
   LandCoverMapping m;

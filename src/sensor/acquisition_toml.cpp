@@ -26,6 +26,7 @@
 #include "ris/sensor/acquisition.h"
 #include "ris/sensor/generated_orbit.h"
 #include "ris/util/error.h"
+#include "ris/util/path_exists.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -134,7 +135,7 @@ Acquisition read_acquisition_toml(const std::filesystem::path& path) {
 }
 
 Acquisition read_acquisition(const std::filesystem::path& path, const AcquisitionOptions& options) {
-  if (!std::filesystem::exists(path)) {
+  if (!path_exists(path)) {
     throw InputError(path.string(), "", "no such file or folder");
   }
   std::string ext = path.extension().string();

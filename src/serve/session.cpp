@@ -22,6 +22,7 @@
 #include "ris/serve/radar_overrides.h"
 #include "ris/serve/run_views.h"
 #include "ris/util/error.h"
+#include "ris/util/path_exists.h"
 
 namespace ris {
 namespace {
@@ -413,7 +414,7 @@ nlohmann::json Session::write_products() {
   std::lock_guard lock(mutex_);
   std::filesystem::create_directories(inputs_.out_dir);
   const std::filesystem::path dir = inputs_.out_dir / fmt::format("products-run{}", run_id_);
-  if (!std::filesystem::exists(dir)) write_run_products(result_, dir);
+  if (!path_exists(dir)) write_run_products(result_, dir);
   products_.clear();
   nlohmann::json names = nlohmann::json::array();
   for (const auto& e : std::filesystem::directory_iterator(dir)) {

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "ris/util/error.h"
+#include "ris/util/path_exists.h"
 
 namespace ris {
 
@@ -140,7 +141,7 @@ std::int64_t available_memory_bytes() {
 
 std::int64_t free_disk_bytes(const fs::path& path) {
   fs::path p = fs::absolute(path);
-  while (!p.empty() && !fs::exists(p) && p != p.parent_path()) p = p.parent_path();
+  while (!p.empty() && !path_exists(p) && p != p.parent_path()) p = p.parent_path();
   std::error_code ec;
   const fs::space_info s = fs::space(p, ec);
   if (ec) return std::numeric_limits<std::int64_t>::max();  // unknown: do not refuse

@@ -23,6 +23,7 @@
 #include "backscatter/models/models.h"
 #include "ris/backscatter/sigma0_table.h"
 #include "ris/util/error.h"
+#include "ris/util/path_exists.h"
 
 namespace ris::detail {
 namespace {
@@ -79,7 +80,7 @@ std::unique_ptr<BackscatterModel> make_table_model(ConfigTable& params, const Mo
     if (it != ctx.table_cache->end()) table = it->second;
   }
   if (!table) {
-    if (!std::filesystem::exists(path)) {
+    if (!path_exists(path)) {
       params.fail("file",
                   fmt::format("table file \"{}\" not found (resolved to {})", file, resolved));
     }
