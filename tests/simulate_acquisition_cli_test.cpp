@@ -69,6 +69,11 @@ TEST(SimulateAcquisitionCli, BadCombinationsNameTheOption) {
                     test::test_dem("winnipeg_dem.tif") + " --stream --out " + (tmp / "c").string());
   EXPECT_NE(streamed.exit_code, 0);
   EXPECT_NE(streamed.output.find("--stream"), std::string::npos) << streamed.output;
+  const auto dem_alone = test::run_ris("simulate --dem " + test::test_dem("winnipeg_dem.tif") +
+                                       " --out " + (tmp / "d").string());
+  EXPECT_NE(dem_alone.exit_code, 0);
+  EXPECT_NE(dem_alone.output.find("--acquisition"), std::string::npos) << dem_alone.output;
+  EXPECT_FALSE(std::filesystem::exists(tmp / "d"));
   EXPECT_FALSE(std::filesystem::exists(tmp / "a"));
   EXPECT_FALSE(std::filesystem::exists(tmp / "b"));
   EXPECT_FALSE(std::filesystem::exists(tmp / "c"));

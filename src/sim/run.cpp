@@ -196,6 +196,11 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
     res.seconds = seconds_since(t0);
     return res;
   }
+  if (!r.dem_path.empty() || r.full_grid) {
+    throw InputError(r.dem_path, r.full_grid ? "--full-grid" : "--dem",
+                     "goes with --acquisition (a run on a product's radar grid); a scene run "
+                     "reads its terrain from --scene");
+  }
   if (should_stream(r, cb)) {
     run_streamed(r, cb, res);
     res.seconds = seconds_since(t0);
