@@ -69,6 +69,20 @@ TEST(SimulateAcquisitionCli, BadCombinationsNameTheOption) {
                     test::test_dem("winnipeg_dem.tif") + " --stream --out " + (tmp / "c").string());
   EXPECT_NE(streamed.exit_code, 0);
   EXPECT_NE(streamed.output.find("--stream"), std::string::npos) << streamed.output;
+  const auto dem_alone = test::run_ris("simulate --dem " + test::test_dem("winnipeg_dem.tif") +
+                                       " --out " + (tmp / "d").string());
+  EXPECT_NE(dem_alone.exit_code, 0);
+  EXPECT_NE(dem_alone.output.find("--acquisition"), std::string::npos) << dem_alone.output;
+  EXPECT_FALSE(std::filesystem::exists(tmp / "d"));
+  // Land cover needs a scene with a CRS (the standard scene has none).
+  const auto no_crs = test::run_ris("simulate -a " + test::winnipeg_h5() + " --dem " +
+                                    test::test_dem("winnipeg_dem.tif") + " --land-cover " +
+                                    std::string(test::data_dir()) + "/scenes/ku-geometric.toml" +
+                                    " --out " + (tmp / "e").string());
+  EXPECT_NE(no_crs.exit_code, 0);
+  EXPECT_NE(no_crs.output.find("ku-geometric.toml"), std::string::npos) << no_crs.output;
+  EXPECT_NE(no_crs.output.find("no CRS"), std::string::npos) << no_crs.output;
+  EXPECT_FALSE(std::filesystem::exists(tmp / "e"));
   EXPECT_FALSE(std::filesystem::exists(tmp / "a"));
   EXPECT_FALSE(std::filesystem::exists(tmp / "b"));
   EXPECT_FALSE(std::filesystem::exists(tmp / "c"));

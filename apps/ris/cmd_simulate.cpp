@@ -202,6 +202,9 @@ void add_simulate(CLI::App& app) {
   cmd->add_option("--dem", r.dem_path,
                   "With --acquisition: the DEM imaged (geographic WGS 84; geoid heights "
                   "converted where PROJ can)");
+  cmd->add_option("--land-cover", r.land_cover_path,
+                  "With --acquisition: a ris scene (.toml or raster, projected CRS) whose "
+                  "categories the DEM's terrain takes (nearest cell)");
   cmd->add_option("--category", r.category,
                   "With --acquisition: the backscatter category of the DEM's terrain")
       ->capture_default_str();

@@ -18,6 +18,16 @@ ZeroDopplerFrame frame_of_line(const Acquisition& acq, int grid_line) {
 }
 }  // namespace
 
+std::uint16_t AcquisitionRun::category_at(double lat_rad, double lon_rad) const {
+  if (dem_category == nullptr) return category;
+  const long r = std::clamp(std::lround((lat_rad - dem.lat0_rad) / dem.dlat_rad), 0L,
+                            static_cast<long>(dem.rows - 1));
+  const long c = std::clamp(std::lround((lon_rad - dem.lon0_rad) / dem.dlon_rad), 0L,
+                            static_cast<long>(dem.cols - 1));
+  return dem_category[static_cast<std::size_t>(r) * static_cast<std::size_t>(dem.cols) +
+                      static_cast<std::size_t>(c)];
+}
+
 ProfileSpan AcquisitionRun::span_of_line(const ZeroDopplerFrame& f) const {
   const RadarGrid& g = acq.grid;
   const Ellipsoid& e = acq.ellipsoid;
@@ -149,7 +159,7 @@ LineSpan AcquisitionLineSource::load(int line, LineScratch& s) {
         std::atan2(std::sqrt(std::max(0.0, 1.0 - cos_local * cos_local)), cos_local));
     s.area[k] =
         static_cast<float>(0.5 * std::abs(du_prev + du_next) * az_per_radius * x.norm() * n_len);
-    s.category[k] = run.category;
+    s.category[k] = run.category_at(lat, lon);
   }
   return {0, static_cast<int>(n), run.layout};
 }

@@ -46,6 +46,8 @@ struct AcquisitionRun {
   GridWindow window;
   EarthModel earth = EarthModel::ellipsoid;
   std::uint16_t category = 0;
+  // Land cover on the DEM's postings (rows x cols), or null: `category`.
+  const std::uint16_t* dem_category = nullptr;
   double dem_min_m = 0.0, dem_max_m = 0.0;  // the DEM's height range
   int samples_per_bin = 3;                  // profile points per range bin
   std::size_t max_points = 0;               // the scratch's capacity
@@ -53,6 +55,8 @@ struct AcquisitionRun {
   float* local_incidence_deg = nullptr;     // window lines x bins
   std::uint8_t* mask = nullptr;             // TopoMask bits, window lines x bins
 
+  // The category at a latitude/longitude (radians): the nearest posting's.
+  std::uint16_t category_at(double lat_rad, double lon_rad) const;
   // The profile's ray look angles for a line and its point count.
   ProfileSpan span_of_line(const ZeroDopplerFrame& f) const;
 };

@@ -82,7 +82,9 @@ json acquisition_metadata(const AcquisitionSimulation& a, const SlarSimulation& 
         {"vertical", a.dem_vertical_note},
         {"height_min_m", a.dem_min_m},
         {"height_max_m", a.dem_max_m},
-        {"category", a.category}}},
+        {"category", a.category},
+        {"land_cover", a.land_cover_source.empty() ? nlohmann::json(nullptr)
+                                                   : nlohmann::json(a.land_cover_source)}}},
       {"radar", radar_to_json(sim.radar)},
       {"backscatter",
        {{"path", info.backscatter_path}, {"description", sim.backscatter_description}}},

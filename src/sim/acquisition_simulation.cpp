@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "ris/backscatter/sigma0_lut.h"
+#include "ris/scene/geo_frame.h"
 #include "ris/sim/radiometry_setup.h"
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/sim/slar_run_setup.h"
@@ -33,6 +34,28 @@ Scene dem_grid(const EllipsoidalDem& dem, const Ellipsoid& e) {
   grid.dx_m = std::abs(dem.dlon_rad) * e.prime_vertical_radius_m(lat) * std::cos(lat);
   grid.dy_m = std::abs(dem.dlat_rad) * e.meridional_radius_m(lat);
   return grid;
+}
+
+// The land cover's category at each DEM posting: the scene cell nearest
+// it (PROJ from latitude/longitude into the scene's CRS), or `fallback`
+// outside the scene and on its no-data cells. Serial, before the parallel
+// run: a point PROJ cannot transform throws here, naming the scene.
+std::vector<std::uint16_t> categories_on_dem(const EllipsoidalDem& dem, const Scene& scene,
+                                             const std::string& source, std::uint16_t fallback) {
+  const GeoFrame frame(scene.crs_wkt, source);
+  std::vector<std::uint16_t> out(dem.height_m.size(), fallback);
+  for (int r = 0; r < dem.rows; ++r) {
+    for (int c = 0; c < dem.cols; ++c) {
+      const auto [x, y] = frame.scene_from_lonlat(rad_to_deg(dem.lon0_rad + c * dem.dlon_rad),
+                                                  rad_to_deg(dem.lat0_rad + r * dem.dlat_rad));
+      const auto [col_f, row_f] = scene.grid_from_world(x, y);
+      const int sr = static_cast<int>(std::floor(row_f)), sc = static_cast<int>(std::floor(col_f));
+      if (!scene.contains(sr, sc) || scene.valid[scene.index(sr, sc)] == 0) continue;
+      out[static_cast<std::size_t>(r) * static_cast<std::size_t>(dem.cols) +
+          static_cast<std::size_t>(c)] = scene.category[scene.index(sr, sc)];
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -103,8 +126,19 @@ AcquisitionSimulation simulate_acquisition(const Acquisition& acq, const Ellipso
   // The engine's layout: the window's lines, the profile's points as samples.
   std::vector<float> local_deg(w.size());
   std::vector<std::uint8_t> mask(w.size());
-  detail::AcquisitionRun run{
-      acq, dem, w, options.earth, options.category, h_min, h_max, options.samples_per_bin};
+  detail::AcquisitionRun run{acq,     dem,   w,     options.earth,          options.category,
+                             nullptr, h_min, h_max, options.samples_per_bin};
+  std::vector<std::uint16_t> dem_category;
+  std::vector<std::uint16_t> categories{options.category};
+  if (options.land_cover != nullptr) {
+    dem_category =
+        categories_on_dem(dem, *options.land_cover, options.land_cover_source, options.category);
+    categories = dem_category;
+    std::sort(categories.begin(), categories.end());
+    categories.erase(std::unique(categories.begin(), categories.end()), categories.end());
+    run.dem_category = dem_category.data();
+    out.land_cover_source = options.land_cover_source;
+  }
   out.profile_points = detail::acquisition_max_points(run);
   run.max_points = out.profile_points;
   SlarGeometry& layout = sim.geometry;
@@ -122,8 +156,8 @@ AcquisitionSimulation simulate_acquisition(const Acquisition& acq, const Ellipso
   // noise.
   const std::string backscatter_file =
       options.backscatter_file.empty() ? sigma0.description() : options.backscatter_file;
-  RadiometrySetup rs = prepare_radiometry(std::vector<std::uint16_t>{options.category}, sim.radar,
-                                          sim.derived, sigma0, backscatter_file);
+  RadiometrySetup rs =
+      prepare_radiometry(categories, sim.radar, sim.derived, sigma0, backscatter_file);
   SlarImagingParams& imaging = rs.imaging;
   imaging.range.near_m = g.range_of_bin(w.bin0);
   imaging.range.bin_m = g.range_spacing_m;

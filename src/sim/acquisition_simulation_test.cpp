@@ -13,6 +13,7 @@
 #include "acquisition_test_dems.h"
 #include "ris/backscatter/library.h"
 #include "ris/geometry/topo.h"
+#include "ris/scene/geo_frame.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/util/units.h"
 #include "sim/acquisition_lines.h"
@@ -83,6 +84,48 @@ TEST(AcquisitionSimulation, WinnipegOnTheProductGridAgreesWithTopo) {
   for (std::size_t i = 0; i < t.mask.size(); ++i) EXPECT_EQ(s.layover_shadow_mask[i], t.mask[i]);
 }
 
+// Land cover: a UTM scene over Winnipeg, category 1 west of the grid's
+// centre and 2 east of it. Pixels whose ground lies well west of the split have the
+// power of an all-1 run, those well east of it the power of an all-2 run
+// (the same terrain points, only sigma0 changes).
+TEST(AcquisitionSimulation, LandCoverGivesEachPointItsCategory) {
+  const Acquisition a = read_acquisition(test::winnipeg_h5());
+  const EllipsoidalDem dem = read_ellipsoidal_dem(test::test_dem("winnipeg_dem.tif"));
+  // Split at the ground of the grid's centre pixel.
+  const TopoLayers t = compute_topo(a, dem, {});
+  const double lon_c = t.lon_deg[125 * 250 + 125], lat_c = t.lat_deg[125 * 250 + 125];
+  Scene cover = Scene::flat(400, 400, 25.0, 0.0f, 1);
+  cover.crs_wkt = utm_wkt_for(lon_c, lat_c);
+  const GeoFrame frame(cover.crs_wkt, "test");
+  const auto [xc, yc] = frame.scene_from_lonlat(lon_c, lat_c);
+  cover.origin_x_m = xc - 5000.0;
+  cover.origin_y_m = yc + 5000.0;
+  for (int r = 0; r < cover.rows; ++r)
+    for (int c = 200; c < cover.cols; ++c) cover.category[cover.index(r, c)] = 2;
+  const auto run = [&](std::uint16_t category, const Scene* land_cover) {
+    AcquisitionSimOptions o;
+    o.category = category;
+    o.land_cover = land_cover;
+    o.land_cover_source = "test";
+    return simulate_acquisition(a, dem, seed_radar(), *standard_library(), o);
+  };
+  const AcquisitionSimulation mixed = run(1, &cover), one = run(1, nullptr), two = run(2, nullptr);
+  EXPECT_EQ(mixed.sim.categories, (std::vector<std::uint16_t>{1, 2}));
+  std::size_t west = 0, east = 0, wrong = 0;
+  for (std::size_t i = 0; i < t.lat_deg.size(); ++i) {
+    const double x = frame.scene_from_lonlat(t.lon_deg[i], t.lat_deg[i]).first - xc;
+    if (std::abs(x) < 100.0 || std::abs(x) > 4800.0) continue;
+    const float want = x < 0.0 ? one.sim.image.mean_power_w[i] : two.sim.image.mean_power_w[i];
+    (x < 0.0 ? west : east) += 1;
+    wrong += std::abs(mixed.sim.image.mean_power_w[i] - want) > 1e-5f * want;
+  }
+  std::printf("land cover: %zu pixels west, %zu east of the split, %zu with the other's power\n",
+              west, east, wrong);
+  EXPECT_GT(west, 5000U);
+  EXPECT_GT(east, 5000U);
+  EXPECT_EQ(wrong, 0U);
+}
+
 // A steep ridge (60-degree slopes) under the airborne example: layover
 // before the crest and shadow behind it as in ris topo's mask, and the
 // image dark there. Where the two masks differ, topo has no ground for the
@@ -140,7 +183,7 @@ struct SourceLine {
 };
 SourceLine load_line(const Acquisition& a, const EllipsoidalDem& dem, EarthModel earth, int line) {
   const GridWindow w{0, a.grid.lines, 0, a.grid.bins};
-  detail::AcquisitionRun run{a, dem, w, earth, 1, 230.0, 230.0, 3};
+  detail::AcquisitionRun run{a, dem, w, earth, 1, nullptr, 230.0, 230.0, 3};
   run.max_points = detail::acquisition_max_points(run);
   SlarGeometry layout;
   layout.samples = static_cast<int>(run.max_points);

@@ -209,6 +209,12 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   o.earth = r.earth ? *r.earth : res.radar.earth.value_or(EarthModel::ellipsoid);
   o.category = r.category;
   o.full_grid = r.full_grid;
+  std::optional<Scene> land_cover;
+  if (!r.land_cover_path.empty()) {
+    land_cover = load_scene_source(r.land_cover_path).scene;
+    o.land_cover = &*land_cover;
+    o.land_cover_source = r.land_cover_path;
+  }
   o.backscatter_file = sigma0.path;
   if (cb.progress) cb.progress("geometry + image formation on the acquisition's grid", 0.1);
   auto a = std::make_shared<AcquisitionSimulation>(
@@ -240,6 +246,14 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
     if (cb.progress) cb.progress("done", 1.0);
     res.seconds = seconds_since(t0);
     return res;
+  }
+  if (!r.dem_path.empty() || r.full_grid || !r.land_cover_path.empty()) {
+    throw InputError(r.dem_path,
+                     r.full_grid                  ? "--full-grid"
+                     : !r.land_cover_path.empty() ? "--land-cover"
+                                                  : "--dem",
+                     "goes with --acquisition (a run on a product's radar grid); a scene run "
+                     "reads its terrain from --scene");
   }
   if (should_stream(r, cb)) {
     run_streamed(r, cb, res);

@@ -43,9 +43,15 @@ struct AcquisitionSimOptions {
   // The backscatter category of every DEM cell (a DEM has no land cover);
   // 1 is wheat stubble in the default library (data/backscatter/ku-geometric.toml).
   std::uint16_t category = 1;
-  bool full_grid = false;        // false: the window of the grid the DEM covers (as ris topo)
-  int samples_per_bin = 3;       // terrain profile points per range bin (as ris topo's mask)
-  std::string backscatter_file;  // named in messages
+  // Land cover (optional): a ris scene in a projected CRS whose categories
+  // the terrain takes, the scene cell nearest each DEM posting (postings
+  // outside the scene or on its no-data cells take `category`). The heights
+  // stay the DEM's.
+  const Scene* land_cover = nullptr;
+  std::string land_cover_source;  // named in messages and metadata
+  bool full_grid = false;         // false: the window of the grid the DEM covers (as ris topo)
+  int samples_per_bin = 3;        // terrain profile points per range bin (as ris topo's mask)
+  std::string backscatter_file;   // named in messages
 };
 
 struct AcquisitionSimulation {
@@ -53,6 +59,7 @@ struct AcquisitionSimulation {
   GridWindow window;   // of the acquisition's grid
   EarthModel earth = EarthModel::ellipsoid;
   std::uint16_t category = 0;
+  std::string land_cover_source;  // empty: one category for the whole DEM
   // Radar-grid layers (window lines x bins, as ris topo's): the local
   // incidence of the terrain nearest each bin's centre (degrees; NaN where
   // no terrain) and the layover/shadow mask (TopoMask bits).

@@ -80,6 +80,9 @@ struct RunRequest {
   std::string acquisition_path;
   AcquisitionOptions acquisition;
   std::string dem_path;
+  // Land cover for it (optional): a ris scene (.toml or raster) whose
+  // categories the DEM's terrain takes; none: `category` everywhere.
+  std::string land_cover_path;
   std::uint16_t category = AcquisitionSimOptions{}.category;
   bool full_grid = false;
   // The Earth model (`--earth`); nullopt: the radar file's `earth` key, else
