@@ -30,15 +30,18 @@
 #include "ris/backscatter/backscatter_model.h"
 #include "ris/backscatter/dielectric.h"
 #include "ris/backscatter/library.h"
+#include "ris/geometry/topo.h"
 #include "ris/image/geocode.h"
 #include "ris/image/greytone_image.h"
 #include "ris/image/slar_image.h"
 #include "ris/io/config_table.h"
+#include "ris/io/ellipsoidal_dem.h"
 #include "ris/scene/dem_import.h"
 #include "ris/scene/landcover.h"
 #include "ris/scene/scene.h"
 #include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
+#include "ris/sensor/acquisition.h"
 #include "ris/sensor/polarisation.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_derived.h"
@@ -425,6 +428,56 @@ py::dict greytone(const PyRadar& radar, py::array_t<float, py::array::c_style> m
   return out;
 }
 
+// `ris topo`'s layers (apps/ris/cmd_topo.cpp): the same readers and
+// compute_topo, the layers as numpy arrays (lines x bins of the window).
+py::dict topo(const std::string& acquisition, const std::string& dem_path,
+              const std::string& frequency, int burst, const std::string& swath, int oversample,
+              bool full_grid, int threads) {
+  ris::AcquisitionOptions ao;
+  ao.frequency = frequency;
+  if (burst >= 0) ao.burst = burst;
+  ao.swath = swath;
+  if (oversample < 0 || oversample > 64) {
+    throw ris::InputError("", "oversample", "expected 0 (automatic) to 64");
+  }
+  if (threads < 0) throw ris::InputError("", "threads", "expected 0 (all) or more");
+  ris::TopoLayers t;
+  std::optional<ris::Acquisition> read;
+  {
+    py::gil_scoped_release nogil;
+    read = ris::read_acquisition(acquisition, ao);
+    const ris::Acquisition& acq = *read;
+    const ris::EllipsoidalDem dem = ris::read_ellipsoidal_dem(dem_path);
+    ris::TopoOptions opt;
+    opt.oversample = oversample;
+    opt.full_grid = full_grid;
+    opt.threads = threads;
+    t = ris::compute_topo(acq, dem, opt);
+  }
+  const ris::Acquisition& acq = *read;
+  const ris::GridWindow& w = t.window;
+  const std::vector<py::ssize_t> shape{w.lines, w.bins};
+  py::dict d;
+  d["lat_deg"] = copy(t.lat_deg.data(), shape);
+  d["lon_deg"] = copy(t.lon_deg.data(), shape);
+  d["height_m"] = copy(t.height_m.data(), shape);
+  d["incidence_deg"] = copy(t.incidence_deg.data(), shape);
+  d["incidence_geocentric_deg"] = copy(t.incidence_geocentric_deg.data(), shape);
+  d["local_incidence_deg"] = copy(t.local_incidence_deg.data(), shape);
+  d["look_deg"] = copy(t.look_deg.data(), shape);
+  d["heading_deg"] = copy(t.heading_deg.data(), shape);
+  d["gamma_area_m2"] = copy(t.gamma_area_m2.data(), shape);
+  d["simulated_amplitude"] = copy(t.simulated_amplitude.data(), shape);
+  d["layover_shadow_mask"] = copy(t.mask.data(), shape);
+  d["window"] = py::make_tuple(w.line0, w.lines, w.bin0, w.bins);
+  d["grid_shape"] = py::make_tuple(acq.grid.lines, acq.grid.bins);
+  d["oversample"] = t.oversample;
+  d["beta_area_m2"] = t.beta_area_m2;
+  d["unconverged"] = t.unconverged;
+  d["dem_facets"] = t.dem_facets;
+  d["mission"] = acq.mission;
+  return d;
+}
 }  // namespace
 
 PYBIND11_MODULE(_ris, m) {
@@ -664,6 +717,7 @@ PYBIND11_MODULE(_ris, m) {
   m.def("_category_sigma0", &category_sigma0);
   m.def("_model_sigma0", &model_sigma0);
   m.def("_permittivity", &permittivity);
+  m.def("_topo", &topo);
   m.def("_list_models", [] {
     std::vector<std::pair<std::string, std::string>> out;
     for (const ris::ModelInfo& i : ris::backscatter_model_names())

@@ -41,6 +41,7 @@ __all__ = [
     "permittivity",
     "Greytones",
     "greytone",
+    "topo",
 ]
 
 
@@ -717,3 +718,42 @@ def greytone(mean_power_w, radar=None, seed=1, film=None, looks=None):
             raise _error("looks", "looks: expected finite numbers of looks > 0")
         n = [float(v) for v in n]
     return Greytones(_ris._greytone(impl, p, _seed(seed), _film_values(impl.film(), film), n))
+
+
+_TOPO_LAYERS = (
+    "lat_deg",
+    "lon_deg",
+    "height_m",
+    "incidence_deg",
+    "incidence_geocentric_deg",
+    "local_incidence_deg",
+    "look_deg",
+    "heading_deg",
+    "gamma_area_m2",
+    "simulated_amplitude",
+    "layover_shadow_mask",
+)
+
+
+def topo(acquisition, dem, oversample=0, full_grid=False, threads=0, frequency="A", burst=None,
+         swath=""):
+    """``ris topo --acquisition A --dem D``'s layers as numpy arrays.
+
+    ``acquisition`` is a NISAR RSLC ``.h5``, a Sentinel-1 ``.SAFE`` (or its
+    annotation ``.xml``) or a ris acquisition ``.toml``; ``dem`` a DEM in
+    geographic WGS 84 (docs/geometry.md). Returns a dict of arrays shaped
+    (lines, bins) of the window of the radar grid the DEM covers (the whole
+    grid with ``full_grid=True``), the files ``ris topo`` writes: ``lat_deg``,
+    ``lon_deg`` (lat.tif, lon.tif, float64), ``height_m`` (hgt.tif),
+    ``incidence_deg``, ``incidence_geocentric_deg``, ``local_incidence_deg``,
+    ``look_deg``, ``heading_deg``, ``gamma_area_m2`` (gamma_area.tif),
+    ``simulated_amplitude`` (simamp.tif), all float32 with NaN for no data,
+    and ``layover_shadow_mask`` (uint8: 0 none, 1 shadow, 2 layover, 3 both);
+    plus ``window`` (first line, lines, first bin, bins), ``grid_shape``
+    (lines, bins of the whole grid), ``oversample``, ``beta_area_m2``,
+    ``unconverged``, ``dem_facets`` and ``mission``.
+    """
+    if burst is not None and (not isinstance(burst, numbers.Integral) or burst < 0):
+        raise _error("burst", f"burst: expected a burst number from 0, got {burst!r}")
+    return _ris._topo(str(acquisition), str(dem), str(frequency), -1 if burst is None else int(burst),
+                      str(swath), int(oversample), bool(full_grid), int(threads))
