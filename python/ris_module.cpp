@@ -7,12 +7,14 @@
 // Arrays: the scene's arrays and the simulation's maps are zero-copy,
 // read-only views whose base object keeps the C++ data alive; the pictures
 // that rerender() replaces are copies (a view would dangle after it).
+#include <fmt/format.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <filesystem>
@@ -31,8 +33,10 @@
 #include "ris/backscatter/dielectric.h"
 #include "ris/backscatter/library.h"
 #include "ris/geometry/topo.h"
+#include "ris/image/compare_report.h"
 #include "ris/image/geocode.h"
 #include "ris/image/greytone_image.h"
+#include "ris/image/quality_report.h"
 #include "ris/image/slar_image.h"
 #include "ris/io/config_table.h"
 #include "ris/io/ellipsoidal_dem.h"
@@ -478,6 +482,84 @@ py::dict topo(const std::string& acquisition, const std::string& dem_path,
   d["mission"] = acq.mission;
   return d;
 }
+
+using FloatGrid = py::array_t<float, py::array::c_style | py::array::forcecast>;
+using DoubleGrid = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// The values of an optional raster of `rows` x `cols` (None: empty), naming
+// `key` when its shape differs.
+std::span<const double> optional_grid(const std::optional<DoubleGrid>& a, py::ssize_t rows,
+                                      py::ssize_t cols, const char* key) {
+  if (!a) return {};
+  if (a->ndim() != 2 || a->shape(0) != rows || a->shape(1) != cols) {
+    throw ris::InputError("", key,
+                          fmt::format("expected a {} x {} array like the image", rows, cols));
+  }
+  return {a->data(), static_cast<std::size_t>(a->size())};
+}
+
+// `ris quality`'s measures (ris/image/quality_report.h) of a power image.
+py::object quality(const FloatGrid& power, const std::optional<DoubleGrid>& mask,
+                   const std::optional<DoubleGrid>& categories,
+                   const std::vector<std::array<int, 4>>& regions, int window, int mask_bit,
+                   const std::vector<std::pair<int, int>>& targets, double line_spacing_m,
+                   double range_bin_m) {
+  if (power.ndim() != 2) throw ris::InputError("", "power", "expected a 2-D array (rows, cols)");
+  const py::ssize_t rows = power.shape(0), cols = power.shape(1);
+  const std::span<const double> mask_values = optional_grid(mask, rows, cols, "mask");
+  ris::QualityRequest request;
+  request.categories = optional_grid(categories, rows, cols, "categories");
+  for (const auto& r : regions) request.regions.push_back({r[0], r[1], r[2], r[3]});
+  request.window = window;
+  request.mask_bit = mask_bit;
+  request.targets = targets;
+  request.line_spacing_m = line_spacing_m;
+  request.range_bin_m = range_bin_m;
+  nlohmann::json out;
+  {
+    py::gil_scoped_release nogil;
+    const std::vector<std::uint8_t> bits = ris::quality_mask_bits(mask_values);
+    out = ris::quality_measures(
+        ris::IntensityView{
+            std::span<const float>(power.data(), static_cast<std::size_t>(power.size())),
+            static_cast<int>(cols), static_cast<int>(rows), bits},
+        request);
+  }
+  return json_to_python(out);
+}
+
+// `ris compare`'s measures (ris/image/compare_report.h) of two power images
+// on one grid; the real image as moved onto the simulation's.
+py::tuple compare(const FloatGrid& simulated, const FloatGrid& real, bool register_images,
+                  int max_shift_px, const std::optional<DoubleGrid>& mask,
+                  const std::optional<DoubleGrid>& categories,
+                  const std::optional<DoubleGrid>& local_incidence_deg) {
+  if (simulated.ndim() != 2) {
+    throw ris::InputError("", "simulated", "expected a 2-D array (rows, cols)");
+  }
+  const py::ssize_t rows = simulated.shape(0), cols = simulated.shape(1);
+  if (real.ndim() != 2 || real.shape(0) != rows || real.shape(1) != cols) {
+    throw ris::InputError(
+        "", "real", fmt::format("expected a {} x {} array like the simulated image", rows, cols));
+  }
+  ris::CompareRequest request;
+  request.register_images = register_images;
+  request.max_shift_px = max_shift_px;
+  request.mask = optional_grid(mask, rows, cols, "mask");
+  request.categories = optional_grid(categories, rows, cols, "categories");
+  request.local_incidence_deg =
+      optional_grid(local_incidence_deg, rows, cols, "local_incidence_deg");
+  std::optional<ris::CompareReport> rep;
+  {
+    py::gil_scoped_release nogil;
+    rep = ris::compare_measures(
+        std::span<const float>(simulated.data(), static_cast<std::size_t>(simulated.size())),
+        std::span<const float>(real.data(), static_cast<std::size_t>(real.size())),
+        static_cast<int>(cols), static_cast<int>(rows), request);
+  }
+  return py::make_tuple(json_to_python(rep->measures),
+                        copy(rep->real_aligned.data(), {rows, cols}));
+}
 }  // namespace
 
 PYBIND11_MODULE(_ris, m) {
@@ -718,6 +800,8 @@ PYBIND11_MODULE(_ris, m) {
   m.def("_model_sigma0", &model_sigma0);
   m.def("_permittivity", &permittivity);
   m.def("_topo", &topo);
+  m.def("_quality", &quality);
+  m.def("_compare", &compare);
   m.def("_list_models", [] {
     std::vector<std::pair<std::string, std::string>> out;
     for (const ris::ModelInfo& i : ris::backscatter_model_names())
