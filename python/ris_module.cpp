@@ -56,6 +56,7 @@
 #include "ris/sim/slar_products.h"
 #include "ris/util/data_dir.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 
 namespace py = pybind11;
@@ -444,7 +445,7 @@ py::dict topo(const std::string& acquisition, const std::string& dem_path,
   if (oversample < 0 || oversample > 64) {
     throw ris::InputError("", "oversample", "expected 0 (automatic) to 64");
   }
-  if (threads < 0) throw ris::InputError("", "threads", "expected 0 (all) or more");
+  ris::checked_thread_count(threads, "threads");  // the cap, as `ris topo --threads`
   ris::TopoLayers t;
   std::optional<ris::Acquisition> read;
   {

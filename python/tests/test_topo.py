@@ -46,5 +46,8 @@ def test_topo_bad_input_names_the_key():
     with pytest.raises(ris.InputError) as e:
         ris.topo(acq, dem, oversample=65)
     assert e.value.key == "oversample"
+    with pytest.raises(ris.InputError) as e:
+        ris.topo(acq, dem, threads=-1)
+    assert e.value.key == "threads"
     with pytest.raises(ris.InputFileNotFoundError):
         ris.topo(acq, DEMS / "no-such-dem.tif")
