@@ -7,12 +7,14 @@
 // Arrays: the scene's arrays and the simulation's maps are zero-copy,
 // read-only views whose base object keeps the C++ data alive; the pictures
 // that rerender() replaces are copies (a view would dangle after it).
+#include <fmt/format.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <filesystem>
@@ -30,15 +32,20 @@
 #include "ris/backscatter/backscatter_model.h"
 #include "ris/backscatter/dielectric.h"
 #include "ris/backscatter/library.h"
+#include "ris/geometry/topo.h"
+#include "ris/image/compare_report.h"
 #include "ris/image/geocode.h"
 #include "ris/image/greytone_image.h"
+#include "ris/image/quality_report.h"
 #include "ris/image/slar_image.h"
 #include "ris/io/config_table.h"
+#include "ris/io/ellipsoidal_dem.h"
 #include "ris/scene/dem_import.h"
 #include "ris/scene/landcover.h"
 #include "ris/scene/scene.h"
 #include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
+#include "ris/sensor/acquisition.h"
 #include "ris/sensor/polarisation.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_derived.h"
@@ -49,6 +56,7 @@
 #include "ris/sim/slar_products.h"
 #include "ris/util/data_dir.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 
 namespace py = pybind11;
@@ -425,6 +433,134 @@ py::dict greytone(const PyRadar& radar, py::array_t<float, py::array::c_style> m
   return out;
 }
 
+// `ris topo`'s layers (apps/ris/cmd_topo.cpp): the same readers and
+// compute_topo, the layers as numpy arrays (lines x bins of the window).
+py::dict topo(const std::string& acquisition, const std::string& dem_path,
+              const std::string& frequency, int burst, const std::string& swath, int oversample,
+              bool full_grid, int threads) {
+  ris::AcquisitionOptions ao;
+  ao.frequency = frequency;
+  if (burst >= 0) ao.burst = burst;
+  ao.swath = swath;
+  if (oversample < 0 || oversample > 64) {
+    throw ris::InputError("", "oversample", "expected 0 (automatic) to 64");
+  }
+  ris::checked_thread_count(threads, "threads");  // the cap, as `ris topo --threads`
+  ris::TopoLayers t;
+  std::optional<ris::Acquisition> read;
+  {
+    py::gil_scoped_release nogil;
+    read = ris::read_acquisition(acquisition, ao);
+    const ris::Acquisition& acq = *read;
+    const ris::EllipsoidalDem dem = ris::read_ellipsoidal_dem(dem_path);
+    ris::TopoOptions opt;
+    opt.oversample = oversample;
+    opt.full_grid = full_grid;
+    opt.threads = threads;
+    t = ris::compute_topo(acq, dem, opt);
+  }
+  const ris::Acquisition& acq = *read;
+  const ris::GridWindow& w = t.window;
+  const std::vector<py::ssize_t> shape{w.lines, w.bins};
+  py::dict d;
+  d["lat_deg"] = copy(t.lat_deg.data(), shape);
+  d["lon_deg"] = copy(t.lon_deg.data(), shape);
+  d["height_m"] = copy(t.height_m.data(), shape);
+  d["incidence_deg"] = copy(t.incidence_deg.data(), shape);
+  d["incidence_geocentric_deg"] = copy(t.incidence_geocentric_deg.data(), shape);
+  d["local_incidence_deg"] = copy(t.local_incidence_deg.data(), shape);
+  d["look_deg"] = copy(t.look_deg.data(), shape);
+  d["heading_deg"] = copy(t.heading_deg.data(), shape);
+  d["gamma_area_m2"] = copy(t.gamma_area_m2.data(), shape);
+  d["simulated_amplitude"] = copy(t.simulated_amplitude.data(), shape);
+  d["layover_shadow_mask"] = copy(t.mask.data(), shape);
+  d["window"] = py::make_tuple(w.line0, w.lines, w.bin0, w.bins);
+  d["grid_shape"] = py::make_tuple(acq.grid.lines, acq.grid.bins);
+  d["oversample"] = t.oversample;
+  d["beta_area_m2"] = t.beta_area_m2;
+  d["unconverged"] = t.unconverged;
+  d["dem_facets"] = t.dem_facets;
+  d["mission"] = acq.mission;
+  return d;
+}
+
+using FloatGrid = py::array_t<float, py::array::c_style | py::array::forcecast>;
+using DoubleGrid = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// The values of an optional raster of `rows` x `cols` (None: empty), naming
+// `key` when its shape differs.
+std::span<const double> optional_grid(const std::optional<DoubleGrid>& a, py::ssize_t rows,
+                                      py::ssize_t cols, const char* key) {
+  if (!a) return {};
+  if (a->ndim() != 2 || a->shape(0) != rows || a->shape(1) != cols) {
+    throw ris::InputError("", key,
+                          fmt::format("expected a {} x {} array like the image", rows, cols));
+  }
+  return {a->data(), static_cast<std::size_t>(a->size())};
+}
+
+// `ris quality`'s measures (ris/image/quality_report.h) of a power image.
+py::object quality(const FloatGrid& power, const std::optional<DoubleGrid>& mask,
+                   const std::optional<DoubleGrid>& categories,
+                   const std::vector<std::array<int, 4>>& regions, int window, int mask_bit,
+                   const std::vector<std::pair<int, int>>& targets, double line_spacing_m,
+                   double range_bin_m) {
+  if (power.ndim() != 2) throw ris::InputError("", "power", "expected a 2-D array (rows, cols)");
+  const py::ssize_t rows = power.shape(0), cols = power.shape(1);
+  const std::span<const double> mask_values = optional_grid(mask, rows, cols, "mask");
+  ris::QualityRequest request;
+  request.categories = optional_grid(categories, rows, cols, "categories");
+  for (const auto& r : regions) request.regions.push_back({r[0], r[1], r[2], r[3]});
+  request.window = window;
+  request.mask_bit = mask_bit;
+  request.targets = targets;
+  request.line_spacing_m = line_spacing_m;
+  request.range_bin_m = range_bin_m;
+  nlohmann::json out;
+  {
+    py::gil_scoped_release nogil;
+    const std::vector<std::uint8_t> bits = ris::quality_mask_bits(mask_values);
+    out = ris::quality_measures(
+        ris::IntensityView{
+            std::span<const float>(power.data(), static_cast<std::size_t>(power.size())),
+            static_cast<int>(cols), static_cast<int>(rows), bits},
+        request);
+  }
+  return json_to_python(out);
+}
+
+// `ris compare`'s measures (ris/image/compare_report.h) of two power images
+// on one grid; the real image as moved onto the simulation's.
+py::tuple compare(const FloatGrid& simulated, const FloatGrid& real, bool register_images,
+                  int max_shift_px, const std::optional<DoubleGrid>& mask,
+                  const std::optional<DoubleGrid>& categories,
+                  const std::optional<DoubleGrid>& local_incidence_deg) {
+  if (simulated.ndim() != 2) {
+    throw ris::InputError("", "simulated", "expected a 2-D array (rows, cols)");
+  }
+  const py::ssize_t rows = simulated.shape(0), cols = simulated.shape(1);
+  if (real.ndim() != 2 || real.shape(0) != rows || real.shape(1) != cols) {
+    throw ris::InputError(
+        "", "real", fmt::format("expected a {} x {} array like the simulated image", rows, cols));
+  }
+  ris::CompareRequest request;
+  request.register_images = register_images;
+  request.max_shift_px = max_shift_px;
+  request.mask = optional_grid(mask, rows, cols, "mask");
+  request.categories = optional_grid(categories, rows, cols, "categories");
+  request.local_incidence_deg =
+      optional_grid(local_incidence_deg, rows, cols, "local_incidence_deg");
+  std::optional<ris::CompareReport> rep;
+  {
+    py::gil_scoped_release nogil;
+    rep = ris::compare_measures(
+        std::span<const float>(simulated.data(), static_cast<std::size_t>(simulated.size())),
+        std::span<const float>(real.data(), static_cast<std::size_t>(real.size())),
+        static_cast<int>(cols), static_cast<int>(rows), request);
+  }
+  return py::make_tuple(json_to_python(rep->measures),
+                        copy(rep->real_aligned.data(), {rows, cols}));
+}
 }  // namespace
 
 PYBIND11_MODULE(_ris, m) {
@@ -664,6 +800,9 @@ PYBIND11_MODULE(_ris, m) {
   m.def("_category_sigma0", &category_sigma0);
   m.def("_model_sigma0", &model_sigma0);
   m.def("_permittivity", &permittivity);
+  m.def("_topo", &topo);
+  m.def("_quality", &quality);
+  m.def("_compare", &compare);
   m.def("_list_models", [] {
     std::vector<std::pair<std::string, std::string>> out;
     for (const ris::ModelInfo& i : ris::backscatter_model_names())

@@ -23,15 +23,13 @@
 #include <vector>
 
 #include "command_registry.h"
+#include "ris/image/compare_report.h"
 #include "ris/image/contact_sheet.h"
-#include "ris/image/image_comparison.h"
-#include "ris/image/image_registration.h"
 #include "ris/image/line_chart.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/intensity_image.h"
 #include "ris/io/raster_io.h"
 #include "ris/util/error.h"
-#include "ris/util/units.h"
 
 namespace ris::app {
 namespace {
@@ -46,56 +44,6 @@ struct CompareArgs {
   int categories_band = 1;
   bool json = false;
 };
-
-constexpr int kWindows[] = {1, 3, 5, 9};
-
-std::vector<float> to_db(const std::vector<float>& v) {
-  std::vector<float> out(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i)
-    out[i] = v[i] > 0.0f && std::isfinite(v[i]) ? 10.0f * std::log10(v[i]) : NAN;
-  return out;
-}
-
-// b(x + s) on a's grid, bilinear between b's pixel centres (NaN where any of
-// the four is missing or outside).
-std::vector<float> shifted(const std::vector<float>& b, int cols, int rows, double sx, double sy) {
-  if (sx == 0.0 && sy == 0.0) return b;
-  std::vector<float> out(b.size(), NAN);
-  for (int r = 0; r < rows; ++r) {
-    const double y = r + sy;
-    const int y0 = static_cast<int>(std::floor(y));
-    const double fy = y - y0;
-    if (y0 < 0 || y0 + 1 >= rows) continue;
-    for (int c = 0; c < cols; ++c) {
-      const double x = c + sx;
-      const int x0 = static_cast<int>(std::floor(x));
-      const double fx = x - x0;
-      if (x0 < 0 || x0 + 1 >= cols) continue;
-      const auto at = [&](int yy, int xx) {
-        return double(b[static_cast<std::size_t>(yy) * cols + xx]);
-      };
-      const double v = (1 - fy) * ((1 - fx) * at(y0, x0) + fx * at(y0, x0 + 1)) +
-                       fy * ((1 - fx) * at(y0 + 1, x0) + fx * at(y0 + 1, x0 + 1));
-      out[static_cast<std::size_t>(r) * cols + c] = static_cast<float>(v);
-    }
-  }
-  return out;
-}
-
-nlohmann::json agreement_json(const std::vector<float>& a, const std::vector<float>& b, int cols,
-                              int rows) {
-  nlohmann::json j = nlohmann::json::array();
-  for (int w : kWindows) {
-    const WindowAgreement g = window_agreement(a, b, cols, rows, w);
-    j.push_back({{"window", w},
-                 {"blocks", g.blocks},
-                 {"pearson", g.pearson},
-                 {"spearman", g.spearman},
-                 {"bias_db", g.bias_db},
-                 {"rms_db", g.rms_db}});
-  }
-  return j;
-}
 
 // Greytones of dB values over [lo, hi] (0 for no data).
 std::vector<std::uint8_t> grey(const std::vector<float>& db, double lo, double hi) {
@@ -206,67 +154,36 @@ void run_compare(const CompareArgs& a) {
   out["simulated"] = {{"path", a.sim}, {"read_as", sim.read_as}, {"cols", cols}, {"rows", rows}};
   out["real"] = {{"path", a.real}, {"source", real.source}, {"read_as", real.read_as}};
 
-  // Co-registration of the dB images; the real image moved onto the simulation.
-  std::vector<float> real_aligned = real.intensity;
-  if (!a.no_register) {
-    const ImageRegistration reg =
-        register_images(to_db(sim.intensity), to_db(real.intensity), cols, rows,
-                        RegistrationRule{a.max_shift, 50, 8.0, 1.0});
-    out["registration"] = {{"shift_x_px", reg.shift_x_px},
-                           {"shift_y_px", reg.shift_y_px},
-                           {"peak_z", reg.peak_z},
-                           {"peak_correlation", reg.peak_correlation}};
-    real_aligned = shifted(real.intensity, cols, rows, reg.shift_x_px, reg.shift_y_px);
-  }
-  out["agreement"] = agreement_json(sim.intensity, real_aligned, cols, rows);
-  out["histogram_hellinger"] = histogram_hellinger(sim.intensity, real_aligned);
-
+  RasterF64 categories, mask, local_incidence;
+  CompareRequest request;
+  request.register_images = !a.no_register;
+  request.max_shift_px = a.max_shift;
   if (!a.categories.empty()) {
-    const RasterF64 c = same_grid(a.categories, cols, rows, "--categories");
-    if (a.categories_band < 1 || a.categories_band > c.bands) {
+    categories = same_grid(a.categories, cols, rows, "--categories");
+    if (a.categories_band < 1 || a.categories_band > categories.bands) {
       throw InputError(
           a.categories, "--categories-band",
-          fmt::format("band {} asked for, the raster has {}", a.categories_band, c.bands));
+          fmt::format("band {} asked for, the raster has {}", a.categories_band, categories.bands));
     }
     const std::size_t plane = static_cast<std::size_t>(cols) * rows;
-    nlohmann::json cj = nlohmann::json::array();
-    for (const CategoryBias& b : category_bias(
-             sim.intensity, real_aligned,
-             std::span<const double>(c.data.data() + plane * (a.categories_band - 1), plane)))
-      cj.push_back({{"category", b.category}, {"pixels", b.pixels}, {"bias_db", b.bias_db}});
-    out["category_bias"] = cj;
+    request.categories =
+        std::span<const double>(categories.data.data() + plane * (a.categories_band - 1), plane);
   }
   if (!a.mask.empty()) {
-    const RasterF64 m = same_grid(a.mask, cols, rows, "--mask");
-    std::vector<std::uint8_t> bits;
-    bits.reserve(m.data.size());
-    for (double v : m.data) bits.push_back(std::isfinite(v) ? static_cast<std::uint8_t>(v) : 0);
-    const MaskAgreement sh = mask_agreement(bits, 1, real_aligned, cols, rows, true);
-    const MaskAgreement lo = mask_agreement(bits, 2, real_aligned, cols, rows, false);
-    out["masks"] = {{"shadow_vs_dark_iou", sh.iou},
-                    {"shadow_pixels", sh.mask_pixels},
-                    {"layover_vs_bright_iou", lo.iou},
-                    {"layover_pixels", lo.mask_pixels}};
+    mask = same_grid(a.mask, cols, rows, "--mask");
+    request.mask = mask.data;
   }
   if (!a.local_incidence.empty()) {
-    // Baselines from the geometry alone: cos(theta_l) and Muhleman's
-    // sigma0 = 0.0133 cos / (sin + 0.1 cos)^3 (docs/backscatter.md).
-    const RasterF64 li = same_grid(a.local_incidence, cols, rows, "--local-incidence");
-    std::vector<float> cosine(li.data.size(), NAN), muhleman(li.data.size(), NAN);
-    for (std::size_t i = 0; i < li.data.size(); ++i) {
-      const double t = deg_to_rad(li.data[i]);
-      if (!(std::isfinite(t) && t >= 0.0 && t < kPi / 2)) continue;
-      cosine[i] = static_cast<float>(std::cos(t));
-      const double d = std::sin(t) + 0.1 * std::cos(t);
-      muhleman[i] = static_cast<float>(0.0133 * std::cos(t) / (d * d * d));
-    }
-    out["baselines"] = {{"cos_local_incidence", agreement_json(cosine, real_aligned, cols, rows)},
-                        {"muhleman", agreement_json(muhleman, real_aligned, cols, rows)}};
+    local_incidence = same_grid(a.local_incidence, cols, rows, "--local-incidence");
+    request.local_incidence_deg = local_incidence.data;
   }
+  const CompareReport rep = compare_measures(sim.intensity, real.intensity, cols, rows, request);
+  out.update(rep.measures);
+  const std::vector<float>& real_aligned = rep.real_aligned;
 
   if (!a.out.empty()) {
     StagedDirectory dir(a.out);
-    write_pictures(dir, to_db(sim.intensity), to_db(real_aligned), cols, rows);
+    write_pictures(dir, intensity_to_db(sim.intensity), intensity_to_db(real_aligned), cols, rows);
     write_text_file_atomic(dir.path("compare.json"), out.dump(1) + "\n");
     dir.commit();
   }

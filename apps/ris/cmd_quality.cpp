@@ -20,11 +20,7 @@
 #include <vector>
 
 #include "command_registry.h"
-#include "ris/image/class_separability.h"
-#include "ris/image/edge_sharpness.h"
-#include "ris/image/impulse_response.h"
-#include "ris/image/intensity_histogram.h"
-#include "ris/image/speckle_statistics.h"
+#include "ris/image/quality_report.h"
 #include "ris/io/intensity_image.h"
 #include "ris/io/raster_io.h"
 #include "ris/util/error.h"
@@ -79,19 +75,8 @@ RasterF64 same_size_raster(const std::string& path, const IntensityImage& img,
   return r;
 }
 
-nlohmann::json speckle_json(const SpeckleSummary& s, bool automatic, int window) {
-  return {{"enl", s.enl},
-          {"cv", s.cv},
-          {"radiometric_resolution_db", s.radiometric_resolution_db},
-          {"regions", s.regions},
-          {"pixels", s.pixels},
-          {"regions_from", automatic ? fmt::format("automatic: {} x {} windows", window, window)
-                                     : std::string("--regions")}};
-}
-
 // The measures as a summary on stdout.
-void print_quality(const nlohmann::json& out, const IntensityImage& img,
-                   const IntensityHistogram& h, int mask_bit) {
+void print_quality(const nlohmann::json& out, const IntensityImage& img, int mask_bit) {
   fmt::print("image: {} ({} x {} pixels, read as {})\n", img.source, img.cols, img.rows,
              img.read_as);
   const nlohmann::json& s = out["speckle"];
@@ -101,8 +86,10 @@ void print_quality(const nlohmann::json& out, const IntensityImage& img,
       s["enl"].get<double>(), s["cv"].get<double>(), s["radiometric_resolution_db"].get<double>(),
       s["regions"].get<int>(), s["pixels"].get<std::int64_t>(),
       s["regions_from"].get<std::string>());
+  const nlohmann::json& h = out["histogram"];
   fmt::print("histogram: p1 {:.2f} dB, median {:.2f} dB, p99 {:.2f} dB; dynamic range {:.2f} dB\n",
-             h.p1_db, h.p50_db, h.p99_db, h.dynamic_range_db());
+             h["p1_db"].get<double>(), h["p50_db"].get<double>(), h["p99_db"].get<double>(),
+             h["dynamic_range_db"].get<double>());
   if (out.contains("categories")) {
     fmt::print("categories: {:>8} {:>9} {:>9} {:>8} {:>12}\n", "category", "pixels", "mean dB",
                "std dB", "<I> dB");
@@ -137,112 +124,60 @@ void run_quality(const QualityArgs& a) {
   const IntensityImage img =
       read_intensity_image(a.image, a.band, parse_pixel_scale(a.scale, "--scale"));
   std::vector<std::uint8_t> mask;
-  if (!a.mask.empty()) {
-    const RasterF64 m = same_size_raster(a.mask, img, "--mask");
-    // Non-finite mask values count as no data (bit 4).
-    mask.reserve(m.data.size());
-    for (const double v : m.data)
-      mask.push_back(std::isfinite(v) ? static_cast<std::uint8_t>(v) : std::uint8_t{4});
+  if (!a.mask.empty()) mask = quality_mask_bits(same_size_raster(a.mask, img, "--mask").data);
+  QualityRequest request;
+  request.window = a.window;
+  request.mask_bit = a.mask_bit;
+  for (const std::string& r : a.regions) {
+    const std::vector<int> v = int_list(r, 4, "--regions");
+    if (v[2] <= 0 || v[3] <= 0) {
+      throw InputError("", "--regions", fmt::format("a box needs a size above 0, got '{}'", r));
+    }
+    request.regions.push_back({v[0], v[1], v[2], v[3]});
   }
-  const IntensityView view{img.intensity, img.cols, img.rows, mask};
+  RasterF64 categories;
+  if (!a.categories.empty()) {
+    categories = same_size_raster(a.categories, img, "--categories");
+    if (a.categories_band < 1 || a.categories_band > categories.bands) {
+      throw InputError(
+          a.categories, "--categories-band",
+          fmt::format("band {} asked for, the raster has {}", a.categories_band, categories.bands));
+    }
+    const std::size_t plane =
+        static_cast<std::size_t>(img.cols) * static_cast<std::size_t>(img.rows);
+    request.categories =
+        std::span<const double>(categories.data.data() + plane * (a.categories_band - 1), plane);
+  }
+  for (const std::string& t : a.targets) {
+    const std::vector<int> v = int_list(t, 2, "--target");
+    if (v[0] < 0 || v[0] >= img.rows || v[1] < 0 || v[1] >= img.cols) {
+      throw InputError("", "--target",
+                       fmt::format("line {} bin {} is outside the {} x {} image", v[0], v[1],
+                                   img.rows, img.cols));
+    }
+    request.targets.emplace_back(v[0], v[1]);
+  }
+  if (!request.targets.empty()) {
+    const auto size = [&](const char* item, double fallback) {
+      const auto it = img.metadata.find(item);
+      return it != img.metadata.end() ? std::stod(it->second) : fallback;
+    };
+    request.range_bin_m = size("RIS_RANGE_BIN_M", 1.0);
+    request.line_spacing_m = size("RIS_LINE_SPACING_M", 1.0);
+  }
+
   nlohmann::json out;
   out["image"] = {{"path", a.image},
                   {"source", img.source},
                   {"cols", img.cols},
                   {"rows", img.rows},
                   {"read_as", img.read_as}};
-
-  // Speckle over the given boxes or the automatic homogeneous windows.
-  std::vector<PixelBox> boxes;
-  for (const std::string& r : a.regions) {
-    const std::vector<int> v = int_list(r, 4, "--regions");
-    if (v[2] <= 0 || v[3] <= 0) {
-      throw InputError("", "--regions", fmt::format("a box needs a size above 0, got '{}'", r));
-    }
-    boxes.push_back({v[0], v[1], v[2], v[3]});
-  }
-  const bool automatic = boxes.empty();
-  if (automatic) boxes = homogeneous_windows(view, HomogeneousRule{a.window, 3.0});
-  out["speckle"] = speckle_json(pooled_speckle(view, boxes), automatic, a.window);
-
-  const IntensityHistogram h = intensity_histogram(view);
-  out["histogram"] = {{"pixels", h.pixels},
-                      {"p1_db", h.p1_db},
-                      {"p50_db", h.p50_db},
-                      {"p99_db", h.p99_db},
-                      {"dynamic_range_db", h.dynamic_range_db()},
-                      {"first_bin_db", h.first_bin_db},
-                      {"counts", h.counts}};
-
-  if (!a.categories.empty()) {
-    const RasterF64 c = same_size_raster(a.categories, img, "--categories");
-    if (a.categories_band < 1 || a.categories_band > c.bands) {
-      throw InputError(
-          a.categories, "--categories-band",
-          fmt::format("band {} asked for, the raster has {}", a.categories_band, c.bands));
-    }
-    const std::size_t plane = static_cast<std::size_t>(c.cols) * static_cast<std::size_t>(c.rows);
-    const std::span<const double> cat(c.data.data() + plane * (a.categories_band - 1), plane);
-    const std::vector<CategoryStatistics> stats = category_statistics(view, cat);
-    nlohmann::json cj = nlohmann::json::array(), pj = nlohmann::json::array();
-    for (const CategoryStatistics& s : stats) {
-      cj.push_back({{"category", s.category},
-                    {"pixels", s.pixels},
-                    {"mean_db", s.mean_db},
-                    {"std_db", s.std_db},
-                    {"mean_intensity_db", s.mean_intensity_db}});
-    }
-    for (std::size_t i = 0; i < stats.size(); ++i) {
-      for (std::size_t j = i + 1; j < stats.size(); ++j) {
-        const Separability s = separability(stats[i], stats[j]);
-        pj.push_back({{"a", s.a},
-                      {"b", s.b},
-                      {"contrast_db", s.contrast_db},
-                      {"bhattacharyya", s.bhattacharyya},
-                      {"jeffries_matusita", s.jeffries_matusita}});
-      }
-    }
-    out["categories"] = cj;
-    out["pairs"] = pj;
-  }
-
-  if (!mask.empty()) {
-    const EdgeSharpness e = edge_sharpness(img.intensity, mask, img.cols, img.rows,
-                                           static_cast<std::uint8_t>(a.mask_bit));
-    out["edges"] = {{"bit", a.mask_bit},          {"edges", e.edges},
-                    {"width_px", e.width_px},     {"lit_level", e.lit_level},
-                    {"dark_level", e.dark_level}, {"mean_profile", e.mean_profile}};
-  }
-
-  if (!a.targets.empty()) {
-    const auto size = [&](const char* item, double fallback) {
-      const auto it = img.metadata.find(item);
-      return it != img.metadata.end() ? std::stod(it->second) : fallback;
-    };
-    const double dr = size("RIS_RANGE_BIN_M", 1.0), ds = size("RIS_LINE_SPACING_M", 1.0);
-    nlohmann::json tj = nlohmann::json::array();
-    for (const std::string& t : a.targets) {
-      const std::vector<int> v = int_list(t, 2, "--target");
-      if (v[0] < 0 || v[0] >= img.rows || v[1] < 0 || v[1] >= img.cols) {
-        throw InputError("", "--target",
-                         fmt::format("line {} bin {} is outside the {} x {} image", v[0], v[1],
-                                     img.rows, img.cols));
-      }
-      const IrfMeasurement m = measure_irf(img.intensity, img.rows, img.cols, ds, dr, v[0], v[1], 3,
-                                           24, IrfInterpolation::sinc);
-      nlohmann::json j = irf_to_json(m);
-      j["line"] = v[0];
-      j["bin"] = v[1];
-      tj.push_back(j);
-    }
-    out["targets"] = tj;
-  }
-
+  out.update(quality_measures(IntensityView{img.intensity, img.cols, img.rows, mask}, request));
   if (a.json) {
     fmt::print("{}\n", out.dump(1));
     return;
   }
-  print_quality(out, img, h, a.mask_bit);
+  print_quality(out, img, a.mask_bit);
 }
 
 void add_quality(CLI::App& app) {

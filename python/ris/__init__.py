@@ -41,6 +41,9 @@ __all__ = [
     "permittivity",
     "Greytones",
     "greytone",
+    "topo",
+    "quality",
+    "compare",
 ]
 
 
@@ -717,3 +720,92 @@ def greytone(mean_power_w, radar=None, seed=1, film=None, looks=None):
             raise _error("looks", "looks: expected finite numbers of looks > 0")
         n = [float(v) for v in n]
     return Greytones(_ris._greytone(impl, p, _seed(seed), _film_values(impl.film(), film), n))
+
+
+_TOPO_LAYERS = (
+    "lat_deg",
+    "lon_deg",
+    "height_m",
+    "incidence_deg",
+    "incidence_geocentric_deg",
+    "local_incidence_deg",
+    "look_deg",
+    "heading_deg",
+    "gamma_area_m2",
+    "simulated_amplitude",
+    "layover_shadow_mask",
+)
+
+
+def topo(acquisition, dem, oversample=0, full_grid=False, threads=0, frequency="A", burst=None,
+         swath=""):
+    """``ris topo --acquisition A --dem D``'s layers as numpy arrays.
+
+    ``acquisition`` is a NISAR RSLC ``.h5``, a Sentinel-1 ``.SAFE`` (or its
+    annotation ``.xml``) or a ris acquisition ``.toml``; ``dem`` a DEM in
+    geographic WGS 84 (docs/geometry.md). Returns a dict of arrays shaped
+    (lines, bins) of the window of the radar grid the DEM covers (the whole
+    grid with ``full_grid=True``), the files ``ris topo`` writes: ``lat_deg``,
+    ``lon_deg`` (lat.tif, lon.tif, float64), ``height_m`` (hgt.tif),
+    ``incidence_deg``, ``incidence_geocentric_deg``, ``local_incidence_deg``,
+    ``look_deg``, ``heading_deg``, ``gamma_area_m2`` (gamma_area.tif),
+    ``simulated_amplitude`` (simamp.tif), all float32 with NaN for no data,
+    and ``layover_shadow_mask`` (uint8: 0 none, 1 shadow, 2 layover, 3 both);
+    plus ``window`` (first line, lines, first bin, bins), ``grid_shape``
+    (lines, bins of the whole grid), ``oversample``, ``beta_area_m2``,
+    ``unconverged``, ``dem_facets`` and ``mission``.
+    """
+    if burst is not None and (not isinstance(burst, numbers.Integral) or burst < 0):
+        raise _error("burst", f"burst: expected a burst number from 0, got {burst!r}")
+    return _ris._topo(str(acquisition), str(dem), str(frequency), -1 if burst is None else int(burst),
+                      str(swath), int(oversample), bool(full_grid), int(threads))
+
+
+def _optional_grid(value):
+    return None if value is None else np.asarray(value, dtype=np.float64)
+
+
+def quality(power_w, mask=None, categories=None, regions=None, window=16, mask_bit=1, targets=None,
+            line_spacing_m=1.0, range_bin_m=1.0):
+    """``ris quality``'s measures of a power image (rows, cols), as a dict.
+
+    The keys and numbers of ``ris quality --json`` (docs/quality.md) without
+    its ``image`` entry: ``speckle`` (ENL, CV, radiometric resolution over
+    ``regions``, boxes ``(col0, row0, cols, rows)``, or the automatic
+    homogeneous ``window`` x ``window`` windows), ``histogram``; with
+    ``categories`` (an array of the image's shape) ``categories`` and
+    ``pairs``; with ``mask`` (mask_slant.tif's values: non-zero pixels left
+    out, edges of ``mask_bit`` measured) ``edges``; with ``targets``
+    (``(line, bin)`` pairs) ``targets``, their impulse responses with pixels
+    ``line_spacing_m`` x ``range_bin_m``.
+    """
+    regions = [tuple(int(v) for v in r) for r in (regions or [])]
+    if any(len(r) != 4 for r in regions):
+        raise _error("regions", "regions: expected boxes (col0, row0, cols, rows)")
+    targets = [tuple(int(v) for v in t) for t in (targets or [])]
+    if any(len(t) != 2 for t in targets):
+        raise _error("target", "targets: expected (line, bin) pairs")
+    return _ris._quality(np.asarray(power_w, dtype=np.float32), _optional_grid(mask),
+                         _optional_grid(categories), regions, int(window), int(mask_bit), targets,
+                         float(line_spacing_m), float(range_bin_m))
+
+
+def compare(simulated_w, real_w, register=True, max_shift_px=16, mask=None, categories=None,
+            local_incidence_deg=None, return_aligned=False):
+    """``ris compare``'s measures of a simulated and a real power image on one
+    grid (rows, cols), as a dict.
+
+    The keys and numbers of ``ris compare --json`` (docs/quality.md) without
+    its ``simulated`` and ``real`` entries: ``registration`` (unless
+    ``register=False``), ``agreement``, ``histogram_hellinger``; with
+    ``categories`` ``category_bias``, with ``mask`` (the simulation's
+    mask_slant.tif values) ``masks``, with ``local_incidence_deg``
+    ``baselines``. ``return_aligned=True`` returns ``(measures, real_aligned)``,
+    the real image moved onto the simulation's grid.
+    """
+    measures, aligned = _ris._compare(np.asarray(simulated_w, dtype=np.float32),
+                                      np.asarray(real_w, dtype=np.float32), bool(register),
+                                      int(max_shift_px), _optional_grid(mask),
+                                      _optional_grid(categories),
+                                      _optional_grid(local_incidence_deg))
+    return (measures, aligned) if return_aligned else measures
