@@ -193,8 +193,9 @@ TEST(SceneCli, VrtSceneSimulatesAsTheGeoTiff) {
   for (std::size_t i = 0; i < built.size(); i += 997)
     EXPECT_EQ(cats.data[i], built.category[i]) << i;
   for (const char* form : {"ku.vrt", "ku.tif"}) {
-    r = test::run_ris("simulate --scene " + q(dir / form) + " --products mean_power_slant,mask_slant" +
-                      " --out " + q(dir / (std::string(form) + ".out")));
+    r = test::run_ris("simulate --scene " + q(dir / form) +
+                      " --products mean_power_slant,mask_slant" + " --out " +
+                      q(dir / (std::string(form) + ".out")));
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
   for (const char* product : {"mean_power_slant.tif", "mask_slant.tif"}) {

@@ -1,7 +1,7 @@
 #include "ris/scene/scene_io.h"
 
-#include <fmt/format.h>
 #include <cpl_error.h>
+#include <fmt/format.h>
 #include <gdal.h>
 #include <gdal_utils.h>
 #include <spdlog/spdlog.h>
@@ -46,8 +46,7 @@ void write_scene_vrt(const std::filesystem::path& vrt, const RasterMetadata& met
   GDALBuildVRTOptions* options = GDALBuildVRTOptionsNew(const_cast<char**>(args), nullptr);
   const char* sources[] = {elevation.c_str(), category.c_str()};
   int usage_error = 0;
-  GdalDataset ds(
-      GDALBuildVRT(out.temp_path().c_str(), 2, nullptr, sources, options, &usage_error));
+  GdalDataset ds(GDALBuildVRT(out.temp_path().c_str(), 2, nullptr, sources, options, &usage_error));
   GDALBuildVRTOptionsFree(options);
   if (ds == nullptr)
     throw InputError(vrt.string(), "", "cannot write the scene VRT: " + last_gdal_error());
