@@ -3,8 +3,10 @@
 //
 //   line source  ->  per-line stages  ->  profile rows + scene-map sink
 //   (terrain of     (look geometry,       (SlarLineProfiles; the source's
-//    a line)         radiometry, image     own map writer)
-//                    formation)
+//    a line)         radiometry, image     own map writer) + kept-geometry
+//                    formation, point      sink (LineKeep: the per-sample
+//                    targets)              geometry and element power of
+//                                          the whole run, when asked for)
 //
 // A run supplies a thread source: made once per thread (its scratch and
 // buffers), it hands out, once per block of lines, the source that fits the
@@ -59,8 +61,12 @@ constexpr bool makes_geometry() {
 struct LineStages {
   const SlarElementContext& ctx;
   LineLookFrame look;
-  bool need_incidence = false;
+  bool need_incidence = false;  // true when keep->geometry (the kept geometry holds it)
   double range_window_bins = 0.0;
+  // The kept-geometry sink and point targets (null: none): each line's
+  // geometry, element power and point returns, as the stage path
+  // (compute_slar_geometry + form_slar_image) keeps and adds them.
+  const LineKeep* keep = nullptr;
 };
 
 // Runs lines [line0, line1) in blocks of block_lines: fills their rows of
@@ -90,7 +96,7 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
                 line_geometry(*span.layout, stages.look, stages.need_incidence, s);
               }
               in_swath += accumulate_line(stages.ctx, span.n, s, prof, line, local,
-                                          stages.range_window_bins, span.first);
+                                          stages.range_window_bins, span.first, stages.keep, &g);
               source.store_maps(line, span, s);
             }
             source.finish_block();
