@@ -1,5 +1,6 @@
-// Internal: the line engine every fused SLAR / incoherent SAR run goes
-// through (in memory along a grid axis or off it, streamed in blocks):
+// Internal: the line engine every simulation run goes through (SLAR and SAR
+// in memory along a grid axis or off it, streamed in blocks, on an
+// acquisition's grid; PPI rays):
 //
 //   line source  ->  per-line stages  ->  profile rows + scene-map sink
 //   (terrain of     (look geometry,       (SlarLineProfiles; the source's
@@ -19,9 +20,10 @@
 //   void store_maps(int line, const LineSpan&, const LineScratch& s)
 //   void finish_block()                        e.g. a tile's maps written back
 // A source whose terrain is not a flat-Earth line (an acquisition's radar
-// grid on the ellipsoid: sim/acquisition_lines.h) computes the look geometry
-// itself in load() and says so with `static constexpr bool
-// kMakesGeometry = true`; the engine then skips line_geometry. Later sources
+// grid on the ellipsoid: sim/acquisition_lines.h; a PPI ray from its site:
+// ppi_simulation.cpp's PolarSource) computes the look geometry itself in
+// load() and says so with `static constexpr bool kMakesGeometry = true`;
+// the engine then skips line_geometry. Later sources
 // (an MPI rank's block range) add a thread source, not a driver.
 //
 // Blocks go to threads dynamically; each line's profile row and each cell's
