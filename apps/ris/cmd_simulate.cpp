@@ -36,6 +36,7 @@
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/run.h"
 #include "ris/sim/slar_products.h"
+#include "ris/util/process_group.h"
 #include "ris/util/progress.h"
 #include "run_input_options.h"
 
@@ -154,6 +155,8 @@ void run_simulate(SimulateArgs& a) {
     };
   }
   const RunResult res = run_simulation(r, callbacks);
+  // The other ranks of an MPI run computed blocks; rank 0 wrote and reports.
+  if (process_group().rank() != 0) return;
   if (res.kind == RunKind::streamed) {
     print_streamed(r, res);
   } else {

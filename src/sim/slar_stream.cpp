@@ -7,11 +7,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <vector>
@@ -34,9 +38,11 @@
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/sim/slar_run_setup.h"
 #include "ris/util/error.h"
+#include "ris/util/process_group.h"
 #include "ris/util/progress.h"
 #include "ris/util/rank_select.h"
 #include "ris/util/resource_guard.h"
+#include "sim/block_schedule.h"
 
 namespace ris {
 
@@ -84,7 +90,10 @@ struct SceneSummary {
 // on_new_category(c, row, col): called at the first cell of each category,
 // so a category the backscatter source lacks stops the run there rather
 // than after the whole pass.
-SceneSummary summarise_scene(const SceneStreamReader& in, int block_rows, ProgressBar& bar,
+// Rows [row_begin, row_end) (an MPI rank's part; reduce_scene_summary
+// combines the parts).
+SceneSummary summarise_scene(const SceneStreamReader& in, int row_begin, int row_end,
+                             int block_rows, ProgressBar& bar,
                              const std::function<void(std::uint16_t, int, int)>& on_new_category) {
   const Scene& g = in.grid();
   SceneSummary s;
@@ -93,8 +102,8 @@ SceneSummary summarise_scene(const SceneStreamReader& in, int block_rows, Progre
   std::vector<float> z(cap);
   std::vector<std::uint16_t> cat(cap);
   std::vector<std::uint8_t> ok(cap);
-  for (int r0 = 0; r0 < g.rows; r0 += block_rows) {
-    const int n = std::min(block_rows, g.rows - r0);
+  for (int r0 = row_begin; r0 < row_end; r0 += block_rows) {
+    const int n = std::min(block_rows, row_end - r0);
     in.read(r0, n, 0, g.cols, z.data(), cat.data(), ok.data());
     const std::size_t cells = sz(n) * sz(g.cols);
     for (std::size_t i = 0; i < cells; ++i) {
@@ -124,6 +133,49 @@ SceneSummary summarise_scene(const SceneStreamReader& in, int block_rows, Progre
   return s;
 }
 
+// The whole scene's summary from every rank's part (rows in rank order),
+// on every rank: counts summed, categories merged, and the extremes folded
+// in rank order with the same strict comparisons as summarise_scene, so the
+// highest cell is the first in row order, as one process finds it.
+void reduce_scene_summary(ProcessGroup& g, SceneSummary& s) {
+  if (g.size() == 1) return;
+  std::vector<std::uint64_t> counts(65536 + 2, 0);
+  counts[0] = static_cast<std::uint64_t>(s.valid_cells);
+  counts[1] = static_cast<std::uint64_t>(s.nodata_cells);
+  for (std::uint16_t c : s.categories) counts[2 + sz(c)] = 1;
+  g.sum(counts);
+  s.valid_cells = static_cast<std::int64_t>(counts[0]);
+  s.nodata_cells = static_cast<std::int64_t>(counts[1]);
+  s.categories.clear();
+  for (std::size_t c = 0; c < 65536; ++c)
+    if (counts[2 + c] > 0) s.categories.push_back(static_cast<std::uint16_t>(c));
+  std::vector<std::uint64_t> top = s.elevation.counters();
+  g.sum(top);
+  s.elevation.set_counters(top);
+  struct Extremes {
+    float h_min, h_max;
+    int max_row, max_col;
+  };
+  const Extremes mine{s.h_min, s.h_max, s.max_row, s.max_col};
+  std::vector<char> bytes(sizeof(Extremes));
+  std::memcpy(bytes.data(), &mine, sizeof(Extremes));
+  const std::vector<std::vector<char>> all = g.all_gather(bytes);
+  s.h_min = std::numeric_limits<float>::infinity();
+  s.h_max = -std::numeric_limits<float>::infinity();
+  s.max_row = s.max_col = -1;
+  for (const std::vector<char>& b : all) {
+    Extremes e{};
+    RIS_CHECK(b.size() == sizeof(Extremes));
+    std::memcpy(&e, b.data(), sizeof(Extremes));
+    if (e.h_min < s.h_min) s.h_min = e.h_min;
+    if (e.h_max > s.h_max) {
+      s.h_max = e.h_max;
+      s.max_row = e.max_row;
+      s.max_col = e.max_col;
+    }
+  }
+}
+
 // Exact median of the values counted in pass 1 and refined in pass 2: the
 // upper median (nth_element at n / 2) or, with both_middles, the mean of the
 // two middle values for an even count (median_valid_power_w).
@@ -142,6 +194,24 @@ double median_value(const FloatRankSelect& sel, std::uint64_t n, bool both_middl
 // Whether the track runs along y (lines are cell rows), as fused_slar_applies.
 bool along_y_axis(const Track& t) {
   return std::abs(std::abs(t.along_y) - 1.0) < 1e-9;
+}
+
+// How an MPI run hands out pass 1's blocks (src/sim/block_schedule.h):
+// RIS_MPI_SCHEDULE=interleaved or dynamic (the default; docs/scale.md).
+detail::BlockSchedule block_schedule_from_environment() {
+  const char* v = std::getenv("RIS_MPI_SCHEDULE");
+  if (v == nullptr || std::string(v).empty() || std::string(v) == "dynamic")
+    return detail::BlockSchedule::dynamic;
+  if (std::string(v) == "interleaved") return detail::BlockSchedule::interleaved;
+  throw InputError("", "RIS_MPI_SCHEDULE",
+                   fmt::format("expected dynamic or interleaved, got '{}'", v));
+}
+
+// The failure tests' hook: RIS_FAIL_BLOCK=b makes pass 1's block b throw on
+// the rank that computes it (tests/mpi_cli_test.cpp); unset: -1, none.
+int failing_block_from_environment() {
+  const char* v = std::getenv("RIS_FAIL_BLOCK");
+  return v == nullptr ? -1 : std::atoi(v);
 }
 
 // A pixel counted by the auto greytone reference (ris/image/greytone.h).
@@ -176,7 +246,12 @@ class StreamRun {
   StreamRun(const std::filesystem::path& scene_path, const RadarParams& radar,
             const Sigma0Source& sigma0, const SlarRunInfo& info,
             const std::filesystem::path& out_dir, const SlarStreamOptions& options)
-      : in_(scene_path), options_(options), info_(info), out_dir_(out_dir) {
+      : in_(scene_path),
+        schedule_(block_schedule_from_environment()),
+        fail_block_(failing_block_from_environment()),
+        options_(options),
+        info_(info),
+        out_dir_(out_dir) {
     summary_.grid = in_.grid();
     summary_.sim.radar = radar;
     summary_.sim.derived = derive(summary_.sim.radar);
@@ -185,26 +260,42 @@ class StreamRun {
     georef_ = Georef{grid().geotransform(), grid().crs_wkt};
   }
 
+  // Every rank of an MPI run (ris/util/process_group.h) runs passes 0 and
+  // 1 on its part; rank 0 alone writes, and runs the passes after 1.
   SlarStreamSummary run(const Sigma0Source& sigma0) {
     plan();
+    const bool root = group_.rank() == 0;
     bar_.emplace("simulate (streamed)", 3 * std::int64_t(grid().rows) * grid().cols, "cells",
-                 options_.quiet);
+                 options_.quiet || !root);
     stage("scene statistics");
+    // This rank's rows: whole blocks of scene_block_rows_, split evenly.
+    const int row_blocks = (grid().rows + scene_block_rows_ - 1) / scene_block_rows_;
+    const auto part_row = [&](int rank) {
+      const auto b = std::int64_t(row_blocks) * rank / group_.size();
+      return static_cast<int>(std::min<std::int64_t>(b * scene_block_rows_, grid().rows));
+    };
     // Every category checked against the backscatter source at its first
     // cell (a scene of one undefined category fails at once, not after the
-    // pass).
-    ss_ = summarise_scene(in_, scene_block_rows_, *bar_, [&](std::uint16_t c, int row, int col) {
-      if (c == kNoDataCategory || sigma0.has_category(c)) return;
-      throw InputError(backscatter_file_, "",
-                       fmt::format("no backscatter for category {} (the scene {} uses it, "
-                                   "first at row {}, column {}; add it to the backscatter "
-                                   "file or give another with --backscatter)",
-                                   c, in_.path(), row, col));
-    });
+    // pass; in an MPI run, the first in the rank's rows).
+    ss_ = summarise_scene(in_, part_row(group_.rank()), part_row(group_.rank() + 1),
+                          scene_block_rows_, *bar_, [&](std::uint16_t c, int row, int col) {
+                            if (c == kNoDataCategory || sigma0.has_category(c)) return;
+                            throw InputError(
+                                backscatter_file_, "",
+                                fmt::format("no backscatter for category {} (the scene {} uses "
+                                            "it, first at row {}, column {}; add it to the "
+                                            "backscatter file or give another with --backscatter)",
+                                            c, in_.path(), row, col));
+                          });
+    reduce_scene_summary(group_, ss_);
     stage_done();
     set_up_stages(sigma0);
-    dir_.emplace(out_dir_);
+    if (root) dir_.emplace(out_dir_);
     lines_pass();
+    if (!root) {
+      summary_.sim.warnings.clear();  // rank 0 reports them
+      return std::move(summary_);
+    }
     const GreytoneMap map = make_greytone_map_for_median(radar(), median_mean_power());
     set_ground_grid();
     stage("greytones, ground range, PNGs (pass 2)");
@@ -327,11 +418,27 @@ class StreamRun {
     return k;
   }
 
+  // A block of lines as computed by any rank and consumed, in line order, by
+  // rank 0 (src/sim/block_schedule.h): its profile rows, counts and its own
+  // cells' scene-grid maps (in the writers' layout).
+  struct LineBlock {
+    int l0 = 0, l1 = 0;
+    SlarLineProfiles prof;
+    SlarLineCounts counts;
+    std::vector<std::uint8_t> scene_mask;
+    std::vector<float> incidence;
+  };
+
   void lines_pass() {
     const SlarGeometry& g = sim().geometry;
     const SlarLineEngine engine(grid(), g, rs_.lut, rs_.imaging, radar().source_file);
-    SlarAzimuthIntegrator az(rs_.imaging, g.line_spacing_m, lines(), bins());
-    LineSinks sinks = open_line_sinks();
+    const bool root = group_.rank() == 0;
+    std::optional<SlarAzimuthIntegrator> az;
+    std::optional<LineSinks> sinks;
+    if (root) {
+      az.emplace(rs_.imaging, g.line_spacing_m, lines(), bins());
+      sinks.emplace(open_line_sinks());
+    }
     // N per range bin, as make_greytone_image.
     looks_.resize(sz(bins()));
     for (int k = 0; k < bins(); ++k)
@@ -340,68 +447,172 @@ class StreamRun {
     z_.resize(win_cap);
     cat_.resize(win_cap);
     ok_.resize(win_cap);
-    std::vector<float> incidence(win_cap);
-    std::vector<std::uint8_t> scene_mask(win_cap);
-    SlarLineProfiles prof;
+    window_incidence_.resize(win_cap);
+    window_mask_.resize(win_cap);
     SlarLineCounts counts;
     std::int64_t samples_in_swath = 0;
+    const int blocks = (lines() + block_lines() - 1) / block_lines();
 
     stage("geometry, image formation, scene maps, fading (pass 1)");
-    for (int l0 = 0; l0 < lines(); l0 += block_lines()) {
-      const int l1 = std::min(lines(), l0 + block_lines());
-      int row0 = 0, rows = 0, col0 = 0, cols = 0;
-      engine.window_for_lines(l0, l1, row0, rows, col0, cols);
-      in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
-      const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
-      const SceneMapsWindow maps{row0, col0, rows, cols, scene_mask.data(), incidence.data()};
-      prof.allocate(l1 - l0, bins(), l0);
-      engine.run(l0, l1, win, prof, maps, counts);
-      samples_in_swath += prof.samples_in_swath;
-      write_block_maps(engine, l0, l1, win, maps, sinks);
-      write_shadow_text(prof, l0, l1, sinks.shadow_text);
-      az.push(prof, l1 - l0);
-      emit_ready(az, sinks);
-      bar_->advance(std::int64_t(l1 - l0) * cross_cells_);
-      ++summary_.blocks;
+    detail::run_blocks_in_order<LineBlock>(
+        group_, blocks, schedule_, [&](int b) { return compute_block(engine, b); },
+        [](const LineBlock& k, std::vector<char>& out) { pack_block(k, out); },
+        [](const char* p, std::size_t n) { return unpack_block(p, n); },
+        [&](int, LineBlock& k) {
+          counts.add(k.counts);
+          samples_in_swath += k.prof.samples_in_swath;
+          write_block_maps(k, *sinks);
+          write_shadow_text(k.prof, k.l0, k.l1, sinks->shadow_text);
+          az->push(k.prof, k.l1 - k.l0);
+          emit_ready(*az, *sinks);
+          bar_->advance(std::int64_t(k.l1 - k.l0) * cross_cells_);
+          ++summary_.blocks;
+          if (spare_.size() < 2) spare_.push_back(std::move(k));
+        });
+    // The median elevation's second pass: every rank refined its blocks.
+    if (group_.size() > 1) {
+      std::vector<std::uint64_t> low = ss_.elevation.counters();
+      group_.sum(low);
+      ss_.elevation.set_counters(low);
     }
-    RIS_CHECK(az.lines_emitted() == lines());
+    if (!root) return;
+    RIS_CHECK(az->lines_emitted() == lines());
     finish_counts(counts, samples_in_swath);
-    sinks.mean->close();
-    sinks.speckled->close();
-    sinks.mask->close();
-    sinks.scene_mask->close();
-    sinks.incidence->close();
-    sinks.shadow_text.close();
-    if (!sinks.shadow_text)
+    sinks->mean->close();
+    sinks->speckled->close();
+    sinks->mask->close();
+    sinks->scene_mask->close();
+    sinks->incidence->close();
+    sinks->shadow_text.close();
+    if (!sinks->shadow_text)
       throw InputError(dir_->path("shadowmap.txt").string(), "", "write failed");
     stage_done();
   }
 
+  // Block b's lines through the line engine, on this rank: its window (the
+  // lines' cells and their halo) read from the scene file, geometry, image
+  // formation and its own cells' maps; the median elevation's second pass
+  // over its own cells.
+  LineBlock compute_block(const SlarLineEngine& engine, int b) {
+    LineBlock k;
+    if (!spare_.empty()) {  // buffers reused
+      k = std::move(spare_.back());
+      spare_.pop_back();
+    }
+    if (b == fail_block_) {
+      throw std::runtime_error(fmt::format("block {}: a failure injected by RIS_FAIL_BLOCK", b));
+    }
+    k.l0 = b * block_lines();
+    k.l1 = std::min(lines(), k.l0 + block_lines());
+    k.counts = SlarLineCounts();
+    int row0 = 0, rows = 0, col0 = 0, cols = 0;
+    engine.window_for_lines(k.l0, k.l1, row0, rows, col0, cols);
+    in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
+    const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
+    const SceneMapsWindow maps{
+        row0, col0, rows, cols, window_mask_.data(), window_incidence_.data()};
+    k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
+    k.prof.samples_in_swath = 0;
+    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts);
+    keep_block_maps(engine, win, maps, k);
+    return k;
+  }
+
+  static void pack_block(const LineBlock& k, std::vector<char>& out) {
+    const auto put = [&](const void* p, std::size_t n) {
+      const char* c = static_cast<const char*>(p);
+      out.insert(out.end(), c, c + n);
+    };
+    const int head[5] = {k.l0, k.l1, k.prof.line0, k.prof.lines, k.prof.bins};
+    put(head, sizeof(head));
+    put(&k.prof.samples_in_swath, sizeof(std::int64_t));
+    put(&k.counts, sizeof(SlarLineCounts));
+    const std::size_t np = k.prof.power_w.size(), nm = k.scene_mask.size();
+    put(&nm, sizeof(nm));
+    put(k.prof.power_w.data(), np * sizeof(float));
+    put(k.prof.area_m2.data(), np * sizeof(float));
+    put(k.prof.touch.data(), np);
+    put(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
+    put(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
+    put(k.scene_mask.data(), nm);
+    put(k.incidence.data(), nm * sizeof(float));
+  }
+
+  static LineBlock unpack_block(const char* p, std::size_t n) {
+    const char* const end = p + n;
+    const auto get = [&](void* to, std::size_t bytes) {
+      RIS_CHECK(std::size_t(end - p) >= bytes);
+      std::memcpy(to, p, bytes);
+      p += bytes;
+    };
+    LineBlock k;
+    int head[5] = {};
+    get(head, sizeof(head));
+    k.l0 = head[0];
+    k.l1 = head[1];
+    k.prof.line0 = head[2];
+    k.prof.lines = head[3];
+    k.prof.bins = head[4];
+    get(&k.prof.samples_in_swath, sizeof(std::int64_t));
+    get(&k.counts, sizeof(SlarLineCounts));
+    std::size_t nm = 0;
+    get(&nm, sizeof(nm));
+    const std::size_t np = sz(k.prof.lines) * sz(k.prof.bins);
+    k.prof.power_w.resize(np);
+    k.prof.area_m2.resize(np);
+    k.prof.touch.resize(np);
+    k.prof.mapped_count.resize(np);
+    k.prof.visible_count.resize(np);
+    get(k.prof.power_w.data(), np * sizeof(float));
+    get(k.prof.area_m2.data(), np * sizeof(float));
+    get(k.prof.touch.data(), np);
+    get(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
+    get(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
+    k.scene_mask.resize(nm);
+    k.incidence.resize(nm);
+    get(k.scene_mask.data(), nm);
+    get(k.incidence.data(), nm * sizeof(float));
+    RIS_CHECK(p == end);
+    return k;
+  }
+
   // The block's own cells (its lines' rows or columns, without the halo):
-  // scene-grid maps out, the median elevation's second pass.
-  void write_block_maps(const SlarLineEngine& engine, int l0, int l1, const SceneWindow& win,
-                        const SceneMapsWindow& maps, LineSinks& sinks) {
-    const int c_a = engine.cell_of_line(l0), c_b = engine.cell_of_line(l1 - 1);
-    RIS_CHECK(c_a >= 0 && c_b >= 0 && std::abs(c_b - c_a) == l1 - l0 - 1);
-    const int lo = std::min(c_a, c_b), count = l1 - l0;
+  // their scene-grid maps kept for the writers (count rows x cols along y,
+  // rows x count across), the median elevation's second pass.
+  void keep_block_maps(const SlarLineEngine& engine, const SceneWindow& win,
+                       const SceneMapsWindow& maps, LineBlock& k) {
+    const int c_a = engine.cell_of_line(k.l0), c_b = engine.cell_of_line(k.l1 - 1);
+    RIS_CHECK(c_a >= 0 && c_b >= 0 && std::abs(c_b - c_a) == k.l1 - k.l0 - 1);
+    const int lo = std::min(c_a, c_b), count = k.l1 - k.l0;
     const int cols = win.cols;
     if (along_y_axis(sim().track)) {
       const std::size_t at = sz(lo - win.row0) * sz(cols);
-      sinks.scene_mask->write(maps.mask + at, count);
-      sinks.incidence->write(maps.local_incidence_deg + at, count);
-      for (std::size_t i = at; i < at + sz(count) * sz(cols); ++i)
+      const std::size_t n = sz(count) * sz(cols);
+      k.scene_mask.assign(maps.mask + at, maps.mask + at + n);
+      k.incidence.assign(maps.local_incidence_deg + at, maps.local_incidence_deg + at + n);
+      for (std::size_t i = at; i < at + n; ++i)
         if (ok_[i] && std::isfinite(z_[i])) ss_.elevation.refine(z_[i]);
     } else {
       const std::size_t at = sz(lo - win.col0);
-      sinks.scene_mask->write(maps.mask + at, count, sz(cols));
-      sinks.incidence->write(maps.local_incidence_deg + at, count, sz(cols));
+      k.scene_mask.resize(sz(win.rows) * sz(count));
+      k.incidence.resize(k.scene_mask.size());
       for (int r = 0; r < win.rows; ++r) {
+        const std::size_t from = sz(r) * sz(cols) + at, to = sz(r) * sz(count);
+        std::copy_n(maps.mask + from, count, k.scene_mask.data() + to);
+        std::copy_n(maps.local_incidence_deg + from, count, k.incidence.data() + to);
         for (int c = lo; c < lo + count; ++c) {
           const std::size_t i = sz(r) * sz(cols) + sz(c - win.col0);
           if (ok_[i] && std::isfinite(z_[i])) ss_.elevation.refine(z_[i]);
         }
       }
     }
+  }
+
+  // A block's maps out, in line order (rank 0).
+  void write_block_maps(const LineBlock& k, LineSinks& sinks) {
+    const int count = k.l1 - k.l0;
+    sinks.scene_mask->write(k.scene_mask.data(), count);
+    sinks.incidence->write(k.incidence.data(), count);
   }
 
   // The seed's shadow map, line by line (ris/image/shadow_map.h).
@@ -651,6 +862,9 @@ class StreamRun {
   }
 
   const SceneStreamReader in_;
+  ProcessGroup& group_ = process_group();
+  const detail::BlockSchedule schedule_;
+  const int fail_block_;  // RIS_FAIL_BLOCK, -1: none
   const SlarStreamOptions& options_;
   const SlarRunInfo& info_;
   const std::filesystem::path out_dir_;
@@ -673,6 +887,9 @@ class StreamRun {
   std::vector<float> z_;
   std::vector<std::uint16_t> cat_;
   std::vector<std::uint8_t> ok_;
+  std::vector<float> window_incidence_;
+  std::vector<std::uint8_t> window_mask_;
+  std::vector<LineBlock> spare_;  // pass 1's consumed blocks, their buffers reused
   std::vector<float> mean_, speckled_;
   std::vector<std::uint8_t> mask_;
   std::vector<std::int32_t> pix_line_, pix_bin_;

@@ -1,0 +1,120 @@
+// The tool built with MPI (Debian's OpenMPI): the ranks of MPI_COMM_WORLD as
+// a ProcessGroup. MPI is started only when a launcher started this process
+// (its environment says so), so `ris` run by hand never initialises MPI.
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
+#include "process_group_start.h"
+#include "ris/util/error.h"
+
+namespace ris::app {
+
+namespace {
+
+// Set by mpirun/mpiexec (OpenMPI), PMIx launchers (srun --mpi=pmix) and PMI
+// launchers (MPICH, srun --mpi=pmi2).
+bool started_by_mpi_launcher() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"}) {
+    if (std::getenv(v) != nullptr) return true;
+  }
+  return false;
+}
+
+int checked_count(std::size_t bytes) {
+  RIS_CHECK(bytes <= std::size_t(std::numeric_limits<int>::max()));
+  return static_cast<int>(bytes);
+}
+
+class MpiProcessGroup final : public ProcessGroup {
+ public:
+  MpiProcessGroup(int& argc, char**& argv) {
+    int provided = 0;
+    // Funneled: MPI is called from the main thread only, outside OpenMP regions.
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  }
+  ~MpiProcessGroup() override { MPI_Finalize(); }
+  MpiProcessGroup(const MpiProcessGroup&) = delete;
+  MpiProcessGroup& operator=(const MpiProcessGroup&) = delete;
+
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+
+  void send(int to, int tag, const void* data, std::size_t bytes) override {
+    MPI_Send(data, checked_count(bytes), MPI_BYTE, to, tag, MPI_COMM_WORLD);
+  }
+
+  Message receive(int source, int tag) override {
+    MPI_Status st;
+    MPI_Probe(source == kAny ? MPI_ANY_SOURCE : source, tag == kAny ? MPI_ANY_TAG : tag,
+              MPI_COMM_WORLD, &st);
+    int count = 0;
+    MPI_Get_count(&st, MPI_BYTE, &count);
+    Message m;
+    m.source = st.MPI_SOURCE;
+    m.tag = st.MPI_TAG;
+    m.bytes.resize(static_cast<std::size_t>(count));
+    MPI_Recv(m.bytes.data(), count, MPI_BYTE, m.source, m.tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    return m;
+  }
+
+  bool message_waiting(int source, int tag) override {
+    int flag = 0;
+    MPI_Iprobe(source == kAny ? MPI_ANY_SOURCE : source, tag == kAny ? MPI_ANY_TAG : tag,
+               MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
+    return flag != 0;
+  }
+
+  void sum(std::vector<std::uint64_t>& values) override {
+    // In pieces of at most INT_MAX elements (MPI counts are int).
+    constexpr std::size_t kPiece = std::size_t(1) << 28;
+    for (std::size_t at = 0; at < values.size(); at += kPiece) {
+      const std::size_t n = std::min(kPiece, values.size() - at);
+      MPI_Allreduce(MPI_IN_PLACE, values.data() + at, static_cast<int>(n), MPI_UINT64_T, MPI_SUM,
+                    MPI_COMM_WORLD);
+    }
+  }
+
+  std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) override {
+    const int n = checked_count(mine.size());
+    std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size());
+    MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    std::size_t total = 0;
+    for (std::size_t r = 0; r < counts.size(); ++r) {
+      offsets[r] = checked_count(total);
+      total += static_cast<std::size_t>(counts[r]);
+    }
+    std::vector<char> all(std::max<std::size_t>(total, 1));
+    MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE,
+                   MPI_COMM_WORLD);
+    std::vector<std::vector<char>> out(counts.size());
+    for (std::size_t r = 0; r < counts.size(); ++r) {
+      const auto* p = all.data() + offsets[r];
+      out[r].assign(p, p + counts[r]);
+    }
+    return out;
+  }
+
+  void barrier() override { MPI_Barrier(MPI_COMM_WORLD); }
+
+  [[noreturn]] void abort(int exit_code) override {
+    MPI_Abort(MPI_COMM_WORLD, exit_code);
+    std::_Exit(exit_code);
+  }
+
+ private:
+  int rank_ = 0, size_ = 1;
+};
+
+}  // namespace
+
+std::unique_ptr<ProcessGroup> join_process_group(int& argc, char**& argv) {
+  if (!started_by_mpi_launcher()) return nullptr;
+  return std::make_unique<MpiProcessGroup>(argc, argv);
+}
+
+}  // namespace ris::app
