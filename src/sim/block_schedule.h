@@ -70,7 +70,10 @@ void run_blocks_in_order(ProcessGroup& g, int n, BlockSchedule schedule, Compute
         b = next_static;
         next_static += ranks;
       }
-      if (b < 0) return;
+      if (b < 0) {
+        g.finish_sends();
+        return;
+      }
       std::vector<char> bytes(sizeof(int));
       std::memcpy(bytes.data(), &b, sizeof(int));
       try {
@@ -86,7 +89,9 @@ void run_blocks_in_order(ProcessGroup& g, int n, BlockSchedule schedule, Compute
         // Rank 0 ends the run (ProcessGroup::abort) once it has cleaned up.
         for (;;) g.receive(0, ProcessGroup::kAny);
       }
-      g.send(0, kResult, bytes.data(), bytes.size());
+      // Without waiting for rank 0 (busy with a block of its own, maybe):
+      // on to the next block.
+      g.send_later(0, kResult, std::move(bytes));
     }
   }
   // Rank 0.

@@ -358,7 +358,13 @@ class StreamRun {
             ? std::min(options_.block_lines, n)
             : static_cast<int>(std::clamp<std::int64_t>(options_.memory_budget_bytes / per_line, 16,
                                                         std::max(n, 16)));
-    summary_.block_lines = std::min(block_lines, n);
+    // Over several MPI ranks, at least 4 blocks a rank, so the queue has
+    // blocks to balance (the bytes do not depend on the block length).
+    const int ranks = group_.size();
+    const int for_ranks = ranks > 1 && options_.block_lines <= 0
+                              ? std::max(16, (n + 4 * ranks - 1) / (4 * ranks))
+                              : n;
+    summary_.block_lines = std::min({block_lines, n, for_ranks});
     // Scene rows read at a time by the passes over whole rows.
     scene_block_rows_ = std::min(grid().rows, std::max(in_.block_rows(), 256));
   }

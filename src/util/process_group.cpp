@@ -16,6 +16,10 @@ class SingleProcess final : public ProcessGroup {
   void send(int, int, const void*, std::size_t) override {
     RIS_CHECK(false && "a single process has no other rank to send to");
   }
+  void send_later(int, int, std::vector<char>&&) override {
+    RIS_CHECK(false && "a single process has no other rank to send to");
+  }
+  void finish_sends() override {}
   Message receive(int, int) override {
     RIS_CHECK(false && "a single process has no other rank to receive from");
     return {};

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <deque>
 #include <limits>
+#include <vector>
 
 #include "process_group_start.h"
 #include "ris/util/error.h"
@@ -46,6 +48,20 @@ class MpiProcessGroup final : public ProcessGroup {
 
   void send(int to, int tag, const void* data, std::size_t bytes) override {
     MPI_Send(data, checked_count(bytes), MPI_BYTE, to, tag, MPI_COMM_WORLD);
+  }
+
+  void send_later(int to, int tag, std::vector<char>&& bytes) override {
+    drop_sent(false);
+    while (pending_.size() >= kMaxPending) drop_sent(true);
+    pending_.emplace_back();
+    Pending& p = pending_.back();
+    p.bytes = std::move(bytes);
+    MPI_Isend(p.bytes.data(), checked_count(p.bytes.size()), MPI_BYTE, to, tag, MPI_COMM_WORLD,
+              &p.request);
+  }
+
+  void finish_sends() override {
+    while (!pending_.empty()) drop_sent(true);
   }
 
   Message receive(int source, int tag) override {
@@ -107,7 +123,30 @@ class MpiProcessGroup final : public ProcessGroup {
   }
 
  private:
+  struct Pending {
+    MPI_Request request = MPI_REQUEST_NULL;
+    std::vector<char> bytes;
+  };
+  static constexpr std::size_t kMaxPending = 2;
+
+  // Drops the sends that have gone, oldest first; wait: at least the oldest.
+  void drop_sent(bool wait) {
+    while (!pending_.empty()) {
+      int done = 0;
+      if (wait) {
+        MPI_Wait(&pending_.front().request, MPI_STATUS_IGNORE);
+        done = 1;
+        wait = false;
+      } else {
+        MPI_Test(&pending_.front().request, &done, MPI_STATUS_IGNORE);
+      }
+      if (!done) return;
+      pending_.pop_front();
+    }
+  }
+
   int rank_ = 0, size_ = 1;
+  std::deque<Pending> pending_;
 };
 
 }  // namespace

@@ -32,6 +32,12 @@ class ProcessGroup {
 
   // Point to point (blocking until the buffer may be reused).
   virtual void send(int to, int tag, const void* data, std::size_t bytes) = 0;
+  // The same without waiting for the receiver: the group keeps `bytes` until
+  // the message has gone (at most a few at a time: it waits for the oldest
+  // beyond that), so the caller computes on while the receiver is busy.
+  // finish_sends() waits for them all.
+  virtual void send_later(int to, int tag, std::vector<char>&& bytes) = 0;
+  virtual void finish_sends() = 0;
   struct Message {
     int source = -1;
     int tag = -1;
