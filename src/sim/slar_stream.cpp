@@ -5,10 +5,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -196,6 +198,13 @@ bool along_y_axis(const Track& t) {
   return std::abs(std::abs(t.along_y) - 1.0) < 1e-9;
 }
 
+// CPU time of this process (every thread), seconds.
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 // How an MPI run hands out pass 1's blocks (src/sim/block_schedule.h):
 // RIS_MPI_SCHEDULE=interleaved or dynamic (the default; docs/scale.md).
 detail::BlockSchedule block_schedule_from_environment() {
@@ -292,17 +301,22 @@ class StreamRun {
     set_up_stages(sigma0);
     if (root) dir_.emplace(out_dir_);
     lines_pass();
+    // Rank 0's median mean power (pass 1b) and the folder holding the slant
+    // products, for every rank's share of the geocoding.
+    const double median = root ? median_mean_power() : 0.0;
+    const auto [median_all, slant_dir] =
+        share_from_rank0(median, root ? dir_->path("").string() : std::string());
+    const GreytoneMap map = make_greytone_map_for_median(radar(), median_all);
+    set_ground_grid();
+    stage("geocoded products (pass 2b)");
+    geocoded_pass(map, slant_dir);
+    stage_done();
     if (!root) {
       summary_.sim.warnings.clear();  // rank 0 reports them
       return std::move(summary_);
     }
-    const GreytoneMap map = make_greytone_map_for_median(radar(), median_mean_power());
-    set_ground_grid();
     stage("greytones, ground range, PNGs (pass 2)");
     pictures_pass(map);
-    stage_done();
-    stage("geocoded products (pass 2b)");
-    geocoded_pass(map);
     stage_done();
     write_metadata(map);
     bar_->finish();
@@ -460,11 +474,24 @@ class StreamRun {
     const int blocks = (lines() + block_lines() - 1) / block_lines();
 
     stage("geometry, image formation, scene maps, fading (pass 1)");
+    // This process's CPU time (all its threads) in the two halves of pass 1,
+    // reported with the passes: what a rank computes, and what rank 0 alone
+    // does (docs/scale.md's cost model).
+    double compute_cpu = 0.0, consume_cpu = 0.0;
+    int computed = 0;
     detail::run_blocks_in_order<LineBlock>(
-        group_, blocks, schedule_, [&](int b) { return compute_block(engine, b); },
+        group_, blocks, schedule_,
+        [&](int b) {
+          const double t0 = process_cpu_seconds();
+          LineBlock k = compute_block(engine, b);
+          compute_cpu += process_cpu_seconds() - t0;
+          ++computed;
+          return k;
+        },
         [](const LineBlock& k, std::vector<char>& out) { pack_block(k, out); },
         [](const char* p, std::size_t n) { return unpack_block(p, n); },
         [&](int, LineBlock& k) {
+          const double t0 = process_cpu_seconds();
           counts.add(k.counts);
           samples_in_swath += k.prof.samples_in_swath;
           write_block_maps(k, *sinks);
@@ -474,6 +501,7 @@ class StreamRun {
           bar_->advance(std::int64_t(k.l1 - k.l0) * cross_cells_);
           ++summary_.blocks;
           if (spare_.size() < 2) spare_.push_back(std::move(k));
+          consume_cpu += process_cpu_seconds() - t0;
         });
     // The median elevation's second pass: every rank refined its blocks.
     if (group_.size() > 1) {
@@ -493,6 +521,11 @@ class StreamRun {
     if (!sinks->shadow_text)
       throw InputError(dir_->path("shadowmap.txt").string(), "", "write failed");
     stage_done();
+    summary_.stage_seconds.emplace_back(
+        fmt::format("CPU of pass 1 on rank 0: {} of {} blocks computed", computed, blocks),
+        compute_cpu);
+    summary_.stage_seconds.emplace_back(
+        "CPU of pass 1 on rank 0: integration, fading, writing (every block)", consume_cpu);
   }
 
   // Block b's lines through the line engine, on this rank: its window (the
@@ -778,11 +811,40 @@ class StreamRun {
   }
 
   // ---- Pass 2b: geocoded products, scene rows top down ------------------
-  void geocoded_pass(const GreytoneMap& map) {
-    GdalDataset sp_ds = open_raster(dir_->path("speckled_power_slant.tif").string());
-    GdalDataset mask_ds = open_raster(dir_->path("mask_slant.tif").string());
-    FloatWriter power_out = open_writer<float>("geocoded_power.tif", grid().cols, grid().rows);
-    ByteWriter grey_out = open_writer<std::uint8_t>("geocoded_grey.tif", grid().cols, grid().rows);
+  // (median, folder) as rank 0 has them, on every rank.
+  std::pair<double, std::string> share_from_rank0(double median, const std::string& folder) {
+    if (group_.size() == 1) return {median, folder};
+    std::array<char, sizeof(double)> m_bytes{};
+    std::memcpy(m_bytes.data(), &median, sizeof(double));
+    const std::string text = std::string(m_bytes.data(), m_bytes.size()) + folder;
+    const std::vector<char> mine(text.begin(), text.end());
+    const std::vector<char> root = group_.all_gather(mine).at(0);
+    RIS_CHECK(root.size() >= sizeof(double));
+    double m = 0.0;
+    std::memcpy(&m, root.data(), sizeof(double));
+    return {m, std::string(root.data() + sizeof(double), root.size() - sizeof(double))};
+  }
+
+  // A block of scene rows geocoded (any rank) for rank 0 to write.
+  struct GeoBlock {
+    int r0 = 0, rows = 0;
+    std::vector<float> power;
+    std::vector<std::uint8_t> grey;
+  };
+
+  // Every rank geocodes blocks of scene rows, reading the slant products
+  // rank 0 wrote into `slant_dir` (its staging folder: on a file system
+  // every rank sees); rank 0 writes them in row order.
+  void geocoded_pass(const GreytoneMap& map, const std::string& slant_dir) {
+    const std::filesystem::path dir(slant_dir);
+    GdalDataset sp_ds = open_raster((dir / "speckled_power_slant.tif").string());
+    GdalDataset mask_ds = open_raster((dir / "mask_slant.tif").string());
+    FloatWriter power_out;
+    ByteWriter grey_out;
+    if (group_.rank() == 0) {
+      power_out = open_writer<float>("geocoded_power.tif", grid().cols, grid().rows);
+      grey_out = open_writer<std::uint8_t>("geocoded_grey.tif", grid().cols, grid().rows);
+    }
     // Scene rows a tile row at a time (pass 1's window is freed).
     const int block_rows = scene_block_rows_;
     const std::size_t cap = sz(block_rows) * sz(grid().cols);
@@ -791,20 +853,50 @@ class StreamRun {
     ok_.resize(z_.size());
     pix_line_.resize(cap);
     pix_bin_.resize(cap);
-    std::vector<float> out_power(cap);
-    std::vector<std::uint8_t> out_grey(cap);
-    for (int r0 = 0; r0 < grid().rows; r0 += block_rows) {
-      const int n = std::min(block_rows, grid().rows - r0);
-      const std::size_t nc = sz(n) * sz(grid().cols);
-      in_.read(r0, n, 0, grid().cols, z_.data(), cat_.data(), ok_.data());
-      std::fill(out_power.begin(), out_power.begin() + static_cast<std::ptrdiff_t>(nc), kNaNf);
-      std::fill(out_grey.begin(), out_grey.begin() + static_cast<std::ptrdiff_t>(nc),
-                std::uint8_t{0});
-      geocode_rows(map, r0, n, sp_ds, mask_ds, out_power.data(), out_grey.data());
-      power_out->write(out_power.data(), n);
-      grey_out->write(out_grey.data(), n);
-      bar_->advance(static_cast<std::int64_t>(nc));
-    }
+    const int blocks = (grid().rows + block_rows - 1) / block_rows;
+    detail::run_blocks_in_order<GeoBlock>(
+        group_, blocks, schedule_,
+        [&](int b) {
+          GeoBlock k;
+          k.r0 = b * block_rows;
+          k.rows = std::min(block_rows, grid().rows - k.r0);
+          const std::size_t nc = sz(k.rows) * sz(grid().cols);
+          in_.read(k.r0, k.rows, 0, grid().cols, z_.data(), cat_.data(), ok_.data());
+          k.power.assign(nc, kNaNf);
+          k.grey.assign(nc, std::uint8_t{0});
+          geocode_rows(map, k.r0, k.rows, sp_ds, mask_ds, k.power.data(), k.grey.data());
+          return k;
+        },
+        [](const GeoBlock& k, std::vector<char>& out) {
+          const int head[2] = {k.r0, k.rows};
+          const char* h = reinterpret_cast<const char*>(head);
+          out.insert(out.end(), h, h + sizeof(head));
+          const char* p = reinterpret_cast<const char*>(k.power.data());
+          out.insert(out.end(), p, p + k.power.size() * sizeof(float));
+          const char* g = reinterpret_cast<const char*>(k.grey.data());
+          out.insert(out.end(), g, g + k.grey.size());
+        },
+        [&](const char* p, std::size_t n) {
+          GeoBlock k;
+          int head[2] = {};
+          RIS_CHECK(n >= sizeof(head));
+          std::memcpy(head, p, sizeof(head));
+          k.r0 = head[0];
+          k.rows = head[1];
+          const std::size_t nc = sz(k.rows) * sz(grid().cols);
+          RIS_CHECK(n == sizeof(head) + nc * (sizeof(float) + 1));
+          k.power.resize(nc);
+          k.grey.resize(nc);
+          std::memcpy(k.power.data(), p + sizeof(head), nc * sizeof(float));
+          std::memcpy(k.grey.data(), p + sizeof(head) + nc * sizeof(float), nc);
+          return k;
+        },
+        [&](int, GeoBlock& k) {
+          power_out->write(k.power.data(), k.rows);
+          grey_out->write(k.grey.data(), k.rows);
+          bar_->advance(static_cast<std::int64_t>(k.power.size()));
+        });
+    if (group_.rank() != 0) return;
     power_out->close();
     grey_out->close();
   }
