@@ -4,9 +4,13 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
 #include <cstdlib>
 #include <deque>
 #include <limits>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 #include "process_group_start.h"
@@ -34,12 +38,22 @@ class MpiProcessGroup final : public ProcessGroup {
  public:
   MpiProcessGroup(int& argc, char**& argv) {
     int provided = 0;
-    // Funneled: MPI is called from the main thread only, outside OpenMP regions.
-    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    // Serialized: the main thread (outside OpenMP regions) and the progress
+    // thread below, one at a time (mu_).
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    if (provided >= MPI_THREAD_SERIALIZED) progress_ = std::thread([this] { progress_loop(); });
   }
-  ~MpiProcessGroup() override { MPI_Finalize(); }
+  ~MpiProcessGroup() override {
+    {
+      const std::lock_guard<std::mutex> lock(mu_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    if (progress_.joinable()) progress_.join();
+    MPI_Finalize();
+  }
   MpiProcessGroup(const MpiProcessGroup&) = delete;
   MpiProcessGroup& operator=(const MpiProcessGroup&) = delete;
 
@@ -47,10 +61,12 @@ class MpiProcessGroup final : public ProcessGroup {
   int size() const override { return size_; }
 
   void send(int to, int tag, const void* data, std::size_t bytes) override {
+    const std::lock_guard<std::mutex> lock(mu_);
     MPI_Send(data, checked_count(bytes), MPI_BYTE, to, tag, MPI_COMM_WORLD);
   }
 
   void send_later(int to, int tag, std::vector<char>&& bytes) override {
+    const std::lock_guard<std::mutex> lock(mu_);
     drop_sent(false);
     while (pending_.size() >= kMaxPending) drop_sent(true);
     pending_.emplace_back();
@@ -58,13 +74,16 @@ class MpiProcessGroup final : public ProcessGroup {
     p.bytes = std::move(bytes);
     MPI_Isend(p.bytes.data(), checked_count(p.bytes.size()), MPI_BYTE, to, tag, MPI_COMM_WORLD,
               &p.request);
+    wake_.notify_all();
   }
 
   void finish_sends() override {
+    const std::lock_guard<std::mutex> lock(mu_);
     while (!pending_.empty()) drop_sent(true);
   }
 
   Message receive(int source, int tag) override {
+    const std::lock_guard<std::mutex> lock(mu_);
     MPI_Status st;
     MPI_Probe(source == kAny ? MPI_ANY_SOURCE : source, tag == kAny ? MPI_ANY_TAG : tag,
               MPI_COMM_WORLD, &st);
@@ -79,6 +98,7 @@ class MpiProcessGroup final : public ProcessGroup {
   }
 
   bool message_waiting(int source, int tag) override {
+    const std::lock_guard<std::mutex> lock(mu_);
     int flag = 0;
     MPI_Iprobe(source == kAny ? MPI_ANY_SOURCE : source, tag == kAny ? MPI_ANY_TAG : tag,
                MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
@@ -86,6 +106,7 @@ class MpiProcessGroup final : public ProcessGroup {
   }
 
   void sum(std::vector<std::uint64_t>& values) override {
+    const std::lock_guard<std::mutex> lock(mu_);
     // In pieces of at most INT_MAX elements (MPI counts are int).
     constexpr std::size_t kPiece = std::size_t(1) << 28;
     for (std::size_t at = 0; at < values.size(); at += kPiece) {
@@ -96,6 +117,7 @@ class MpiProcessGroup final : public ProcessGroup {
   }
 
   std::vector<std::vector<char>> all_gather(const std::vector<char>& mine) override {
+    const std::lock_guard<std::mutex> lock(mu_);
     const int n = checked_count(mine.size());
     std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size());
     MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
@@ -115,9 +137,13 @@ class MpiProcessGroup final : public ProcessGroup {
     return out;
   }
 
-  void barrier() override { MPI_Barrier(MPI_COMM_WORLD); }
+  void barrier() override {
+    const std::lock_guard<std::mutex> lock(mu_);
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
 
   [[noreturn]] void abort(int exit_code) override {
+    const std::lock_guard<std::mutex> lock(mu_);
     MPI_Abort(MPI_COMM_WORLD, exit_code);
     std::_Exit(exit_code);
   }
@@ -145,8 +171,30 @@ class MpiProcessGroup final : public ProcessGroup {
     }
   }
 
+  // While sends are pending, MPI_Test every 200 us: the progress a
+  // rendezvous transfer needs from the sender (copy-in/copy-out shared
+  // memory, TCP) while the main thread computes a block and makes no MPI
+  // call. Sleeps otherwise.
+  void progress_loop() {
+    std::unique_lock<std::mutex> lock(mu_);
+    while (!stop_) {
+      if (pending_.empty()) {
+        wake_.wait(lock);
+        continue;
+      }
+      drop_sent(false);
+      lock.unlock();
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      lock.lock();
+    }
+  }
+
   int rank_ = 0, size_ = 1;
   std::deque<Pending> pending_;
+  std::mutex mu_;  // one MPI call at a time (MPI_THREAD_SERIALIZED)
+  std::condition_variable wake_;
+  bool stop_ = false;
+  std::thread progress_;
 };
 
 }  // namespace
