@@ -19,7 +19,9 @@ ris=$(realpath "$build/ris")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-export OMPI_MCA_btl_vader_single_copy_mechanism=none
+# OpenMPI's shared-memory single copy (CMA) is left on: with copy-in/copy-out
+# (OMPI_MCA_btl_vader_single_copy_mechanism=none, needed in some containers)
+# the results of pass 1 (tens of MB a block) move far slower (docs/scale.md).
 mpirun_flags=(--oversubscribe --bind-to none)
 [ "$(id -u)" -eq 0 ] && mpirun_flags+=(--allow-run-as-root)
 

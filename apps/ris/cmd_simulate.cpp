@@ -128,7 +128,12 @@ void print_streamed(const RunRequest& r, const RunResult& res) {
   fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
              s.sim.image.lines, s.sim.image.bins, s.sim.ground_grid.count);
   print_geometry_counts(s.sim.geometry);
-  for (const auto& [name, t] : s.stage_seconds) fmt::print("  {:.2f} s  {}\n", t, name);
+  for (std::size_t i = 0; i < s.stage_seconds.size(); ++i) {
+    const auto& [name, t] = s.stage_seconds[i];
+    fmt::print("  {:.2f} s  {} ({:.2f} s CPU)\n", t, name,
+               i < s.stage_cpu_seconds.size() ? s.stage_cpu_seconds[i] : 0.0);
+  }
+  for (const auto& [name, t] : s.cpu_parts) fmt::print("  {:.2f} s  {}\n", t, name);
 }
 
 void run_simulate(SimulateArgs& a) {

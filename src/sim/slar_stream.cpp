@@ -311,6 +311,14 @@ class StreamRun {
     stage("geocoded products (pass 2b)");
     geocoded_pass(map, slant_dir);
     stage_done();
+    if (root) {
+      summary_.cpu_parts.emplace_back(
+          fmt::format("CPU of pass 2b on rank 0: {} of {} blocks computed", geo_.computed,
+                      geo_.blocks),
+          geo_.compute_cpu);
+      summary_.cpu_parts.emplace_back("CPU of pass 2b on rank 0: writing (every block)",
+                                      geo_.consume_cpu);
+    }
     if (!root) {
       summary_.sim.warnings.clear();  // rank 0 reports them
       return std::move(summary_);
@@ -337,12 +345,14 @@ class StreamRun {
 
   void stage(const std::string& name) {
     summary_.stage_seconds.emplace_back(name, 0.0);
+    cpu_mark_ = process_cpu_seconds();
     bar_->set_stage(name);
     mark_ = std::chrono::steady_clock::now();
   }
   void stage_done() {
     summary_.stage_seconds.back().second =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - mark_).count();
+    summary_.stage_cpu_seconds.push_back(process_cpu_seconds() - cpu_mark_);
   }
 
   // What the stream runs (SLAR and the incoherent SAR along a grid axis: the
@@ -521,10 +531,10 @@ class StreamRun {
     if (!sinks->shadow_text)
       throw InputError(dir_->path("shadowmap.txt").string(), "", "write failed");
     stage_done();
-    summary_.stage_seconds.emplace_back(
+    summary_.cpu_parts.emplace_back(
         fmt::format("CPU of pass 1 on rank 0: {} of {} blocks computed", computed, blocks),
         compute_cpu);
-    summary_.stage_seconds.emplace_back(
+    summary_.cpu_parts.emplace_back(
         "CPU of pass 1 on rank 0: integration, fading, writing (every block)", consume_cpu);
   }
 
@@ -854,9 +864,11 @@ class StreamRun {
     pix_line_.resize(cap);
     pix_bin_.resize(cap);
     const int blocks = (grid().rows + block_rows - 1) / block_rows;
+    geo_.blocks = blocks;
     detail::run_blocks_in_order<GeoBlock>(
         group_, blocks, schedule_,
         [&](int b) {
+          const double t0 = process_cpu_seconds();
           GeoBlock k;
           k.r0 = b * block_rows;
           k.rows = std::min(block_rows, grid().rows - k.r0);
@@ -865,6 +877,8 @@ class StreamRun {
           k.power.assign(nc, kNaNf);
           k.grey.assign(nc, std::uint8_t{0});
           geocode_rows(map, k.r0, k.rows, sp_ds, mask_ds, k.power.data(), k.grey.data());
+          geo_.compute_cpu += process_cpu_seconds() - t0;
+          ++geo_.computed;
           return k;
         },
         [](const GeoBlock& k, std::vector<char>& out) {
@@ -892,9 +906,11 @@ class StreamRun {
           return k;
         },
         [&](int, GeoBlock& k) {
+          const double t0 = process_cpu_seconds();
           power_out->write(k.power.data(), k.rows);
           grey_out->write(k.grey.data(), k.rows);
           bar_->advance(static_cast<std::int64_t>(k.power.size()));
+          geo_.consume_cpu += process_cpu_seconds() - t0;
         });
     if (group_.rank() != 0) return;
     power_out->close();
@@ -974,6 +990,7 @@ class StreamRun {
   std::optional<ProgressBar> bar_;
   std::optional<StagedDirectory> dir_;
   std::chrono::steady_clock::time_point mark_;
+  double cpu_mark_ = 0.0;
   int cross_cells_ = 0;
   int scene_block_rows_ = 0;
   SceneSummary ss_;
@@ -988,6 +1005,10 @@ class StreamRun {
   std::vector<float> window_incidence_;
   std::vector<std::uint8_t> window_mask_;
   std::vector<LineBlock> spare_;  // pass 1's consumed blocks, their buffers reused
+  struct {
+    int blocks = 0, computed = 0;
+    double compute_cpu = 0.0, consume_cpu = 0.0;
+  } geo_;  // pass 2b's CPU time on this rank
   std::vector<float> mean_, speckled_;
   std::vector<std::uint8_t> mask_;
   std::vector<std::int32_t> pix_line_, pix_bin_;
