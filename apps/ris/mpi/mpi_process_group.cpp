@@ -52,6 +52,7 @@ class MpiProcessGroup final : public ProcessGroup {
     }
     wake_.notify_all();
     if (progress_.joinable()) progress_.join();
+    barrier();  // napping while rank 0 finishes (MPI_Finalize may spin)
     MPI_Finalize();
   }
   MpiProcessGroup(const MpiProcessGroup&) = delete;
@@ -85,8 +86,12 @@ class MpiProcessGroup final : public ProcessGroup {
   Message receive(int source, int tag) override {
     const std::lock_guard<std::mutex> lock(mu_);
     MPI_Status st;
-    MPI_Probe(source == kAny ? MPI_ANY_SOURCE : source, tag == kAny ? MPI_ANY_TAG : tag,
-              MPI_COMM_WORLD, &st);
+    for (int found = 0;;) {
+      MPI_Iprobe(source == kAny ? MPI_ANY_SOURCE : source, tag == kAny ? MPI_ANY_TAG : tag,
+                 MPI_COMM_WORLD, &found, &st);
+      if (found) break;
+      nap();
+    }
     int count = 0;
     MPI_Get_count(&st, MPI_BYTE, &count);
     Message m;
@@ -111,8 +116,10 @@ class MpiProcessGroup final : public ProcessGroup {
     constexpr std::size_t kPiece = std::size_t(1) << 28;
     for (std::size_t at = 0; at < values.size(); at += kPiece) {
       const std::size_t n = std::min(kPiece, values.size() - at);
-      MPI_Allreduce(MPI_IN_PLACE, values.data() + at, static_cast<int>(n), MPI_UINT64_T, MPI_SUM,
-                    MPI_COMM_WORLD);
+      MPI_Request r = MPI_REQUEST_NULL;
+      MPI_Iallreduce(MPI_IN_PLACE, values.data() + at, static_cast<int>(n), MPI_UINT64_T, MPI_SUM,
+                     MPI_COMM_WORLD, &r);
+      wait_napping(r);
     }
   }
 
@@ -120,15 +127,18 @@ class MpiProcessGroup final : public ProcessGroup {
     const std::lock_guard<std::mutex> lock(mu_);
     const int n = checked_count(mine.size());
     std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size());
-    MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    MPI_Request req = MPI_REQUEST_NULL;
+    MPI_Iallgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD, &req);
+    wait_napping(req);
     std::size_t total = 0;
     for (std::size_t r = 0; r < counts.size(); ++r) {
       offsets[r] = checked_count(total);
       total += static_cast<std::size_t>(counts[r]);
     }
     std::vector<char> all(std::max<std::size_t>(total, 1));
-    MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE,
-                   MPI_COMM_WORLD);
+    MPI_Iallgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE,
+                    MPI_COMM_WORLD, &req);
+    wait_napping(req);
     std::vector<std::vector<char>> out(counts.size());
     for (std::size_t r = 0; r < counts.size(); ++r) {
       const auto* p = all.data() + offsets[r];
@@ -139,7 +149,9 @@ class MpiProcessGroup final : public ProcessGroup {
 
   void barrier() override {
     const std::lock_guard<std::mutex> lock(mu_);
-    MPI_Barrier(MPI_COMM_WORLD);
+    MPI_Request r = MPI_REQUEST_NULL;
+    MPI_Ibarrier(MPI_COMM_WORLD, &r);
+    wait_napping(r);
   }
 
   [[noreturn]] void abort(int exit_code) override {
@@ -155,12 +167,26 @@ class MpiProcessGroup final : public ProcessGroup {
   };
   static constexpr std::size_t kMaxPending = 2;
 
+  // Waiting without spinning: OpenMPI's blocking calls poll at full speed,
+  // which on shared or oversubscribed cores takes the CPU from the ranks
+  // that compute (a worker waits through rank 0's serial passes). These
+  // test every 100 us and sleep in between (each test also moves pending
+  // transfers).
+  static void nap() { std::this_thread::sleep_for(std::chrono::microseconds(100)); }
+  static void wait_napping(MPI_Request& r) {
+    for (int done = 0;;) {
+      MPI_Test(&r, &done, MPI_STATUS_IGNORE);
+      if (done) return;
+      nap();
+    }
+  }
+
   // Drops the sends that have gone, oldest first; wait: at least the oldest.
   void drop_sent(bool wait) {
     while (!pending_.empty()) {
       int done = 0;
       if (wait) {
-        MPI_Wait(&pending_.front().request, MPI_STATUS_IGNORE);
+        wait_napping(pending_.front().request);
         done = 1;
         wait = false;
       } else {
