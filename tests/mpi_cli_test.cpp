@@ -123,7 +123,8 @@ TEST(MpiCli, IncoherentSarGivesSingleProcessBytes) {
 void expect_nothing_written(const test::TempDir& dir, const std::string& tag) {
   for (const auto& e : fs::directory_iterator(dir.path())) {
     const std::string name = e.path().filename().string();
-    EXPECT_TRUE(name == "scene.tif" || name.ends_with(".toml")) << tag << ": left " << name;
+    EXPECT_TRUE(name == "scene.tif" || name == "tall.tif" || name.ends_with(".toml"))
+        << tag << ": left " << name;
   }
 }
 
@@ -146,6 +147,22 @@ TEST(MpiCli, AFailingRankFailsTheRunWithoutOutput) {
   EXPECT_NE(r.output.find("rank 1 of 2 failed"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("RIS_FAIL_BLOCK"), std::string::npos) << r.output;
   expect_nothing_written(dir, "a worker's block");
+  // A block of the geocoding pass (2b) on rank 1, after rank 0 has written
+  // pass 1's products into its staging folder (a scene of 600 rows: 3
+  // geocoding blocks of 256 rows).
+  const std::string tall = (dir / "tall.tif").string();
+  ASSERT_EQ(test::run_ris("scene fractal --generator noise --size 100x600 --cell-size 10 "
+                          "--relief 300 --base 50 -o " +
+                          tall)
+                .exit_code,
+            0);
+  r = run_shell(mpirun(2, "RIS_MPI_SCHEDULE=interleaved RIS_FAIL_GEO_BLOCK=1") + test::ris_exe() +
+                " simulate --quiet --threads 1 --block-lines 64 --scene " + tall + " --out " +
+                (dir / "out").string());
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("rank 1 of 2 failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("RIS_FAIL_GEO_BLOCK"), std::string::npos) << r.output;
+  expect_nothing_written(dir, "a worker's geocoding block");
   // The same block on rank 0 (dynamic; 1 rank).
   r = run_shell(mpirun(1, "RIS_FAIL_BLOCK=1") + args);
   EXPECT_NE(r.exit_code, 0) << r.output;

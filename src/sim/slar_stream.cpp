@@ -216,10 +216,11 @@ detail::BlockSchedule block_schedule_from_environment() {
                    fmt::format("expected dynamic or interleaved, got '{}'", v));
 }
 
-// The failure tests' hook: RIS_FAIL_BLOCK=b makes pass 1's block b throw on
-// the rank that computes it (tests/mpi_cli_test.cpp); unset: -1, none.
-int failing_block_from_environment() {
-  const char* v = std::getenv("RIS_FAIL_BLOCK");
+// The failure tests' hooks: RIS_FAIL_BLOCK=b (RIS_FAIL_GEO_BLOCK=b) makes
+// pass 1's (pass 2b's) block b throw on the rank that computes it
+// (tests/mpi_cli_test.cpp); unset: -1, none.
+int failing_block_from_environment(const char* name) {
+  const char* v = std::getenv(name);
   return v == nullptr ? -1 : std::atoi(v);
 }
 
@@ -257,7 +258,8 @@ class StreamRun {
             const std::filesystem::path& out_dir, const SlarStreamOptions& options)
       : in_(scene_path),
         schedule_(block_schedule_from_environment()),
-        fail_block_(failing_block_from_environment()),
+        fail_block_(failing_block_from_environment("RIS_FAIL_BLOCK")),
+        fail_geo_block_(failing_block_from_environment("RIS_FAIL_GEO_BLOCK")),
         options_(options),
         info_(info),
         out_dir_(out_dir) {
@@ -847,8 +849,10 @@ class StreamRun {
   // every rank sees); rank 0 writes them in row order.
   void geocoded_pass(const GreytoneMap& map, const std::string& slant_dir) {
     const std::filesystem::path dir(slant_dir);
-    GdalDataset sp_ds = open_raster((dir / "speckled_power_slant.tif").string());
-    GdalDataset mask_ds = open_raster((dir / "mask_slant.tif").string());
+    // Opened at a rank's first block, so that a rank that cannot read them
+    // (an output folder not on a shared file system) fails through the
+    // schedule: rank 0 reports it and removes its staging folder.
+    std::optional<GdalDataset> sp_ds, mask_ds;
     FloatWriter power_out;
     ByteWriter grey_out;
     if (group_.rank() == 0) {
@@ -869,6 +873,14 @@ class StreamRun {
         group_, blocks, schedule_,
         [&](int b) {
           const double t0 = process_cpu_seconds();
+          if (b == fail_geo_block_) {
+            throw std::runtime_error(
+                fmt::format("geocoding block {}: a failure injected by RIS_FAIL_GEO_BLOCK", b));
+          }
+          if (!sp_ds) {
+            sp_ds.emplace(open_raster((dir / "speckled_power_slant.tif").string()));
+            mask_ds.emplace(open_raster((dir / "mask_slant.tif").string()));
+          }
           GeoBlock k;
           k.r0 = b * block_rows;
           k.rows = std::min(block_rows, grid().rows - k.r0);
@@ -876,7 +888,7 @@ class StreamRun {
           in_.read(k.r0, k.rows, 0, grid().cols, z_.data(), cat_.data(), ok_.data());
           k.power.assign(nc, kNaNf);
           k.grey.assign(nc, std::uint8_t{0});
-          geocode_rows(map, k.r0, k.rows, sp_ds, mask_ds, k.power.data(), k.grey.data());
+          geocode_rows(map, k.r0, k.rows, *sp_ds, *mask_ds, k.power.data(), k.grey.data());
           geo_.compute_cpu += process_cpu_seconds() - t0;
           ++geo_.computed;
           return k;
@@ -978,7 +990,8 @@ class StreamRun {
   const SceneStreamReader in_;
   ProcessGroup& group_ = process_group();
   const detail::BlockSchedule schedule_;
-  const int fail_block_;  // RIS_FAIL_BLOCK, -1: none
+  const int fail_block_;      // RIS_FAIL_BLOCK, -1: none
+  const int fail_geo_block_;  // RIS_FAIL_GEO_BLOCK, -1: none
   const SlarStreamOptions& options_;
   const SlarRunInfo& info_;
   const std::filesystem::path out_dir_;
