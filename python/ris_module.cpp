@@ -561,12 +561,9 @@ py::tuple compare(const FloatGrid& simulated, const FloatGrid& real, bool regist
   return py::make_tuple(json_to_python(rep->measures),
                         copy(rep->real_aligned.data(), {rows, cols}));
 }
-}  // namespace
 
-PYBIND11_MODULE(_ris, m) {
-  m.doc() = "ris radar image simulator: C++ core bindings (use the `ris` package)";
-  m.attr("__version__") = RIS_VERSION;
-
+// The module's parts, bound in the order PYBIND11_MODULE calls them.
+void bind_errors(py::module_& m) {
   g_input_error = PyErr_NewException("ris.InputError", PyExc_ValueError, nullptr);
   py::tuple bases = py::make_tuple(py::handle(g_input_error), py::handle(PyExc_FileNotFoundError));
   g_missing_error = PyErr_NewException("ris.InputFileNotFoundError", bases.ptr(), nullptr);
@@ -579,7 +576,9 @@ PYBIND11_MODULE(_ris, m) {
       raise_input_error(e);
     }
   });
+}
 
+void bind_scene(py::module_& m) {
   py::class_<PyScene>(m, "_Scene")
       .def_property_readonly("rows", [](const PyScene& s) { return s.scene->rows; })
       .def_property_readonly("cols", [](const PyScene& s) { return s.scene->cols; })
@@ -617,7 +616,9 @@ PYBIND11_MODULE(_ris, m) {
       });
   m.def("_scene_from_arrays", &scene_from_arrays);
   m.def("_load_scene", &load_scene);
+}
 
+void bind_radar(py::module_& m) {
   py::class_<PyRadar>(m, "_Radar")
       .def_property_readonly("source", [](const PyRadar& r) { return r.radar.source_file; })
       .def("params", [](const PyRadar& r) { return json_to_python(ris::radar_to_json(r.radar)); })
@@ -633,29 +634,12 @@ PYBIND11_MODULE(_ris, m) {
     return PyRadar{ris::load_radar((ris::data_dir() / "radars" / "seed-fig4-5.toml").string())};
   });
   m.def("_greytone", &greytone);
+}
 
-  py::class_<PyResult>(m, "_Result")
-      .def_property_readonly("warnings", [](const PyResult& r) { return r.warnings; })
-      .def_property_readonly("kind",
-                             [](const PyResult& r) {
-                               switch (r.res->kind) {
-                                 case ris::RunKind::slar:
-                                   return "slar";
-                                 case ris::RunKind::sar:
-                                   return "sar";
-                                 case ris::RunKind::coherent_sar:
-                                   return "coherent_sar";
-                                 case ris::RunKind::ppi:
-                                   return "ppi";
-                                 case ris::RunKind::streamed:
-                                   return "streamed";
-                               }
-                               return "";
-                             })
-      .def_property_readonly("seed", [](const PyResult& r) { return r.res->info.seed; })
-      .def("metadata", [](const PyResult& r) { return json_to_python(r.metadata()); })
-      .def("mean_power_w",
-           [](const PyResult& r) { return mean_power_nan(r.slar().image, r.slant_shape()); })
+// A run's SLAR / SAR images.
+void bind_result_slar(py::class_<PyResult>& c) {
+  c.def("mean_power_w",
+        [](const PyResult& r) { return mean_power_nan(r.slar().image, r.slant_shape()); })
       .def("speckled_power_w",
            [](const PyResult& r) {
              return copy(r.pictures().speckled_power_w.data(), r.slant_shape());
@@ -707,14 +691,17 @@ PYBIND11_MODULE(_ris, m) {
                  *r.res->scene, r.slar().track, r.slar().image, r.pictures().speckled_power_w);
              return copy(g.data(), r.scene_shape());
            })
-      .def("geocoded_grey",
-           [](const PyResult& r) {
-             std::vector<std::uint8_t> g = ris::geocode_slant_grey(
-                 *r.res->scene, r.slar().track, r.slar().image, r.pictures().slant_grey);
-             return copy(g.data(), r.scene_shape());
-           })
-      .def("bscope_mean_power_w",
-           [](const PyResult& r) { return mean_power_nan(r.ppi().bscope, r.bscope_shape()); })
+      .def("geocoded_grey", [](const PyResult& r) {
+        std::vector<std::uint8_t> g = ris::geocode_slant_grey(
+            *r.res->scene, r.slar().track, r.slar().image, r.pictures().slant_grey);
+        return copy(g.data(), r.scene_shape());
+      });
+}
+
+// A run's PPI images (and the line spacing of either).
+void bind_result_ppi(py::class_<PyResult>& c) {
+  c.def("bscope_mean_power_w",
+        [](const PyResult& r) { return mean_power_nan(r.ppi().bscope, r.bscope_shape()); })
       .def("bscope_speckled_power_w",
            [](const PyResult& r) {
              return copy(r.ppi_pictures().speckled_power_w.data(), r.bscope_shape());
@@ -764,20 +751,44 @@ PYBIND11_MODULE(_ris, m) {
              return r.ppi().scope_grid.presentation == ris::PpiPresentation::slant ? "slant"
                                                                                    : "ground";
            })
-      .def("site_m",
-           [](const PyResult& r) {
-             return py::make_tuple(r.ppi().geometry.site_x_m, r.ppi().geometry.site_y_m);
-           })
-      .def("rerender",
-           [](PyResult& r, std::uint64_t seed, std::optional<std::vector<double>> film) {
-             py::gil_scoped_release nogil;
-             if (film) {
-               const ris::FilmParams f = film_params(*film);
-               ris::rerender(*r.res, seed, &f);
-             } else {
-               ris::rerender(*r.res, seed);
-             }
-           })
+      .def("site_m", [](const PyResult& r) {
+        return py::make_tuple(r.ppi().geometry.site_x_m, r.ppi().geometry.site_y_m);
+      });
+}
+
+void bind_result(py::module_& m) {
+  py::class_<PyResult> c(m, "_Result");
+  c.def_property_readonly("warnings", [](const PyResult& r) { return r.warnings; })
+      .def_property_readonly("kind",
+                             [](const PyResult& r) {
+                               switch (r.res->kind) {
+                                 case ris::RunKind::slar:
+                                   return "slar";
+                                 case ris::RunKind::sar:
+                                   return "sar";
+                                 case ris::RunKind::coherent_sar:
+                                   return "coherent_sar";
+                                 case ris::RunKind::ppi:
+                                   return "ppi";
+                                 case ris::RunKind::streamed:
+                                   return "streamed";
+                               }
+                               return "";
+                             })
+      .def_property_readonly("seed", [](const PyResult& r) { return r.res->info.seed; })
+      .def("metadata", [](const PyResult& r) { return json_to_python(r.metadata()); });
+  bind_result_slar(c);
+  bind_result_ppi(c);
+  c.def("rerender",
+        [](PyResult& r, std::uint64_t seed, std::optional<std::vector<double>> film) {
+          py::gil_scoped_release nogil;
+          if (film) {
+            const ris::FilmParams f = film_params(*film);
+            ris::rerender(*r.res, seed, &f);
+          } else {
+            ris::rerender(*r.res, seed);
+          }
+        })
       .def("film",
            [](const PyResult& r) {
              return film_list(r.res->slar ? r.res->slar->radar.film : r.res->ppi->radar.film);
@@ -787,7 +798,9 @@ PYBIND11_MODULE(_ris, m) {
         return ris::write_run_products(*r.res, dir);
       });
   m.def("_simulate", &simulate);
+}
 
+void bind_backscatter(py::module_& m) {
   py::class_<PySigma0Source>(m, "_Sigma0Source")
       .def_property_readonly("path", [](const PySigma0Source& s) { return s.path; })
       .def("category_ids", [](const PySigma0Source& s) { return s.source->category_ids(); })
@@ -800,6 +813,18 @@ PYBIND11_MODULE(_ris, m) {
   m.def("_category_sigma0", &category_sigma0);
   m.def("_model_sigma0", &model_sigma0);
   m.def("_permittivity", &permittivity);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_ris, m) {
+  m.doc() = "ris radar image simulator: C++ core bindings (use the `ris` package)";
+  m.attr("__version__") = RIS_VERSION;
+  bind_errors(m);
+  bind_scene(m);
+  bind_radar(m);
+  bind_result(m);
+  bind_backscatter(m);
   m.def("_topo", &topo);
   m.def("_quality", &quality);
   m.def("_compare", &compare);

@@ -69,6 +69,33 @@ run raster --threads 2 --scene scene.tif
 run stream7 --threads 2 --scene scene.tif --stream --block-lines 7
 run stream64 --threads 1 --scene scene.tif --stream --block-lines 64
 run stream64-h90 --threads 2 --scene scene.tif --stream --block-lines 64 --radar fig45-h90.toml
+# Runs that keep the per-sample geometry or add point targets (the line
+# engine's kept-geometry sink): SLAR with targets along both axes and off
+# them, the coherent SAR off the axes, lines finer and coarser than the
+# cells (not one per cell row), the study (SlarOptions::keep_geometry), and
+# PPI with targets (the polar source).
+targets="$data/targets/corner-reflectors.toml"
+run slar-targets --threads 2 --targets "$targets"
+run slar-targets-h30 --threads 2 --radar fig45-h30.toml --targets "$targets"
+run slar-targets-h90 --threads 2 --radar fig45-h90.toml --targets "$targets"
+run slar-targets-h90-t1 --threads 1 --radar fig45-h90.toml --targets "$targets"
+sed "s/^heading = \"0 deg\"/heading = \"30 deg\"/" "$data/radars/sar-x-band-stripmap.toml" \
+  > sar-h30.toml
+run sar-coherent-h30 --threads 2 --radar sar-h30.toml --targets "$targets"
+run sar-coherent-h30-t1 --threads 1 --radar sar-h30.toml --targets "$targets"
+sed 's/^\[track\]/azimuth_line_spacing = "2.5 m"\n[track]/' "$data/radars/seed-fig4-5.toml" \
+  > fig45-fine.toml
+run slar-fine-lines --threads 2 --radar fig45-fine.toml --targets "$targets"
+sed 's/^\[sar\]/azimuth_line_spacing = "9 m"\n[sar]/' sar-inc.toml > sar-coarse.toml
+run sar-coarse-lines --threads 2 --radar sar-coarse.toml
+run ppi-targets --threads 2 --radar "$data/radars/ppi-ground-mast-30m.toml" --targets "$targets"
+run ppi-air-targets --threads 1 --radar "$data/radars/ppi-airborne-nav-10000ft.toml" \
+  --targets "$targets"
+"$ris" study --out study --bands "8.6 GHz:HH, 1.25 GHz:VV" --threads 2 > study.log 2>&1 || {
+  echo "run study failed:" >&2
+  cat study.log >&2
+  exit 1
+}
 
 for d in */; do
   d=${d%/}

@@ -2,6 +2,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -171,6 +172,39 @@ TEST(SceneCli, ElevationRasterWithCategoryRaster) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_THAT(r.output, HasSubstr("scene description"));
   EXPECT_FALSE(fs::exists(dir / "s.tif"));
+}
+
+// The VRT form (docs/scene-format.md): built, described and simulated as
+// the GeoTIFF form is, with the same product pixels; categories are UInt16.
+TEST(SceneCli, VrtSceneSimulatesAsTheGeoTiff) {
+  test::TempDir dir;
+  auto r = test::run_ris("scene build -o " + q(dir / "ku.vrt"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::is_regular_file(dir / "ku_category.tif"));
+  r = test::run_ris("scene build -o " + q(dir / "ku.tif"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = test::run_ris("scene info " + q(dir / "ku.vrt"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("categories: 10"));
+  EXPECT_THAT(r.output, HasSubstr("(ku-geometric)"));
+  const RasterF64 cats = read_raster_f64(dir / "ku_category.tif");
+  const Scene built = read_scene(dir / "ku.tif");
+  ASSERT_EQ(cats.data.size(), built.size());
+  for (std::size_t i = 0; i < built.size(); i += 997)
+    EXPECT_EQ(cats.data[i], built.category[i]) << i;
+  for (const char* form : {"ku.vrt", "ku.tif"}) {
+    r = test::run_ris("simulate --scene " + q(dir / form) +
+                      " --products mean_power_slant,mask_slant" + " --out " +
+                      q(dir / (std::string(form) + ".out")));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  for (const char* product : {"mean_power_slant.tif", "mask_slant.tif"}) {
+    const RasterF64 a = read_raster_f64(dir / "ku.vrt.out" / product);
+    const RasterF64 b = read_raster_f64(dir / "ku.tif.out" / product);
+    ASSERT_EQ(a.data.size(), b.data.size()) << product;
+    EXPECT_EQ(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(double)), 0)
+        << product;
+  }
 }
 
 TEST(SceneCli, ObjectsListsEveryType) {

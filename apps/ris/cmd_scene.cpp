@@ -108,7 +108,9 @@ void add_scene(CLI::App& app) {
       ->capture_default_str();
   build
       ->add_option("-o,--output", build_args->output,
-                   "Output GeoTIFF (band 1 elevation in metres, band 2 category)")
+                   "Output scene: a GeoTIFF (.tif: band 1 elevation in metres, band 2 "
+                   "category, both Float32) or, with .vrt, a VRT over a Float32 elevation "
+                   "and a UInt16 category GeoTIFF (docs/scene-format.md)")
       ->required();
   build->callback([build_args] {
     if (!ris::is_scene_description(build_args->input)) {

@@ -379,7 +379,11 @@ void add_scene_terrain(CLI::App& app) {
       "Import a DEM (any GDAL raster; geographic DEMs are reprojected into the UTM zone of "
       "their centre) and optional land cover as a scene GeoTIFF");
   import_cmd->add_option("dem", ia->dem, "Elevation raster (GeoTIFF, SRTM .hgt, ...)")->required();
-  import_cmd->add_option("-o,--output", ia->output, "Scene GeoTIFF to write")->required();
+  import_cmd
+      ->add_option(
+          "-o,--output", ia->output,
+          "Scene to write: GeoTIFF (.tif) or, with .vrt, a VRT with an integer category band")
+      ->required();
   import_cmd->add_option("--cell-size", ia->cell_size,
                          "Output cell size (\"30\", \"30 m\", \"100 ft\"); default: the DEM's "
                          "posting in metres, rounded to two significant digits");
@@ -403,7 +407,11 @@ void add_scene_terrain(CLI::App& app) {
   auto fa = std::make_shared<FractalArgs>();
   auto* fractal = scene->add_subcommand(
       "fractal", "Generate seeded fractal terrain (fBm with a Hurst exponent) as a scene GeoTIFF");
-  fractal->add_option("-o,--output", fa->output, "Scene GeoTIFF to write")->required();
+  fractal
+      ->add_option(
+          "-o,--output", fa->output,
+          "Scene to write: GeoTIFF (.tif) or, with .vrt, a VRT with an integer category band")
+      ->required();
   fractal->add_flag("--quiet", fa->quiet, "No progress (a bar on a terminal, else log lines)");
   fractal->add_option("--size", fa->size, "Cells: N (square) or COLSxROWS")->capture_default_str();
   fractal->add_option("--cell-size", fa->cell_size, "Cell size")->capture_default_str();

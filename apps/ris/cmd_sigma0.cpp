@@ -79,26 +79,29 @@ double to_db(double linear) {
   return linear > 0.0 ? std::max(kFloorDb, 10.0 * std::log10(linear)) : kFloorDb;
 }
 
-void run(const Options& o) {
-  if (o.list_models) {
-    for (const ris::ModelInfo& m : ris::backscatter_model_names()) {
-      fmt::print("{:<16} {}\n", m.name, m.summary);
-    }
-    fmt::print(
-        "dielectric models (a soil model's permittivity table): dobson1985, "
-        "hallikainen1985, mironov2009\n");
-    return;
+void print_model_list() {
+  for (const ris::ModelInfo& m : ris::backscatter_model_names()) {
+    fmt::print("{:<16} {}\n", m.name, m.summary);
   }
-  const std::vector<double> angles = parse_angles_deg(o.angles);
+  fmt::print(
+      "dielectric models (a soil model's permittivity table): dobson1985, "
+      "hallikainen1985, mironov2009\n");
+}
+
+double parse_frequency_hz(const std::string& text) {
   double frequency_hz = 0.0;
   try {
-    frequency_hz = ris::parse_quantity(o.frequency, ris::Quantity::frequency);
+    frequency_hz = ris::parse_quantity(text, ris::Quantity::frequency);
   } catch (const std::invalid_argument& e) {
     throw InputError("", "--frequency", e.what());
   }
   if (!(frequency_hz > 0.0)) throw InputError("", "--frequency", "expected a frequency > 0");
+  return frequency_hz;
+}
+
+std::vector<ris::Polarisation> parse_polarisations(const std::string& text) {
   std::vector<ris::Polarisation> pols;
-  for (const auto& p : split(o.polarisations, ',')) {
+  for (const auto& p : split(text, ',')) {
     try {
       pols.push_back(ris::parse_polarisation(p));
     } catch (const std::invalid_argument& e) {
@@ -106,128 +109,205 @@ void run(const Options& o) {
     }
   }
   if (pols.empty()) throw InputError("", "--pol", "no polarisation given");
+  return pols;
+}
 
+// The inline model's curves: the option's text is the body of a TOML inline
+// table.
+std::vector<Series> model_series(const Options& o, double frequency_hz,
+                                 const std::vector<ris::Polarisation>& pols,
+                                 const std::vector<double>& angles) {
+  toml::table doc;
+  try {
+    doc = toml::parse("model = { " + o.model + " }");
+  } catch (const toml::parse_error& e) {
+    throw InputError("", "--model",
+                     fmt::format("expected TOML key = value pairs such as 'name = \"oh1992\", "
+                                 "rms_height = \"1 cm\"': {}",
+                                 e.description()));
+  }
+  ris::ConfigTable root(doc, "--model", "");
+  std::optional<ris::ConfigTable> t = root.subtable("model");
+  ris::ModelContext ctx{"--model", ".", o.allow_extrapolation, -1, nullptr};
+  std::unique_ptr<ris::BackscatterModel> model = ris::make_backscatter_model(*t, ctx);
   std::vector<Series> series;
-  if (!o.model.empty()) {
-    // An inline model: the option's text is the body of a TOML inline table.
-    toml::table doc;
-    try {
-      doc = toml::parse("model = { " + o.model + " }");
-    } catch (const toml::parse_error& e) {
-      throw InputError("", "--model",
-                       fmt::format("expected TOML key = value pairs such as 'name = \"oh1992\", "
-                                   "rms_height = \"1 cm\"': {}",
-                                   e.description()));
+  for (ris::Polarisation p : pols) {
+    Series s{0, "model", model->describe(), {frequency_hz, p}, std::nullopt, {}};
+    model->check_band(s.band);
+    for (double a : angles) s.sigma0_db.push_back(to_db(model->sigma0(ris::deg_to_rad(a), s.band)));
+    series.push_back(std::move(s));
+  }
+  return series;
+}
+
+// The categories --category names: "all", or ids or names ("5,tall milo").
+std::vector<std::uint16_t> chosen_categories(const ris::Sigma0Source& src,
+                                             const std::string& categories,
+                                             const std::string& path) {
+  if (categories == "all") return src.category_ids();
+  std::vector<std::uint16_t> ids;
+  for (const auto& c : split(categories, ',')) {
+    std::optional<std::uint16_t> id;
+    for (std::uint16_t known : src.category_ids()) {
+      if (src.category_name(known) == c) id = known;
     }
-    ris::ConfigTable root(doc, "--model", "");
-    std::optional<ris::ConfigTable> t = root.subtable("model");
-    ris::ModelContext ctx{"--model", ".", o.allow_extrapolation, -1, nullptr};
-    std::unique_ptr<ris::BackscatterModel> model = ris::make_backscatter_model(*t, ctx);
+    if (!id) {
+      char* end = nullptr;
+      const long v = std::strtol(c.c_str(), &end, 10);
+      if (end != c.c_str() && *end == '\0' && v >= 1 && v <= 65535 &&
+          src.has_category(static_cast<std::uint16_t>(v))) {
+        id = static_cast<std::uint16_t>(v);
+      }
+    }
+    if (!id) {
+      throw InputError(path, "--category",
+                       fmt::format("no category \"{}\" in the file (give ids or names)", c));
+    }
+    ids.push_back(*id);
+  }
+  return ids;
+}
+
+// The library's curves, one per category and polarisation.
+std::vector<Series> library_series(const Options& o, double frequency_hz,
+                                   const std::vector<ris::Polarisation>& pols,
+                                   const std::vector<double>& angles) {
+  const std::string path = o.library.empty() ? ris::default_sigma0_library_path() : o.library;
+  std::unique_ptr<ris::Sigma0Source> src = ris::load_sigma0_source(path);
+  const std::vector<std::uint16_t> ids = chosen_categories(*src, o.categories, path);
+  std::vector<Series> series;
+  for (std::uint16_t id : ids) {
     for (ris::Polarisation p : pols) {
-      Series s{0, "model", model->describe(), {frequency_hz, p}, std::nullopt, {}};
-      model->check_band(s.band);
-      for (double a : angles)
-        s.sigma0_db.push_back(to_db(model->sigma0(ris::deg_to_rad(a), s.band)));
+      Series s{id, src->category_name(id), "", {frequency_hz, p}, src->category_colour(id), {}};
+      s.model = src->category_model(id, s.band);
+      for (double a : angles) {
+        s.sigma0_db.push_back(to_db(src->sigma0(id, ris::deg_to_rad(a), s.band)));
+      }
       series.push_back(std::move(s));
     }
-  } else {
-    const std::string path = o.library.empty() ? ris::default_sigma0_library_path() : o.library;
-    std::unique_ptr<ris::Sigma0Source> src = ris::load_sigma0_source(path);
-    std::vector<std::uint16_t> ids;
-    if (o.categories == "all") {
-      ids = src->category_ids();
-    } else {
-      // Ids or names ("5,tall milo").
-      for (const auto& c : split(o.categories, ',')) {
-        std::optional<std::uint16_t> id;
-        for (std::uint16_t known : src->category_ids()) {
-          if (src->category_name(known) == c) id = known;
-        }
-        if (!id) {
-          char* end = nullptr;
-          const long v = std::strtol(c.c_str(), &end, 10);
-          if (end != c.c_str() && *end == '\0' && v >= 1 && v <= 65535 &&
-              src->has_category(static_cast<std::uint16_t>(v))) {
-            id = static_cast<std::uint16_t>(v);
-          }
-        }
-        if (!id) {
-          throw InputError(path, "--category",
-                           fmt::format("no category \"{}\" in the file (give ids or names)", c));
-        }
-        ids.push_back(*id);
-      }
-    }
-    for (std::uint16_t id : ids) {
-      for (ris::Polarisation p : pols) {
-        Series s{id, src->category_name(id), "", {frequency_hz, p}, src->category_colour(id), {}};
-        s.model = src->category_model(id, s.band);
-        for (double a : angles) {
-          s.sigma0_db.push_back(to_db(src->sigma0(id, ris::deg_to_rad(a), s.band)));
-        }
-        series.push_back(std::move(s));
-      }
+  }
+  return series;
+}
+
+// The sigma0 table format (include/ris/backscatter/sigma0_table.h), so the
+// output can be shipped as a table file.
+std::string csv_text(const std::vector<Series>& series, const std::vector<double>& angles) {
+  std::string text;
+  fmt::format_to(std::back_inserter(text), "# sigma0 table written by ris {} (ris sigma0)\n",
+                 RIS_VERSION);
+  fmt::format_to(std::back_inserter(text), "# values below {:g} dB are written as {:g} dB\n",
+                 kFloorDb, kFloorDb);
+  std::set<int> named;
+  for (const Series& s : series) {
+    if (named.insert(s.category).second) {
+      fmt::format_to(std::back_inserter(text), "# category {}: {}\n", s.category, s.name);
     }
   }
+  for (const Series& s : series)
+    fmt::format_to(std::back_inserter(text), "#   model of category {} at {:g} GHz {}: {}\n",
+                   s.category, s.band.frequency_hz / 1e9, ris::to_string(s.band.polarisation),
+                   s.model);
+  fmt::format_to(std::back_inserter(text),
+                 "category,frequency_ghz,polarisation,angle_deg,sigma0_db\n");
+  for (const Series& s : series) {
+    for (size_t i = 0; i < angles.size(); ++i) {
+      fmt::format_to(std::back_inserter(text), "{},{:g},{},{:g},{:.3f}\n", s.category,
+                     s.band.frequency_hz / 1e9, ris::to_string(s.band.polarisation), angles[i],
+                     s.sigma0_db[i]);
+    }
+  }
+  return text;
+}
+
+std::string json_text(const std::vector<Series>& series, const std::vector<double>& angles) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const Series& s : series) {
+    j.push_back({{"category", s.category},
+                 {"name", s.name},
+                 {"model", s.model},
+                 {"frequency_ghz", s.band.frequency_hz / 1e9},
+                 {"polarisation", std::string(ris::to_string(s.band.polarisation))},
+                 {"angle_deg", angles},
+                 {"sigma0_db", s.sigma0_db}});
+  }
+  return fmt::format("{}\n", j.dump(2));
+}
+
+std::string table_text(const std::vector<Series>& series, const std::vector<double>& angles,
+                       double frequency_hz) {
+  std::string text;
+  fmt::format_to(std::back_inserter(text), "sigma0 (dB) at {:g} GHz\n", frequency_hz / 1e9);
+  for (const Series& s : series) {
+    fmt::format_to(std::back_inserter(text), "  {:>3} {}: {} {}\n", s.category,
+                   ris::to_string(s.band.polarisation), s.name, s.model);
+  }
+  fmt::format_to(std::back_inserter(text), "{:>9}", "angle_deg");
+  for (const Series& s : series) {
+    fmt::format_to(std::back_inserter(text), " {:>9}",
+                   fmt::format("{}{}", s.category, ris::to_string(s.band.polarisation)));
+  }
+  fmt::format_to(std::back_inserter(text), "\n");
+  for (size_t i = 0; i < angles.size(); ++i) {
+    fmt::format_to(std::back_inserter(text), "{:>9g}", angles[i]);
+    for (const Series& s : series)
+      fmt::format_to(std::back_inserter(text), " {:>9.2f}", s.sigma0_db[i]);
+    fmt::format_to(std::back_inserter(text), "\n");
+  }
+  return text;
+}
+
+// The curves as a chart: one colour per category (the library's display
+// colour), one dash pattern per polarisation.
+void plot_series(const std::string& plot, const std::vector<Series>& series,
+                 const std::vector<double>& angles, const std::vector<ris::Polarisation>& pols,
+                 double frequency_hz) {
+  std::vector<ris::ChartSeries> curves;
+  for (const Series& s : series) {
+    ris::ChartSeries c;
+    c.label = s.category == 0 ? fmt::format("model {}", ris::to_string(s.band.polarisation))
+                              : fmt::format("{} {} {}", s.category, s.name,
+                                            ris::to_string(s.band.polarisation));
+    c.x = angles;
+    c.y = s.sigma0_db;
+    if (s.colour) {
+      c.colour = ris::Rgb8{(*s.colour)[0], (*s.colour)[1], (*s.colour)[2]};
+    } else {
+      c.colour = ris::category_colour(static_cast<std::uint16_t>(s.category));
+    }
+    c.dash =
+        static_cast<int>(std::find(pols.begin(), pols.end(), s.band.polarisation) - pols.begin());
+    curves.push_back(std::move(c));
+  }
+  ris::ChartSpec spec;
+  spec.title = fmt::format("Backscatter at {:g} GHz", frequency_hz / 1e9);
+  spec.x_label = "incidence angle (deg)";
+  spec.y_label = "sigma0 (dB)";
+  spec.y_floor = kFloorDb;
+  spec.x_min = angles.front();
+  spec.x_max = angles.back();
+  ris::write_line_chart_png(plot, spec, curves);
+  spdlog::info("wrote {}", plot);
+}
+
+void run(const Options& o) {
+  if (o.list_models) {
+    print_model_list();
+    return;
+  }
+  const std::vector<double> angles = parse_angles_deg(o.angles);
+  const double frequency_hz = parse_frequency_hz(o.frequency);
+  const std::vector<ris::Polarisation> pols = parse_polarisations(o.polarisations);
+  const std::vector<Series> series = o.model.empty() ? library_series(o, frequency_hz, pols, angles)
+                                                     : model_series(o, frequency_hz, pols, angles);
 
   // Output: built as text, then printed or written atomically to --out.
   std::string text;
   if (o.format == "csv") {
-    // The sigma0 table format (include/ris/backscatter/sigma0_table.h), so the
-    // output can be shipped as a table file.
-    fmt::format_to(std::back_inserter(text), "# sigma0 table written by ris {} (ris sigma0)\n",
-                   RIS_VERSION);
-    fmt::format_to(std::back_inserter(text), "# values below {:g} dB are written as {:g} dB\n",
-                   kFloorDb, kFloorDb);
-    std::set<int> named;
-    for (const Series& s : series) {
-      if (named.insert(s.category).second) {
-        fmt::format_to(std::back_inserter(text), "# category {}: {}\n", s.category, s.name);
-      }
-    }
-    for (const Series& s : series)
-      fmt::format_to(std::back_inserter(text), "#   model of category {} at {:g} GHz {}: {}\n",
-                     s.category, s.band.frequency_hz / 1e9, ris::to_string(s.band.polarisation),
-                     s.model);
-    fmt::format_to(std::back_inserter(text),
-                   "category,frequency_ghz,polarisation,angle_deg,sigma0_db\n");
-    for (const Series& s : series) {
-      for (size_t i = 0; i < angles.size(); ++i) {
-        fmt::format_to(std::back_inserter(text), "{},{:g},{},{:g},{:.3f}\n", s.category,
-                       s.band.frequency_hz / 1e9, ris::to_string(s.band.polarisation), angles[i],
-                       s.sigma0_db[i]);
-      }
-    }
+    text = csv_text(series, angles);
   } else if (o.format == "json") {
-    nlohmann::json j = nlohmann::json::array();
-    for (const Series& s : series) {
-      j.push_back({{"category", s.category},
-                   {"name", s.name},
-                   {"model", s.model},
-                   {"frequency_ghz", s.band.frequency_hz / 1e9},
-                   {"polarisation", std::string(ris::to_string(s.band.polarisation))},
-                   {"angle_deg", angles},
-                   {"sigma0_db", s.sigma0_db}});
-    }
-    fmt::format_to(std::back_inserter(text), "{}\n", j.dump(2));
+    text = json_text(series, angles);
   } else if (o.format == "table") {
-    fmt::format_to(std::back_inserter(text), "sigma0 (dB) at {:g} GHz\n", frequency_hz / 1e9);
-    for (const Series& s : series) {
-      fmt::format_to(std::back_inserter(text), "  {:>3} {}: {} {}\n", s.category,
-                     ris::to_string(s.band.polarisation), s.name, s.model);
-    }
-    fmt::format_to(std::back_inserter(text), "{:>9}", "angle_deg");
-    for (const Series& s : series) {
-      fmt::format_to(std::back_inserter(text), " {:>9}",
-                     fmt::format("{}{}", s.category, ris::to_string(s.band.polarisation)));
-    }
-    fmt::format_to(std::back_inserter(text), "\n");
-    for (size_t i = 0; i < angles.size(); ++i) {
-      fmt::format_to(std::back_inserter(text), "{:>9g}", angles[i]);
-      for (const Series& s : series)
-        fmt::format_to(std::back_inserter(text), " {:>9.2f}", s.sigma0_db[i]);
-      fmt::format_to(std::back_inserter(text), "\n");
-    }
+    text = table_text(series, angles, frequency_hz);
   } else {
     throw InputError("", "--format", "expected table, csv or json, got \"" + o.format + "\"");
   }
@@ -236,37 +316,7 @@ void run(const Options& o) {
   } else {
     ris::write_text_file_atomic(o.out, text);
   }
-
-  if (!o.plot.empty()) {
-    // One colour per category (the library's display colour), one dash
-    // pattern per polarisation.
-    std::vector<ris::ChartSeries> curves;
-    for (const Series& s : series) {
-      ris::ChartSeries c;
-      c.label = s.category == 0 ? fmt::format("model {}", ris::to_string(s.band.polarisation))
-                                : fmt::format("{} {} {}", s.category, s.name,
-                                              ris::to_string(s.band.polarisation));
-      c.x = angles;
-      c.y = s.sigma0_db;
-      if (s.colour) {
-        c.colour = ris::Rgb8{(*s.colour)[0], (*s.colour)[1], (*s.colour)[2]};
-      } else {
-        c.colour = ris::category_colour(static_cast<std::uint16_t>(s.category));
-      }
-      c.dash =
-          static_cast<int>(std::find(pols.begin(), pols.end(), s.band.polarisation) - pols.begin());
-      curves.push_back(std::move(c));
-    }
-    ris::ChartSpec spec;
-    spec.title = fmt::format("Backscatter at {:g} GHz", frequency_hz / 1e9);
-    spec.x_label = "incidence angle (deg)";
-    spec.y_label = "sigma0 (dB)";
-    spec.y_floor = kFloorDb;
-    spec.x_min = angles.front();
-    spec.x_max = angles.back();
-    ris::write_line_chart_png(o.plot, spec, curves);
-    spdlog::info("wrote {}", o.plot);
-  }
+  if (!o.plot.empty()) plot_series(o.plot, series, angles, pols, frequency_hz);
 }
 
 void add_sigma0(CLI::App& app) {

@@ -67,7 +67,7 @@ void check_site(const Scene& scene, const RadarParams& radar, double& ground_m) 
 
 }  // namespace
 
-PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar_in) {
+PpiGeometry ppi_geometry_layout(const Scene& scene, const RadarParams& radar_in) {
   scene.validate("scene");
   const RadarParams radar = with_site_on_scene(radar_in, scene);
   RIS_CHECK(radar.mode == RadarMode::ppi);
@@ -117,78 +117,92 @@ PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar_in
                              31, radar.source_file, "scan.ray_spacing"),
                  radar.source_file, "scan.ray_spacing",
                  fmt::format("the geometry of {} rays x {} samples", g.lines, g.samples));
-  g.allocate_samples();
+  return pg;
+}
 
+PpiRayScratch::PpiRayScratch(int samples)
+    : height(static_cast<std::size_t>(samples)),
+      dz_dx(height.size()),
+      dz_dy(height.size()),
+      category(height.size()),
+      terrain_flags(height.size()) {}
+
+void ppi_ray_geometry(const Scene& scene, const TerrainTexels& tex, const PpiGeometry& pg, int ray,
+                      const PpiRayOut& out, PpiRayScratch& s) {
+  const SlarGeometry& g = pg.rays;
+  const double H = pg.altitude_m;
+  const double alpha = pg.azimuth_rad(ray);
+  const double look_x = std::sin(alpha), look_y = std::cos(alpha);
+  const GridLine line = grid_line(scene, pg.site_x_m, pg.site_y_m, look_x, look_y,
+                                  g.first_sample_u_m, g.sample_step_m);
+  const auto [begin, end] = inside_samples(line, scene.rows, scene.cols, g.samples);
+  sample_terrain_line(
+      tex, line, begin, end,
+      {s.height.data(), s.dz_dx.data(), s.dz_dy.data(), s.category.data(), s.terrain_flags.data()});
+  for (int j = 0; j < g.samples; ++j) {
+    const std::size_t i = static_cast<std::size_t>(j);
+    const double u = g.sample_u_m(j);
+    const bool inside = j >= begin && j < end;
+    const auto o = static_cast<std::size_t>(inside ? j - begin : 0);
+    std::uint8_t f = inside ? s.terrain_flags[o] : sample_flag::kUnseen;
+    if (f != 0) {
+      out.height_m[i] = out.slant_range_m[i] = out.incidence_rad[i] = kNaN;
+      out.local_incidence_rad[i] = out.area_m2[i] = kNaN;
+      out.range_near_end_m[i] = out.range_far_end_m[i] = kNaN;
+      out.category[i] = 0;
+      out.flags[i] = f;
+      out.dh_du[i] = 0.0f;
+      continue;
+    }
+    TerrainSample ts;
+    ts.inside = ts.valid = true;
+    ts.height_m = s.height[o];
+    ts.dz_dx = s.dz_dx[o];
+    ts.dz_dy = s.dz_dy[o];
+    ts.category = s.category[o];
+    const SampleLook look = look_at(ts, u, H, look_x, look_y);
+    if (look.cos_local <= 0.0) f |= sample_flag::kBackFacing;
+    out.height_m[i] = ts.height_m;
+    out.slant_range_m[i] = static_cast<float>(look.slant_range_m);
+    out.incidence_rad[i] = static_cast<float>(look.incidence_rad);
+    out.local_incidence_rad[i] = static_cast<float>(local_incidence_rad(look));
+    // The annular sector u dalpha x step, tilted.
+    out.area_m2[i] =
+        static_cast<float>(u * pg.ray_spacing_rad * g.sample_step_m * look.normal_length);
+    out.dh_du[i] = static_cast<float>(look.dh_du);
+    out.category[i] = ts.category;
+    out.flags[i] = f;
+  }
+  const LineSamples ls{g.samples,    g.first_sample_u_m, g.sample_step_m,      H,
+                       out.height_m, out.slant_range_m,  out.range_near_end_m, out.range_far_end_m,
+                       out.dh_du,    out.flags};
+  line_element_ends(ls);
+  mark_shadow_and_layover(ls);
+}
+
+PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar) {
+  PpiGeometry pg = ppi_geometry_layout(scene, radar);
+  SlarGeometry& g = pg.rays;
+  g.allocate_samples();
   const TerrainTexels tex = terrain_texels(scene);
   // Rays are independent: one per iteration, scratch per thread. Along a ray
   // the line sampler (ris/geometry/terrain_line.h) gives the terrain of the
   // samples within the scene; the rest are unseen.
 #pragma omp parallel
   {
-    const auto n = static_cast<std::size_t>(g.samples);
-    std::vector<float> dh_du(n), height(n), dz_dx(n), dz_dy(n);
-    std::vector<std::uint16_t> category(n);
-    std::vector<std::uint8_t> terrain_flags(n);
+    PpiRayScratch scratch(g.samples);
+    std::vector<float> dh_du(static_cast<std::size_t>(g.samples));
 #pragma omp for schedule(dynamic, 16)
     for (int ray = 0; ray < g.lines; ++ray) {
-      const double alpha = pg.azimuth_rad(ray);
-      const double look_x = std::sin(alpha), look_y = std::cos(alpha);
       const std::size_t base = g.index(ray, 0);
-      const GridLine line = grid_line(scene, p.site_x_m, p.site_y_m, look_x, look_y,
-                                      g.first_sample_u_m, g.sample_step_m);
-      const auto [begin, end] = inside_samples(line, scene.rows, scene.cols, g.samples);
-      sample_terrain_line(
-          tex, line, begin, end,
-          {height.data(), dz_dx.data(), dz_dy.data(), category.data(), terrain_flags.data()});
-      for (int j = 0; j < g.samples; ++j) {
-        const std::size_t i = base + static_cast<std::size_t>(j);
-        const double u = g.sample_u_m(j);
-        const bool inside = j >= begin && j < end;
-        const auto o = static_cast<std::size_t>(inside ? j - begin : 0);
-        std::uint8_t f = inside ? terrain_flags[o] : sample_flag::kUnseen;
-        if (f != 0) {
-          g.height_m[i] = g.slant_range_m[i] = g.incidence_rad[i] = kNaN;
-          g.local_incidence_rad[i] = g.area_m2[i] = kNaN;
-          g.range_near_end_m[i] = g.range_far_end_m[i] = kNaN;
-          g.category[i] = 0;
-          g.flags[i] = f;
-          dh_du[static_cast<std::size_t>(j)] = 0.0f;
-          continue;
-        }
-        TerrainSample ts;
-        ts.inside = ts.valid = true;
-        ts.height_m = height[o];
-        ts.dz_dx = dz_dx[o];
-        ts.dz_dy = dz_dy[o];
-        ts.category = category[o];
-        const SampleLook look = look_at(ts, u, H, look_x, look_y);
-        if (look.cos_local <= 0.0) f |= sample_flag::kBackFacing;
-        g.height_m[i] = ts.height_m;
-        g.slant_range_m[i] = static_cast<float>(look.slant_range_m);
-        g.incidence_rad[i] = static_cast<float>(look.incidence_rad);
-        g.local_incidence_rad[i] = static_cast<float>(local_incidence_rad(look));
-        // The annular sector u dalpha x step, tilted.
-        g.area_m2[i] =
-            static_cast<float>(u * pg.ray_spacing_rad * g.sample_step_m * look.normal_length);
-        dh_du[static_cast<std::size_t>(j)] = static_cast<float>(look.dh_du);
-        g.category[i] = ts.category;
-        g.flags[i] = f;
-      }
-      const LineSamples ls{g.samples,
-                           g.first_sample_u_m,
-                           g.sample_step_m,
-                           H,
-                           &g.height_m[base],
-                           &g.slant_range_m[base],
-                           &g.range_near_end_m[base],
-                           &g.range_far_end_m[base],
-                           dh_du.data(),
-                           &g.flags[base]};
-      line_element_ends(ls);
-      mark_shadow_and_layover(ls);
+      const PpiRayOut out{&g.height_m[base],        &g.slant_range_m[base],
+                          &g.incidence_rad[base],   &g.local_incidence_rad[base],
+                          &g.area_m2[base],         &g.range_near_end_m[base],
+                          &g.range_far_end_m[base], &g.category[base],
+                          &g.flags[base],           dh_du.data()};
+      ppi_ray_geometry(scene, tex, pg, ray, out, scratch);
     }
   }
-
   g.tally_flags(scene);
   return pg;
 }

@@ -280,12 +280,12 @@ GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem) {
   return w;
 }
 
-TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
-                        const TopoOptions& options) {
-  const RadarGrid& g = acq.grid;
-  const Ellipsoid& e = acq.ellipsoid;
-  TopoLayers t;
-  t.window = options.full_grid ? GridWindow{0, g.lines, 0, g.bins} : dem_window(acq, dem);
+namespace {
+
+// The layers sized for the window; a window that would not fit in memory
+// comfortably refused.
+void allocate_topo_layers(const Acquisition& acq, const EllipsoidalDem& dem,
+                          const TopoOptions& options, TopoLayers& t) {
   const GridWindow w = t.window;
   if (w.lines == 0 || w.bins == 0) {
     throw InputError(dem.source, "",
@@ -312,10 +312,13 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
     v->resize(np);
   }
   t.mask.resize(np);
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+}
 
-  // Pass 1: the radar grid, line by line.
-  const auto t0 = std::chrono::steady_clock::now();
+// Pass 1: the radar grid, line by line; returns the bins whose rdr2geo did
+// not converge.
+std::size_t radar_grid_pass(const Acquisition& acq, const EllipsoidalDem& dem, int threads,
+                            TopoLayers& t) {
+  const GridWindow w = t.window;
   std::size_t bad = 0;
 #pragma omp parallel num_threads(threads) reduction(+ : bad)
   {
@@ -335,13 +338,25 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
       bad += topo_radar_line(acq, dem, w, w.line0 + l, v, sc);
     }
   }
-  t.unconverged = bad;
-  const auto t1 = std::chrono::steady_clock::now();
-  t.radar_seconds = std::chrono::duration<double>(t1 - t0).count();
-  const double cpu1 = process_cpu_seconds();
+  return bad;
+}
 
-  // The DEM cells under the window (its ground points' extent plus a margin
-  // for layover), and the facet size: below half a pixel on the ground.
+// The DEM pass's extent: the DEM cells [r0, r1] x [c0, c1] under the
+// window, each split into oversample^2 facets.
+struct DemPassPlan {
+  int r0 = 0, r1 = -1, c0 = 0, c1 = -1;
+  int oversample = 1;
+};
+
+// The DEM cells under the window (its ground points' extent plus a margin
+// for layover), and the facet size: below half a pixel on the ground. Sets
+// t.oversample and t.beta_area_m2.
+DemPassPlan plan_dem_pass(const Acquisition& acq, const EllipsoidalDem& dem,
+                          const TopoOptions& options, TopoLayers& t) {
+  const RadarGrid& g = acq.grid;
+  const Ellipsoid& e = acq.ellipsoid;
+  const GridWindow w = t.window;
+  const std::size_t np = w.size();
   double la_min = 1e300, la_max = -1e300, lo_min = 1e300, lo_max = -1e300;
   double inc_sum = 0.0;
   std::size_t inc_n = 0;
@@ -372,7 +387,6 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
                 static_cast<int>(std::ceil(2.0 * dem_m / std::min(az_ground_m, rg_ground_m))), 1,
                 64);
   t.beta_area_m2 = g.range_spacing_m * az_ground_m;
-  const int k = t.oversample;
   const auto row_of = [&](double lat_deg) {
     return (deg_to_rad(lat_deg) - dem.lat0_rad) / dem.dlat_rad;
   };
@@ -380,115 +394,156 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
     return (deg_to_rad(lon_deg) - dem.lon0_rad) / dem.dlon_rad;
   };
   const int pad = 3;
-  const int r0 =
-      std::max(0, static_cast<int>(std::floor(std::min(row_of(la_min), row_of(la_max)))) - pad);
-  const int r1 = std::min(
-      dem.rows - 2, static_cast<int>(std::ceil(std::max(row_of(la_min), row_of(la_max)))) + pad);
-  const int c0 =
-      std::max(0, static_cast<int>(std::floor(std::min(col_of(lo_min), col_of(lo_max)))) - pad);
-  const int c1 = std::min(
-      dem.cols - 2, static_cast<int>(std::ceil(std::max(col_of(lo_min), col_of(lo_max)))) + pad);
+  DemPassPlan p;
+  p.oversample = t.oversample;
+  p.r0 = std::max(0, static_cast<int>(std::floor(std::min(row_of(la_min), row_of(la_max)))) - pad);
+  p.r1 = std::min(dem.rows - 2,
+                  static_cast<int>(std::ceil(std::max(row_of(la_min), row_of(la_max)))) + pad);
+  p.c0 = std::max(0, static_cast<int>(std::floor(std::min(col_of(lo_min), col_of(lo_max)))) - pad);
+  p.c1 = std::min(dem.cols - 2,
+                  static_cast<int>(std::ceil(std::max(col_of(lo_min), col_of(lo_max)))) + pad);
+  return p;
+}
 
-  // Pass 2: every DEM facet into the radar grid.
-  const int nsub = (c1 - c0 + 1) * k;  // facets per facet row
-  // Per facet column: the DEM column, the bilinear weight, the longitude's
-  // cosine and sine (computed once for every facet row).
-  std::vector<int> col_of_corner(static_cast<std::size_t>(nsub) + 1);
-  std::vector<double> frac_of_corner(col_of_corner.size()), cos_lon(col_of_corner.size()),
-      sin_lon(col_of_corner.size());
-  for (int j = 0; j <= nsub; ++j) {
-    const double v = c0 + static_cast<double>(j) / k;
-    col_of_corner[j] = std::min(static_cast<int>(v), dem.cols - 2);
-    frac_of_corner[j] = v - col_of_corner[j];
-    const double lon = dem.lon0_rad + v * dem.dlon_rad;
-    cos_lon[j] = std::cos(lon);
-    sin_lon[j] = std::sin(lon);
+// The DEM pass's per-facet-column constants: the DEM column, the bilinear
+// weight, the longitude's cosine and sine (computed once for every facet
+// row).
+struct FacetColumns {
+  std::vector<int> col_of_corner;
+  std::vector<double> frac_of_corner, cos_lon, sin_lon;
+  FacetColumns(const EllipsoidalDem& dem, const DemPassPlan& p, int nsub)
+      : col_of_corner(static_cast<std::size_t>(nsub) + 1),
+        frac_of_corner(col_of_corner.size()),
+        cos_lon(col_of_corner.size()),
+        sin_lon(col_of_corner.size()) {
+    const int k = p.oversample;
+    for (int j = 0; j <= nsub; ++j) {
+      const double v = p.c0 + static_cast<double>(j) / k;
+      col_of_corner[j] = std::min(static_cast<int>(v), dem.cols - 2);
+      frac_of_corner[j] = v - col_of_corner[j];
+      const double lon = dem.lon0_rad + v * dem.dlon_rad;
+      cos_lon[j] = std::cos(lon);
+      sin_lon[j] = std::sin(lon);
+    }
   }
-  // Facet normals point up when rows run south and columns east.
-  const double orient = (dem.dlat_rad < 0 ? 1.0 : -1.0) * (dem.dlon_rad > 0 ? 1.0 : -1.0);
-  // Area and power sums of a pixel side by side (one cache line for both).
-  std::vector<std::int64_t> sums(2 * np, 0);
+};
+
+// Corner heights of facet row u: bilinear in the DEM cell; positions: the
+// closed-form geodetic -> ECEF with the row's latitude terms computed once.
+void facet_corner_row(const EllipsoidalDem& dem, const Ellipsoid& e, const FacetColumns& fc,
+                      int nsub, double u, std::vector<Vec3>& out) {
+  const int ru = std::min(static_cast<int>(u), dem.rows - 2);
+  const double fu = u - ru;
+  const double lat = dem.lat0_rad + u * dem.dlat_rad;
+  const double sl = std::sin(lat), cl = std::cos(lat);
+  const double nr = e.prime_vertical_radius_m(lat);
+  for (int j = 0; j <= nsub; ++j) {
+    const int cv = fc.col_of_corner[j];
+    const double fv = fc.frac_of_corner[j];
+    const double h = (dem.at(ru, cv) * (1.0 - fv) + dem.at(ru, cv + 1) * fv) * (1.0 - fu) +
+                     (dem.at(ru + 1, cv) * (1.0 - fv) + dem.at(ru + 1, cv + 1) * fv) * fu;
+    const double rc = (nr + h) * cl;
+    out[j] = {rc * fc.cos_lon[j], rc * fc.sin_lon[j], (nr * (1.0 - e.e2()) + h) * sl};
+  }
+}
+
+// What every facet of the DEM pass reads.
+struct FacetPass {
+  const GridWindow& w;
+  const FacetLocator& locator;
+  double orient;  // facet normals up
+  double t_mid;   // the first guess of a row's first facet
+  double inv_dt, inv_dr, line_origin, bin_origin;
+};
+
+// One facet row between corner rows `top` and `bottom` into the pixel sums
+// (area and power side by side); returns the facets located.
+std::size_t facet_row(const FacetPass& fp, int nsub, const std::vector<Vec3>& top,
+                      const std::vector<Vec3>& bottom, std::vector<std::int64_t>& my_sums) {
+  const GridWindow& w = fp.w;
   std::size_t facets = 0;
-  const double t_mid = g.time_of_line(w.line0 + 0.5 * (w.lines - 1));
+  // Warm start: the time extrapolated from the two previous facets
+  // of the row (their times step almost evenly), so one Newton step
+  // (one orbit interpolation) usually moves less than 1e-5 s, after
+  // which the error left is of order 1e-13 s (Newton's quadratic
+  // convergence), far below a line.
+  double t_last = fp.t_mid, t_step = 0.0;
+  int known = 0;
+  for (int j = 0; j < nsub; ++j) {
+    const Vec3 &a = top[j], &b = top[j + 1], &c = bottom[j], &d = bottom[j + 1];
+    const Vec3 centre = (a + b + c + d) * 0.25;
+    if (!std::isfinite(centre.x)) {
+      known = 0;
+      continue;
+    }
+    const double t_guess = known == 0 ? fp.t_mid : known == 1 ? t_last : t_last + t_step;
+    const RadarPoint p = fp.locator.locate(centre, t_guess);
+    if (!p.converged) {
+      known = 0;
+      continue;
+    }
+    t_step = p.time_s - t_last;
+    t_last = p.time_s;
+    known = std::min(known + 1, 2);
+    ++facets;
+    const Vec3 area = (d - a).cross(b - c) * (0.5 * fp.orient);
+    const Vec3 los = (p.sensor_m - centre) * (1.0 / p.slant_range_m);
+    const double proj = area.dot(los);
+    if (proj <= 0.0) continue;  // facing away: no area, no echo
+    const double a_m2 = area.norm();
+    const double power = muhleman_sigma0(proj / a_m2) * a_m2;
+    // Bilinear spread over the four nearest pixels.
+    const double fl = (p.time_s - fp.line_origin) * fp.inv_dt;
+    const double fb = (p.slant_range_m - fp.bin_origin) * fp.inv_dr;
+    const double l0f = std::floor(fl), b0f = std::floor(fb);
+    if (l0f < -1.0 || b0f < -1.0 || l0f >= w.lines || b0f >= w.bins) continue;
+    const int l0 = static_cast<int>(l0f), b0 = static_cast<int>(b0f);
+    const double wl = fl - l0f, wb = fb - b0f;
+    const double wts[4] = {(1 - wl) * (1 - wb), (1 - wl) * wb, wl * (1 - wb), wl * wb};
+    const int ls[4] = {l0, l0, l0 + 1, l0 + 1}, bs[4] = {b0, b0 + 1, b0, b0 + 1};
+    for (int q = 0; q < 4; ++q) {
+      if (ls[q] < 0 || ls[q] >= w.lines || bs[q] < 0 || bs[q] >= w.bins) continue;
+      const std::size_t o = static_cast<std::size_t>(ls[q]) * w.bins + bs[q];
+      // Round half up (values are >= 0): no library call per sample.
+      my_sums[2 * o] += static_cast<std::int64_t>(proj * wts[q] * kFixedPerM2 + 0.5);
+      my_sums[2 * o + 1] += static_cast<std::int64_t>(power * wts[q] * kFixedPerM2 + 0.5);
+    }
+  }
+  return facets;
+}
+
+// Pass 2: every DEM facet into the radar grid: the pixels' area and power
+// sums (fixed point, so that the sum does not depend on the threads), side
+// by side (one cache line for both); returns the facets located.
+std::size_t dem_facet_pass(const Acquisition& acq, const EllipsoidalDem& dem, const GridWindow& w,
+                           const DemPassPlan& plan, int threads, std::vector<std::int64_t>& sums) {
+  const RadarGrid& g = acq.grid;
+  const Ellipsoid& e = acq.ellipsoid;
+  const std::size_t np = w.size();
+  const int k = plan.oversample;
+  const int nsub = (plan.c1 - plan.c0 + 1) * k;  // facets per facet row
+  const FacetColumns fc(dem, plan, nsub);
   const FacetLocator locator(acq.orbit, kFacetTolerance_s);
-  const double inv_dt = 1.0 / g.line_interval_s, inv_dr = 1.0 / g.range_spacing_m;
-  const double line_origin = g.sensing_start_s + w.line0 * g.line_interval_s;
-  const double bin_origin = g.near_range_m + w.bin0 * g.range_spacing_m;
+  const FacetPass fp{w, locator,
+                     // Facet normals point up when rows run south and columns east.
+                     (dem.dlat_rad < 0 ? 1.0 : -1.0) * (dem.dlon_rad > 0 ? 1.0 : -1.0),
+                     g.time_of_line(w.line0 + 0.5 * (w.lines - 1)), 1.0 / g.line_interval_s,
+                     1.0 / g.range_spacing_m, g.sensing_start_s + w.line0 * g.line_interval_s,
+                     g.near_range_m + w.bin0 * g.range_spacing_m};
+  sums.assign(2 * np, 0);
+  std::size_t facets = 0;
 #pragma omp parallel num_threads(threads) reduction(+ : facets)
   {
     std::vector<std::int64_t> my_sums(2 * np, 0);
     std::vector<Vec3> top(static_cast<std::size_t>(nsub) + 1), bottom(top.size());
-    const auto corner_row = [&](double u, std::vector<Vec3>& out) {
-      // Corner heights: bilinear in the DEM cell; positions: the closed-form
-      // geodetic -> ECEF with the row's latitude terms computed once.
-      const int ru = std::min(static_cast<int>(u), dem.rows - 2);
-      const double fu = u - ru;
-      const double lat = dem.lat0_rad + u * dem.dlat_rad;
-      const double sl = std::sin(lat), cl = std::cos(lat);
-      const double nr = e.prime_vertical_radius_m(lat);
-      for (int j = 0; j <= nsub; ++j) {
-        const int cv = col_of_corner[j];
-        const double fv = frac_of_corner[j];
-        const double h = (dem.at(ru, cv) * (1.0 - fv) + dem.at(ru, cv + 1) * fv) * (1.0 - fu) +
-                         (dem.at(ru + 1, cv) * (1.0 - fv) + dem.at(ru + 1, cv + 1) * fv) * fu;
-        const double rc = (nr + h) * cl;
-        out[j] = {rc * cos_lon[j], rc * sin_lon[j], (nr * (1.0 - e.e2()) + h) * sl};
-      }
-    };
 #pragma omp for schedule(static)
-    for (int r = r0; r <= r1; ++r) {
-      corner_row(r, bottom);
+    for (int r = plan.r0; r <= plan.r1; ++r) {
+      facet_corner_row(dem, e, fc, nsub, r, bottom);
       for (int i = 0; i < k; ++i) {
         // This facet row's top corners are the last one's bottom corners.
         std::swap(top, bottom);
-        corner_row(r + static_cast<double>(i + 1) / k, bottom);
-        // Warm start: the time extrapolated from the two previous facets
-        // of the row (their times step almost evenly), so one Newton step
-        // (one orbit interpolation) usually moves less than 1e-5 s, after
-        // which the error left is of order 1e-13 s (Newton's quadratic
-        // convergence), far below a line.
-        double t_last = t_mid, t_step = 0.0;
-        int known = 0;
-        for (int j = 0; j < nsub; ++j) {
-          const Vec3 &a = top[j], &b = top[j + 1], &c = bottom[j], &d = bottom[j + 1];
-          const Vec3 centre = (a + b + c + d) * 0.25;
-          if (!std::isfinite(centre.x)) {
-            known = 0;
-            continue;
-          }
-          const double t_guess = known == 0 ? t_mid : known == 1 ? t_last : t_last + t_step;
-          const RadarPoint p = locator.locate(centre, t_guess);
-          if (!p.converged) {
-            known = 0;
-            continue;
-          }
-          t_step = p.time_s - t_last;
-          t_last = p.time_s;
-          known = std::min(known + 1, 2);
-          ++facets;
-          const Vec3 area = (d - a).cross(b - c) * (0.5 * orient);
-          const Vec3 los = (p.sensor_m - centre) * (1.0 / p.slant_range_m);
-          const double proj = area.dot(los);
-          if (proj <= 0.0) continue;  // facing away: no area, no echo
-          const double a_m2 = area.norm();
-          const double power = muhleman_sigma0(proj / a_m2) * a_m2;
-          // Bilinear spread over the four nearest pixels.
-          const double fl = (p.time_s - line_origin) * inv_dt;
-          const double fb = (p.slant_range_m - bin_origin) * inv_dr;
-          const double l0f = std::floor(fl), b0f = std::floor(fb);
-          if (l0f < -1.0 || b0f < -1.0 || l0f >= w.lines || b0f >= w.bins) continue;
-          const int l0 = static_cast<int>(l0f), b0 = static_cast<int>(b0f);
-          const double wl = fl - l0f, wb = fb - b0f;
-          const double wts[4] = {(1 - wl) * (1 - wb), (1 - wl) * wb, wl * (1 - wb), wl * wb};
-          const int ls[4] = {l0, l0, l0 + 1, l0 + 1}, bs[4] = {b0, b0 + 1, b0, b0 + 1};
-          for (int q = 0; q < 4; ++q) {
-            if (ls[q] < 0 || ls[q] >= w.lines || bs[q] < 0 || bs[q] >= w.bins) continue;
-            const std::size_t o = static_cast<std::size_t>(ls[q]) * w.bins + bs[q];
-            // Round half up (values are >= 0): no library call per sample.
-            my_sums[2 * o] += static_cast<std::int64_t>(proj * wts[q] * kFixedPerM2 + 0.5);
-            my_sums[2 * o + 1] += static_cast<std::int64_t>(power * wts[q] * kFixedPerM2 + 0.5);
-          }
-        }
+        facet_corner_row(dem, e, fc, nsub, r + static_cast<double>(i + 1) / k, bottom);
+        facets += facet_row(fp, nsub, top, bottom, my_sums);
       }
     }
 #pragma omp critical
@@ -497,8 +552,12 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
       sums[2 * i + 1] += my_sums[2 * i + 1];
     }
   }
-  t.dem_facets = facets;
-  t.dem_cells = static_cast<std::size_t>(r1 - r0 + 1) * static_cast<std::size_t>(c1 - c0 + 1);
+  return facets;
+}
+
+// The DEM pass's sums into the projected-area and amplitude layers.
+void finish_topo_layers(const std::vector<std::int64_t>& sums, TopoLayers& t) {
+  const std::size_t np = t.window.size();
   for (std::size_t i = 0; i < np; ++i) {
     const bool valid = std::isfinite(t.height_m[i]);
     t.gamma_area_m2[i] =
@@ -509,6 +568,30 @@ TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
                                    ? 0.0F
                                    : static_cast<float>(std::sqrt(beta0));
   }
+}
+
+}  // namespace
+
+TopoLayers compute_topo(const Acquisition& acq, const EllipsoidalDem& dem,
+                        const TopoOptions& options) {
+  const RadarGrid& g = acq.grid;
+  TopoLayers t;
+  t.window = options.full_grid ? GridWindow{0, g.lines, 0, g.bins} : dem_window(acq, dem);
+  allocate_topo_layers(acq, dem, options, t);
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+
+  const auto t0 = std::chrono::steady_clock::now();
+  t.unconverged = radar_grid_pass(acq, dem, threads, t);
+  const auto t1 = std::chrono::steady_clock::now();
+  t.radar_seconds = std::chrono::duration<double>(t1 - t0).count();
+  const double cpu1 = process_cpu_seconds();
+
+  const DemPassPlan plan = plan_dem_pass(acq, dem, options, t);
+  std::vector<std::int64_t> sums;
+  t.dem_facets = dem_facet_pass(acq, dem, t.window, plan, threads, sums);
+  t.dem_cells = static_cast<std::size_t>(plan.r1 - plan.r0 + 1) *
+                static_cast<std::size_t>(plan.c1 - plan.c0 + 1);
+  finish_topo_layers(sums, t);
   t.dem_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   t.dem_cpu_seconds = process_cpu_seconds() - cpu1;
   return t;

@@ -103,77 +103,41 @@ void text(cairo_t* cr, double x, double y, double size, const std::string& s, bo
   cairo_show_text(cr, s.c_str());
 }
 
-}  // namespace
-
-void write_scene_preview(const Scene& scene, const std::filesystem::path& path,
-                         const ScenePreviewOptions& opt) {
-  scene.validate(path.string());
-  const std::vector<std::uint8_t> rgb = shaded_category_rgb(scene, opt);
-
-  // Map size: average whole blocks of `down` cells, or repeat each cell `up` times.
-  const int longer = std::max(scene.cols, scene.rows);
-  const int down = std::max(1, (longer + opt.max_map_px - 1) / std::max(1, opt.max_map_px));
-  const int up = down > 1 ? 1 : std::max(1, opt.min_map_px / longer);
-  const int map_w = (scene.cols / down) * up;
-  const int map_h = (scene.rows / down) * up;
-  RIS_CHECK(map_w > 0 && map_h > 0);
-
-  const SceneStats st = scene_stats(scene);
-  const int margin = 16;
-  const int legend_w = 300;
-  const int line_h = 20;
-  const int legend_lines =
-      9 + static_cast<int>(std::min<std::size_t>(st.category_counts.size(), 24));
-  const int width = margin + map_w + margin + legend_w;
-  const int height = std::max(margin + map_h + 56, margin + legend_lines * line_h + margin);
-
-  CairoSurface map;
+// The map: average whole blocks of `down` cells, or repeat each cell `up`
+// times, into `map` (map_w x map_h, made here).
+void fill_map_surface(const Scene& scene, const std::vector<std::uint8_t>& rgb, int down, int up,
+                      int map_w, int map_h, CairoSurface& map) {
   map.s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, map_w, map_h);
-  {
-    cairo_surface_flush(map.s);
-    unsigned char* data = cairo_image_surface_get_data(map.s);
-    const int stride = cairo_image_surface_get_stride(map.s);
-    const int mc = scene.cols / down;
-    const int mr = scene.rows / down;
-    for (int r = 0; r < mr; ++r) {
-      for (int c = 0; c < mc; ++c) {
-        double sum[3] = {0, 0, 0};
-        for (int i = 0; i < down; ++i) {
-          for (int j = 0; j < down; ++j) {
-            const std::size_t k = 3 * scene.index(r * down + i, c * down + j);
-            for (int b = 0; b < 3; ++b) sum[b] += rgb[k + static_cast<std::size_t>(b)];
-          }
-        }
-        const double n = double(down) * down;
-        const auto px = (static_cast<std::uint32_t>(std::lround(sum[0] / n)) << 16) |
-                        (static_cast<std::uint32_t>(std::lround(sum[1] / n)) << 8) |
-                        static_cast<std::uint32_t>(std::lround(sum[2] / n));
-        for (int i = 0; i < up; ++i) {
-          auto* row = reinterpret_cast<std::uint32_t*>(
-              data + static_cast<std::ptrdiff_t>(r * up + i) * stride);
-          for (int j = 0; j < up; ++j) row[c * up + j] = px;
+  cairo_surface_flush(map.s);
+  unsigned char* data = cairo_image_surface_get_data(map.s);
+  const int stride = cairo_image_surface_get_stride(map.s);
+  const int mc = scene.cols / down;
+  const int mr = scene.rows / down;
+  for (int r = 0; r < mr; ++r) {
+    for (int c = 0; c < mc; ++c) {
+      double sum[3] = {0, 0, 0};
+      for (int i = 0; i < down; ++i) {
+        for (int j = 0; j < down; ++j) {
+          const std::size_t k = 3 * scene.index(r * down + i, c * down + j);
+          for (int b = 0; b < 3; ++b) sum[b] += rgb[k + static_cast<std::size_t>(b)];
         }
       }
+      const double n = double(down) * down;
+      const auto px = (static_cast<std::uint32_t>(std::lround(sum[0] / n)) << 16) |
+                      (static_cast<std::uint32_t>(std::lround(sum[1] / n)) << 8) |
+                      static_cast<std::uint32_t>(std::lround(sum[2] / n));
+      for (int i = 0; i < up; ++i) {
+        auto* row = reinterpret_cast<std::uint32_t*>(
+            data + static_cast<std::ptrdiff_t>(r * up + i) * stride);
+        for (int j = 0; j < up; ++j) row[c * up + j] = px;
+      }
     }
-    cairo_surface_mark_dirty(map.s);
   }
+  cairo_surface_mark_dirty(map.s);
+}
 
-  CairoSurface page;
-  page.s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
-  CairoContext ctx;
-  ctx.c = cairo_create(page.s);
-  cairo_t* cr = ctx.c;
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
-  cairo_set_source_surface(cr, map.s, margin, margin);
-  cairo_paint(cr);
-  cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-  cairo_set_line_width(cr, 1.0);
-  cairo_rectangle(cr, margin - 0.5, margin - 0.5, map_w + 1, map_h + 1);
-  cairo_stroke(cr);
-
-  // Scale bar under the map: a round length about a quarter of the width.
-  const double m_per_px = scene.dx_m * down / up;
+// Scale bar under the map: a round length about a quarter of the width.
+void draw_scale_bar(cairo_t* cr, double m_per_px, int margin, int map_w, int map_h) {
   const double bar_m = nice_length(map_w * m_per_px / 4.0);
   const double bar_px = bar_m / m_per_px;
   const double by = margin + map_h + 22;
@@ -185,8 +149,10 @@ void write_scene_preview(const Scene& scene, const std::filesystem::path& path,
       bar_m >= 1000.0 ? fmt::format("{:g} km", bar_m / 1000.0) : fmt::format("{:g} m", bar_m);
   text(cr, margin, by + 18, 12,
        fmt::format("{}  ({:g} ft)", bar_label, std::round(bar_m / kFeetToMetres)));
+}
 
-  // North arrow at the map's top-right corner (row 0 is north).
+// North arrow at the map's top-right corner (row 0 is north).
+void draw_north_arrow(cairo_t* cr, int margin, int map_w) {
   const double ax = margin + map_w - 20;
   const double ay = margin + 14;
   cairo_set_source_rgb(cr, 1, 1, 1);
@@ -199,10 +165,12 @@ void write_scene_preview(const Scene& scene, const std::filesystem::path& path,
   cairo_set_line_width(cr, 1.0);
   cairo_stroke(cr);
   text(cr, ax - 5, ay + 34, 13, "N", true);
+}
 
-  // Legend.
-  double x = margin + map_w + margin;
-  double y = margin + 14;
+// The legend from (x, y): title, grid, elevations, lighting, contours, no
+// data, then the categories (at most 24) with their share of the cells.
+void draw_legend(cairo_t* cr, const Scene& scene, const SceneStats& st,
+                 const ScenePreviewOptions& opt, double x, double y, int line_h) {
   cairo_set_source_rgb(cr, 0, 0, 0);
   text(cr, x, y, 16, opt.title.empty() ? "scene" : opt.title, true);
   y += line_h + 4;
@@ -255,6 +223,52 @@ void write_scene_preview(const Scene& scene, const std::filesystem::path& path,
     y += line_h;
     ++shown;
   }
+}
+
+}  // namespace
+
+void write_scene_preview(const Scene& scene, const std::filesystem::path& path,
+                         const ScenePreviewOptions& opt) {
+  scene.validate(path.string());
+  const std::vector<std::uint8_t> rgb = shaded_category_rgb(scene, opt);
+
+  // Map size: average whole blocks of `down` cells, or repeat each cell `up` times.
+  const int longer = std::max(scene.cols, scene.rows);
+  const int down = std::max(1, (longer + opt.max_map_px - 1) / std::max(1, opt.max_map_px));
+  const int up = down > 1 ? 1 : std::max(1, opt.min_map_px / longer);
+  const int map_w = (scene.cols / down) * up;
+  const int map_h = (scene.rows / down) * up;
+  RIS_CHECK(map_w > 0 && map_h > 0);
+
+  const SceneStats st = scene_stats(scene);
+  const int margin = 16;
+  const int legend_w = 300;
+  const int line_h = 20;
+  const int legend_lines =
+      9 + static_cast<int>(std::min<std::size_t>(st.category_counts.size(), 24));
+  const int width = margin + map_w + margin + legend_w;
+  const int height = std::max(margin + map_h + 56, margin + legend_lines * line_h + margin);
+
+  CairoSurface map;
+  fill_map_surface(scene, rgb, down, up, map_w, map_h, map);
+
+  CairoSurface page;
+  page.s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+  CairoContext ctx;
+  ctx.c = cairo_create(page.s);
+  cairo_t* cr = ctx.c;
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  cairo_set_source_surface(cr, map.s, margin, margin);
+  cairo_paint(cr);
+  cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+  cairo_set_line_width(cr, 1.0);
+  cairo_rectangle(cr, margin - 0.5, margin - 0.5, map_w + 1, map_h + 1);
+  cairo_stroke(cr);
+
+  draw_scale_bar(cr, scene.dx_m * down / up, margin, map_w, map_h);
+  draw_north_arrow(cr, margin, map_w);
+  draw_legend(cr, scene, st, opt, margin + map_w + margin, margin + 14, line_h);
   cairo_surface_flush(page.s);
 
   AtomicPath out(path);

@@ -182,6 +182,68 @@ TargetGrid plan_warp(GDALDatasetH src, const std::array<double, 6>& src_gt,
   return g;
 }
 
+// The UTM zone of the DEM's centre on the DEM's geodetic datum (a DEM not
+// in metres is warped into it); frame_note says so.
+OGRSpatialReference utm_frame_of_centre(const OGRSpatialReference& horizontal,
+                                        const std::array<double, 6>& src_gt, int src_cols,
+                                        int src_rows, const std::string& path,
+                                        std::string& frame_note) {
+  if (horizontal.IsLocal()) {
+    throw InputError(path, "crs", "a local CRS not in metres cannot be converted to metres");
+  }
+  OGRSpatialReference geog;
+  geog.CopyGeogCSFrom(&horizontal);
+  geog.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  double cx = src_gt[0] + 0.5 * src_cols * src_gt[1] + 0.5 * src_rows * src_gt[2];
+  double cy = src_gt[3] + 0.5 * src_cols * src_gt[4] + 0.5 * src_rows * src_gt[5];
+  std::unique_ptr<OGRCoordinateTransformation> to_geog(
+      OGRCreateCoordinateTransformation(&horizontal, &geog));
+  if (!to_geog || !to_geog->Transform(1, &cx, &cy)) {
+    throw InputError(path, "crs", "cannot find the DEM centre's latitude/longitude");
+  }
+  const int zone = utm_zone_of_longitude(cx);
+  const bool north = cy >= 0.0;
+  OGRSpatialReference target;
+  target.CopyGeogCSFrom(&horizontal);
+  target.SetUTM(zone, north ? TRUE : FALSE);
+  target.SetProjCS(
+      fmt::format("{} / UTM zone {}{}", geog.GetName(), zone, north ? "N" : "S").c_str());
+  target.AutoIdentifyEPSG();
+  frame_note = fmt::format(
+      "UTM zone {}{} of the DEM centre ({:.5f} deg {}, {:.5f} deg {}), reprojected with "
+      "GDAL's warper (bilinear heights; no-data from the nearest posting)",
+      zone, north ? "N" : "S", std::abs(cy), cy >= 0 ? "N" : "S", std::abs(cx),
+      cx >= 0 ? "E" : "W");
+  return target;
+}
+
+// The scene's heights in metres (heights x scale x unit + offset x unit);
+// no-data (NaN) cells masked and counted in out.nodata_cells.
+void fill_scene_heights(const std::vector<float>& heights, double scale, double offset,
+                        double unit_m, std::uint16_t category, const std::string& path,
+                        ImportedDem& out) {
+  Scene& scene = out.scene;
+  scene.elevation_m.resize(scene.size());
+  scene.category.assign(scene.size(), category);
+  scene.valid.assign(scene.size(), 1);
+  const double factor_m = scale * unit_m;
+  const double offset_m = offset * unit_m;
+  for (std::size_t i = 0; i < scene.size(); ++i) {
+    if (std::isnan(heights[i])) {
+      scene.valid[i] = 0;
+      scene.elevation_m[i] = 0.0f;
+      scene.category[i] = kNoDataCategory;
+      ++out.nodata_cells;
+    } else {
+      scene.elevation_m[i] = static_cast<float>(heights[i] * factor_m + offset_m);
+    }
+  }
+  scene.validate(path);
+  if (out.nodata_cells == scene.size()) {
+    throw InputError(path, "", "the DEM holds no valid heights (every cell is no-data)");
+  }
+}
+
 }  // namespace
 
 int utm_zone_of_longitude(double lon_deg) {
@@ -276,31 +338,7 @@ ImportedDem import_dem(const std::filesystem::path& dem_path, const DemImportOpt
       target = horizontal;
       frame_note = "the DEM's own CRS, resampled with GDAL's warper (bilinear)";
     } else {
-      if (horizontal.IsLocal()) {
-        throw InputError(path, "crs", "a local CRS not in metres cannot be converted to metres");
-      }
-      OGRSpatialReference geog;
-      geog.CopyGeogCSFrom(&horizontal);
-      geog.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-      double cx = src_gt[0] + 0.5 * src_cols * src_gt[1] + 0.5 * src_rows * src_gt[2];
-      double cy = src_gt[3] + 0.5 * src_cols * src_gt[4] + 0.5 * src_rows * src_gt[5];
-      std::unique_ptr<OGRCoordinateTransformation> to_geog(
-          OGRCreateCoordinateTransformation(&horizontal, &geog));
-      if (!to_geog || !to_geog->Transform(1, &cx, &cy)) {
-        throw InputError(path, "crs", "cannot find the DEM centre's latitude/longitude");
-      }
-      const int zone = utm_zone_of_longitude(cx);
-      const bool north = cy >= 0.0;
-      target.CopyGeogCSFrom(&horizontal);
-      target.SetUTM(zone, north ? TRUE : FALSE);
-      target.SetProjCS(
-          fmt::format("{} / UTM zone {}{}", geog.GetName(), zone, north ? "N" : "S").c_str());
-      target.AutoIdentifyEPSG();
-      frame_note = fmt::format(
-          "UTM zone {}{} of the DEM centre ({:.5f} deg {}, {:.5f} deg {}), reprojected with "
-          "GDAL's warper (bilinear heights; no-data from the nearest posting)",
-          zone, north ? "N" : "S", std::abs(cy), cy >= 0 ? "N" : "S", std::abs(cx),
-          cx >= 0 ? "E" : "W");
+      target = utm_frame_of_centre(horizontal, src_gt, src_cols, src_rows, path, frame_note);
     }
     target.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     // The horizontal CRS only: heights stay as the DEM gives them (no
@@ -329,25 +367,7 @@ ImportedDem import_dem(const std::filesystem::path& dem_path, const DemImportOpt
   }
 
   // Heights in metres; no-data cells masked and counted.
-  scene.elevation_m.resize(scene.size());
-  scene.category.assign(scene.size(), options.category);
-  scene.valid.assign(scene.size(), 1);
-  const double factor_m = scale * unit_m;
-  const double offset_m = offset * unit_m;
-  for (std::size_t i = 0; i < scene.size(); ++i) {
-    if (std::isnan(heights[i])) {
-      scene.valid[i] = 0;
-      scene.elevation_m[i] = 0.0f;
-      scene.category[i] = kNoDataCategory;
-      ++out.nodata_cells;
-    } else {
-      scene.elevation_m[i] = static_cast<float>(heights[i] * factor_m + offset_m);
-    }
-  }
-  scene.validate(path);
-  if (out.nodata_cells == scene.size()) {
-    throw InputError(path, "", "the DEM holds no valid heights (every cell is no-data)");
-  }
+  fill_scene_heights(heights, scale, offset, unit_m, options.category, path, out);
   out.vertical_datum = vertical;
   out.metadata = {
       {"RIS_SOURCE_DEM", dem_path.filename().string()},

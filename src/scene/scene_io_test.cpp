@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <gdal.h>
 
+#include <cmath>
+#include <filesystem>
+
+#include "ris/io/gdal_util.h"
 #include "ris/io/raster_io.h"
 #include "ris/util/error.h"
 #include "test_util.h"
@@ -93,6 +97,70 @@ TEST(SceneIo, NoPartialFileLeftOnFailure) {
   Scene bad;  // empty: validate() throws before anything is written
   EXPECT_THROW(write_scene_geotiff(bad, dir / "bad.tif"), InputError);
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+// The VRT form: the same scene back, categories as a UInt16 band with the
+// reserved no-data id, elevation Float32 with NaN, sources relative to the
+// VRT (the folder moved whole still opens), the scene's metadata on the VRT.
+TEST(SceneIo, VrtFormHoldsCategoriesAsAnIntegerBand) {
+  test::TempDir dir;
+  const Scene s = small_scene();
+  write_scene_geotiff(s, dir / "scene.vrt", {{"RIS_SCENE_NAME", "small"}});
+  const auto files = scene_files(dir / "scene.vrt");
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_EQ(files[0].filename(), "scene_elevation.tif");
+  EXPECT_EQ(files[1].filename(), "scene_category.tif");
+  for (const auto& f : files) EXPECT_TRUE(std::filesystem::is_regular_file(f)) << f;
+  // Only the three files: no temporaries left.
+  int n = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++n;
+  EXPECT_EQ(n, 3);
+
+  std::filesystem::create_directory(dir / "moved");
+  for (const auto& f : files) std::filesystem::rename(f, dir / "moved" / f.filename());
+  const std::filesystem::path vrt = dir / "moved" / "scene.vrt";
+  GdalDataset ds = open_raster(vrt.string());
+  ASSERT_EQ(GDALGetRasterCount(handle(ds)), 2);
+  GDALRasterBandH z = GDALGetRasterBand(handle(ds), 1);
+  GDALRasterBandH c = GDALGetRasterBand(handle(ds), 2);
+  EXPECT_EQ(GDALGetRasterDataType(z), GDT_Float32);
+  EXPECT_EQ(GDALGetRasterDataType(c), GDT_UInt16);
+  int has = 0;
+  EXPECT_EQ(GDALGetRasterNoDataValue(c, &has), 65535.0);
+  EXPECT_TRUE(has);
+  EXPECT_TRUE(std::isnan(GDALGetRasterNoDataValue(z, &has)));
+  EXPECT_TRUE(has);
+  EXPECT_STREQ(GDALGetDescription(c), "category");
+  EXPECT_STREQ(GDALGetMetadataItem(handle(ds), "RIS_SCENE", nullptr), "1");
+  EXPECT_STREQ(GDALGetMetadataItem(handle(ds), "RIS_SCENE_NAME", nullptr), "small");
+  ds.reset();
+
+  const Scene r = read_scene(vrt);
+  const Scene t = [&] {
+    write_scene_geotiff(s, dir / "scene.tif");
+    return read_scene(dir / "scene.tif");
+  }();
+  ASSERT_EQ(r.rows, s.rows);
+  ASSERT_EQ(r.cols, s.cols);
+  EXPECT_DOUBLE_EQ(r.origin_x_m, s.origin_x_m);
+  EXPECT_DOUBLE_EQ(r.origin_y_m, s.origin_y_m);
+  EXPECT_EQ(r.valid, t.valid);
+  EXPECT_EQ(r.category, t.category);
+  EXPECT_EQ(r.elevation_m, t.elevation_m);
+  EXPECT_EQ(r.category[4], kNoDataCategory);
+  EXPECT_EQ(r.valid[4], 0);
+}
+
+TEST(SceneIo, VrtFormLeavesNothingOnFailure) {
+  test::TempDir dir;
+  const Scene s = small_scene();
+  {
+    SceneGeoTiffWriter out(dir / "scene.vrt", s);
+    // Destroyed before close(): as a run that failed half way.
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+  EXPECT_FALSE(scene_is_vrt(dir / "scene.tif"));
+  EXPECT_TRUE(scene_is_vrt(dir / "scene.VRT"));
 }
 
 }  // namespace

@@ -170,8 +170,8 @@ AcquisitionSimulation simulate_acquisition(const Acquisition& acq, const Ellipso
   SlarLineCounts counts;
   const TwoWayGainTable gain2(imaging.elevation_gain, imaging.peak_gain, sim.radar.source_file);
   const detail::SlarElementContext ctx = detail::element_context(imaging, gain2, rs.lut, w.bins);
-  const detail::LineStages stages{ctx, LineLookFrame{}, !gain2.uniform(),
-                                  imaging.range_window_bins};
+  const detail::LineStages stages{ctx, LineLookFrame{}, !gain2.uniform(), imaging.range_window_bins,
+                                  nullptr};
   detail::run_line_blocks(layout, stages, 0, w.lines, 16, prof, counts, [&](detail::LineScratch&) {
     return detail::AcquisitionThreadSource{run, {}, {}, {}, {}, {}, {}, {}, {}};
   });

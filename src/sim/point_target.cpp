@@ -85,46 +85,80 @@ void check_point_targets_on_scene(const std::vector<PointTarget>& targets, const
   }
 }
 
-bool point_lit_on_line(const SlarGeometry& g, int line, double u_m, double h_m) {
+bool point_lit_on_samples(const SlarGeometry& g, int first, int n, const std::uint8_t* flags,
+                          const float* height_m, double u_m, double h_m) {
   // Shadowed when a nearer sample has a larger look angle from nadir, compared
   // as in ris/geometry/line_scan.h: psi_j > psi_p <=> u_j D_p - u_p D_j > 0.
   const double H = g.altitude_m;
   const double d_p = H - h_m;
   constexpr std::uint8_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
-  for (int j = 0; j < g.samples; ++j) {
-    const double u = g.sample_u_m(j);
+  for (int k = 0; k < n; ++k) {
+    const double u = g.sample_u_m(first + k);
     if (u >= u_m) break;
-    const std::size_t i = g.index(line, j);
-    if (g.flags[i] & kSkip) continue;
-    if (u * d_p - u_m * (H - double(g.height_m[i])) > 0.0) return false;
+    const std::size_t i = static_cast<std::size_t>(k);
+    if (flags[i] & kSkip) continue;
+    if (u * d_p - u_m * (H - double(height_m[i])) > 0.0) return false;
   }
   return true;
+}
+
+bool point_lit_on_line(const SlarGeometry& g, int line, double u_m, double h_m) {
+  const std::size_t i = g.index(line, 0);
+  return point_lit_on_samples(g, 0, g.samples, g.flags.data() + i, g.height_m.data() + i, u_m, h_m);
+}
+
+std::vector<PointCandidate> point_candidates(const std::vector<PointTarget>& targets,
+                                             const Scene& scene, const SlarGeometry& g) {
+  std::vector<PointCandidate> out;
+  const double H = g.altitude_m;
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    const PointTarget& t = targets[k];
+    const auto [s, u] = g.track.along_cross(t.x_m, t.y_m);
+    const int line = static_cast<int>(std::floor(s / g.line_spacing_m));
+    const double h = terrain_height_at(scene, t.x_m, t.y_m) + t.height_m;
+    if (!(line >= 0 && line < g.lines && u > 0.0 && std::isfinite(h) && h < H)) continue;
+    PointCandidate c;
+    c.target = k;
+    c.u_m = u;
+    c.h_m = h;
+    c.ret.line = line;
+    c.ret.along_m = s;
+    c.ret.slant_range_m = std::hypot(u, H - h);
+    c.ret.look_rad = std::atan2(u, H - h);
+    c.ret.rcs_m2 = t.rcs_m2;
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<PointReturn> seen_point_returns(const std::vector<PointTarget>& targets,
+                                            const std::vector<PointCandidate>& candidates,
+                                            const std::vector<std::uint8_t>& lit,
+                                            std::vector<std::string>* hidden) {
+  RIS_CHECK(lit.size() == candidates.size());
+  std::vector<PointReturn> out;
+  std::size_t c = 0;
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    const bool candidate = c < candidates.size() && candidates[c].target == k;
+    if (candidate && lit[c]) {
+      out.push_back(candidates[c].ret);
+    } else if (hidden) {
+      hidden->push_back(targets[k].name);
+    }
+    if (candidate) ++c;
+  }
+  return out;
 }
 
 std::vector<PointReturn> point_returns_on_lines(const std::vector<PointTarget>& targets,
                                                 const Scene& scene, const SlarGeometry& g,
                                                 std::vector<std::string>* hidden) {
-  std::vector<PointReturn> out;
-  const double H = g.altitude_m;
-  for (const PointTarget& t : targets) {
-    const auto [s, u] = g.track.along_cross(t.x_m, t.y_m);
-    const int line = static_cast<int>(std::floor(s / g.line_spacing_m));
-    const double h = terrain_height_at(scene, t.x_m, t.y_m) + t.height_m;
-    const bool seen = line >= 0 && line < g.lines && u > 0.0 && std::isfinite(h) && h < H &&
-                      point_lit_on_line(g, line, u, h);
-    if (!seen) {
-      if (hidden) hidden->push_back(t.name);
-      continue;
-    }
-    PointReturn r;
-    r.line = line;
-    r.along_m = s;
-    r.slant_range_m = std::hypot(u, H - h);
-    r.look_rad = std::atan2(u, H - h);
-    r.rcs_m2 = t.rcs_m2;
-    out.push_back(r);
+  const std::vector<PointCandidate> candidates = point_candidates(targets, scene, g);
+  std::vector<std::uint8_t> lit(candidates.size());
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    lit[c] = point_lit_on_line(g, candidates[c].ret.line, candidates[c].u_m, candidates[c].h_m);
   }
-  return out;
+  return seen_point_returns(targets, candidates, lit, hidden);
 }
 
 }  // namespace ris

@@ -5,13 +5,17 @@
 #include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <variant>
+#include <vector>
 
 #include "ris/image/greytone.h"
 #include "ris/image/greytone_image.h"
 #include "ris/sim/point_target.h"
 #include "ris/sim/radiometry_setup.h"
+#include "ris/sim/slar_line_blocks.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
+#include "sim/slar_line_engine.h"
 
 namespace ris {
 
@@ -38,6 +42,124 @@ SlarImage crop_lines(const SlarImage& in, int first, int count) {
 double wrap_pi(double a) {
   return a - 2.0 * kPi * std::floor((a + kPi) / (2.0 * kPi));
 }
+
+// ---- The polar line source: one ray from the site per line ----------------
+// The ray's terrain and look geometry (ppi_ray_geometry, as
+// compute_ppi_geometry fills a ray) straight into the engine's scratch.
+struct PolarSource {
+  static constexpr bool kMakesGeometry = true;
+  const Scene& scene;
+  const TerrainTexels& tex;
+  const PpiGeometry& pg;
+  PpiRayScratch& ray;
+
+  detail::LineSpan load(int line, detail::LineScratch& s) {
+    const PpiRayOut out{
+        s.height.data(), s.range.data(),    s.incidence.data(), s.local_incidence.data(),
+        s.area.data(),   s.near_end.data(), s.far_end.data(),   s.category.data(),
+        s.flags.data(),  s.dh_du.data()};
+    ppi_ray_geometry(scene, tex, pg, line, out, ray);
+    return {0, pg.rays.samples, &pg.rays};
+  }
+  void store_maps(int, const detail::LineSpan&, const detail::LineScratch&) const {}
+  void finish_block() const {}
+};
+
+struct PolarThreadSource {
+  const Scene& scene;
+  const TerrainTexels& tex;
+  const PpiGeometry& pg;
+  PpiRayScratch ray;
+  std::variant<PolarSource> block(int, int) { return PolarSource{scene, tex, pg, ray}; }
+};
+
+// The targets on every (padded) ray whose sector holds their azimuth, in
+// front of the site (point_returns_on_rays's rule before the shadow test):
+// one candidate per target and ray, `target` the candidate's own index;
+// target_of[c] the target of candidate c.
+std::vector<PointCandidate> ray_candidates(const std::vector<PointTarget>& targets,
+                                           const Scene& scene, const PpiGeometry& pg,
+                                           std::vector<std::size_t>& target_of) {
+  std::vector<PointCandidate> out;
+  const SlarGeometry& g = pg.rays;
+  const double H = pg.altitude_m;
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const PointTarget& pt = targets[t];
+    const double dx = pt.x_m - pg.site_x_m, dy = pt.y_m - pg.site_y_m;
+    const double u = std::hypot(dx, dy);
+    const double alpha = std::atan2(dx, dy);
+    const double h = terrain_height_at(scene, pt.x_m, pt.y_m) + pt.height_m;
+    for (int k = 0; k < g.lines; ++k) {
+      const double d = wrap_pi(alpha - pg.azimuth_rad(k));
+      if (!(d >= -0.5 * pg.ray_spacing_rad && d < 0.5 * pg.ray_spacing_rad)) continue;
+      if (!(u > 0.0)) continue;
+      PointCandidate c;
+      c.target = out.size();
+      c.u_m = u;
+      c.h_m = h;
+      c.ret.line = k;
+      c.ret.along_m = alpha;
+      c.ret.slant_range_m = std::hypot(u, H - h);
+      c.ret.look_rad = std::atan2(u, H - h);
+      c.ret.rcs_m2 = pt.rcs_m2;
+      out.push_back(c);
+      target_of.push_back(t);
+    }
+  }
+  return out;
+}
+
+// The padded rays' image through the line engine (the polar source), the
+// rays' geometry kept (pg.rays allocated) and the targets added on their
+// rays: what compute_ppi_geometry + point_returns_on_rays + form_slar_image
+// give (tested: ppi_simulation_test.cpp).
+SlarImage form_ppi_rays(const Scene& scene, PpiGeometry& pg, const Sigma0Lut& lut,
+                        const SlarImagingParams& p, const std::string& radar_file,
+                        const std::vector<PointTarget>& targets, PpiSimulation& sim) {
+  SlarGeometry& g = pg.rays;
+  g.allocate_samples();
+  std::vector<std::size_t> target_of;
+  detail::LinePointTargets on_rays(ray_candidates(targets, scene, pg, target_of));
+  const detail::LineKeep keep{&g, nullptr, &on_rays};
+  const TerrainTexels tex = terrain_texels(scene);
+  const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, radar_file);
+  SlarLineProfiles prof;
+  prof.allocate(g.lines, p.range.count);
+  const detail::SlarElementContext ctx = detail::element_context(p, gain2, lut, prof.bins);
+  const detail::LineStages stages{ctx, LineLookFrame{}, true, p.range_window_bins, &keep};
+  SlarLineCounts counts;
+  detail::run_line_blocks(g, stages, 0, g.lines, 16, prof, counts, [&](detail::LineScratch&) {
+    return PolarThreadSource{scene, tex, pg, PpiRayScratch(g.samples)};
+  });
+  set_sample_counts(g, counts);
+  g.nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));
+  check_swath_hits_scene(prof.samples_in_swath, p.range, counts, radar_file);
+  SlarImage img = slar_image_from_profiles(prof, p, g.line_spacing_m);
+  // The returns seen, in target and ray order, with their power; a target
+  // seen on no ray is hidden.
+  std::vector<std::uint8_t> lit(target_of.size(), 0);
+  std::vector<double> power(target_of.size(), 0.0);
+  for (std::size_t k = 0; k < on_rays.by_line.size(); ++k) {
+    lit[on_rays.by_line[k].target] = on_rays.lit[k];
+    power[on_rays.by_line[k].target] = on_rays.power_w[k];
+  }
+  std::vector<std::uint8_t> seen(targets.size(), 0);
+  std::vector<PointCandidate> in_order = on_rays.by_line;
+  std::sort(in_order.begin(), in_order.end(),
+            [](const PointCandidate& a, const PointCandidate& b) { return a.target < b.target; });
+  for (const PointCandidate& c : in_order) {
+    if (!lit[c.target]) continue;
+    sim.point_returns.push_back(c.ret);
+    img.point_power_w.push_back(power[c.target]);
+    seen[target_of[c.target]] = 1;
+  }
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    if (!seen[t]) sim.hidden_targets.push_back(targets[t].name);
+  }
+  return img;
+}
+
+}  // namespace
 
 // Targets on every (padded) ray whose sector holds their azimuth.
 std::vector<PointReturn> point_returns_on_rays(const std::vector<PointTarget>& targets,
@@ -70,8 +192,6 @@ std::vector<PointReturn> point_returns_on_rays(const std::vector<PointTarget>& t
   return out;
 }
 
-}  // namespace
-
 PpiSimulation simulate_ppi(const Scene& scene, const RadarParams& radar_in,
                            const Sigma0Source& sigma0, const SlarOptions& options) {
   RIS_CHECK(radar_in.mode == RadarMode::ppi);
@@ -84,10 +204,11 @@ PpiSimulation simulate_ppi(const Scene& scene, const RadarParams& radar_in,
     throw InputError("scene", "", "the scene has no cell with data");
   }
 
-  // Rays (geometry, slope and shadow per ray).
+  // The rays' layout (site, rays, samples); their geometry, slope and
+  // shadow are formed ray by ray in the line engine.
   options.report("geometry", 0.0);
-  sim.geometry = compute_ppi_geometry(scene, radar);
-  const PpiGeometry& pg = sim.geometry;
+  sim.geometry = ppi_geometry_layout(scene, radar);
+  PpiGeometry& pg = sim.geometry;
 
   options.report("backscatter", 0.3);
   RadiometrySetup rs = prepare_radiometry(scene, radar, sim.derived, sigma0, backscatter_file);
@@ -96,14 +217,13 @@ PpiSimulation simulate_ppi(const Scene& scene, const RadarParams& radar_in,
   sim.backscatter_description = rs.backscatter_description;
 
   // B-scope over the padded rays, smeared over the beamwidth, then cropped.
-  options.report("image formation", 0.4);
+  options.report("geometry + image formation (line engine)", 0.4);
   check_point_targets_on_scene(options.targets, scene);
-  sim.point_returns = point_returns_on_rays(options.targets, scene, pg, sim.hidden_targets);
   SlarImagingParams& imaging = rs.imaging;
   sim.beam_rays = radar.azimuth_beamwidth_rad / pg.ray_spacing_rad;
   imaging.azimuth_window_lines = sim.beam_rays;
-  imaging.point_returns = sim.point_returns;
-  SlarImage padded = form_slar_image(pg.rays, rs.lut, imaging, radar.source_file);
+  SlarImage padded =
+      form_ppi_rays(scene, pg, rs.lut, imaging, radar.source_file, options.targets, sim);
   apply_switch_corrections(padded, rs.terms);
   sim.bscope = crop_lines(padded, pg.pad, pg.scan_rays);
 

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ris/image/greytone_terms.h"
 #include "ris/scene/geo_frame.h"
@@ -18,6 +20,7 @@
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 #include "slar_fixtures.h"
+#include "slar_stage_reference.h"
 
 namespace ris {
 namespace {
@@ -211,6 +214,84 @@ TEST(PpiSimulation, SectorScopeLeavesOutsideTheSectorEmpty) {
   };
   EXPECT_TRUE(at(-200.0, 200.0) & pixel_flag::kNoData);
   EXPECT_FALSE(at(200.0, 0.0) & pixel_flag::kNoData);
+}
+
+// PPI goes through the line engine (the polar source, the rays' geometry
+// kept, targets found lit or hidden ray by ray) with the stage path's bytes
+// (tests/slar_stage_reference.h): the B-scope, the rays' geometry and
+// counts, the point returns and their power, the hidden targets; full
+// circle and a sector, 1 and 2 threads.
+TEST(PpiSimulation, EngineEqualsStagesByteForByte) {
+  Scene s = flat_scene();
+  for (double x : {497.5, 502.5})
+    for (double y : {702.5, 707.5}) s.elevation_m[cell_at(s, x, y)] = 20.0f;
+  for (std::size_t i = 0; i < s.size(); i += 7) s.category[i] = 1;
+  s.valid[cell_at(s, 300.0, 620.0)] = 0;
+  std::vector<PointTarget> targets;
+  int index = 0;
+  for (const auto& [x, y] :
+       {std::pair{500.0, 800.0}, std::pair{500.0, 650.0}, std::pair{800.0, 500.0},
+        std::pair{300.0, 300.0}, std::pair{960.0, 960.0}, std::pair{501.0, 900.0}}) {
+    PointTarget t;
+    t.name = fmt::format("t{}", index);
+    t.x_m = x;
+    t.y_m = y;
+    t.height_m = 1.0;
+    t.rcs_m2 = 100.0;
+    t.source_file = "targets.toml";
+    t.index = index++;
+    targets.push_back(t);
+  }
+  SlarOptions o;
+  o.targets = targets;
+  const test::CosineSigma0Source src;
+  const int saved = omp_get_max_threads();
+  std::size_t hidden = 0, seen = 0;
+  for (const std::string& scan :
+       {std::string(), std::string("start = \"-40 deg\"\nwidth = \"100 deg\"\n")}) {
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      const std::string what = fmt::format("scan '{}' threads {}", scan, threads);
+      const PpiSimulation ref = test::simulate_ppi_by_stages(s, ppi_radar(scan), src, o);
+      const PpiSimulation eng = simulate_ppi(s, ppi_radar(scan), src, o);
+      using test::same_bytes;
+      EXPECT_TRUE(same_bytes(ref.bscope.mean_power_w, eng.bscope.mean_power_w)) << what;
+      EXPECT_TRUE(same_bytes(ref.bscope.area_m2, eng.bscope.area_m2)) << what;
+      EXPECT_TRUE(same_bytes(ref.bscope.mask, eng.bscope.mask)) << what;
+      EXPECT_TRUE(same_bytes(ref.bscope.mapped_count, eng.bscope.mapped_count)) << what;
+      EXPECT_TRUE(same_bytes(ref.bscope.visible_count, eng.bscope.visible_count)) << what;
+      EXPECT_TRUE(same_bytes(ref.bscope.point_power_w, eng.bscope.point_power_w)) << what;
+      EXPECT_EQ(ref.bscope.samples_in_swath, eng.bscope.samples_in_swath) << what;
+      const SlarGeometry &a = ref.geometry.rays, &b = eng.geometry.rays;
+      EXPECT_TRUE(same_bytes(a.height_m, b.height_m)) << what;
+      EXPECT_TRUE(same_bytes(a.slant_range_m, b.slant_range_m)) << what;
+      EXPECT_TRUE(same_bytes(a.incidence_rad, b.incidence_rad)) << what;
+      EXPECT_TRUE(same_bytes(a.local_incidence_rad, b.local_incidence_rad)) << what;
+      EXPECT_TRUE(same_bytes(a.area_m2, b.area_m2)) << what;
+      EXPECT_TRUE(same_bytes(a.range_near_end_m, b.range_near_end_m)) << what;
+      EXPECT_TRUE(same_bytes(a.range_far_end_m, b.range_far_end_m)) << what;
+      EXPECT_TRUE(same_bytes(a.category, b.category)) << what;
+      EXPECT_TRUE(same_bytes(a.flags, b.flags)) << what;
+      EXPECT_EQ(a.nodata_samples, b.nodata_samples) << what;
+      EXPECT_EQ(a.shadow_samples, b.shadow_samples) << what;
+      EXPECT_EQ(a.back_facing_samples, b.back_facing_samples) << what;
+      EXPECT_EQ(a.layover_samples, b.layover_samples) << what;
+      EXPECT_EQ(a.nodata_cells, b.nodata_cells) << what;
+      EXPECT_EQ(ref.hidden_targets, eng.hidden_targets) << what;
+      ASSERT_EQ(ref.point_returns.size(), eng.point_returns.size()) << what;
+      for (std::size_t k = 0; k < ref.point_returns.size(); ++k) {
+        EXPECT_EQ(ref.point_returns[k].line, eng.point_returns[k].line) << what << " " << k;
+        EXPECT_EQ(ref.point_returns[k].along_m, eng.point_returns[k].along_m) << what << " " << k;
+        EXPECT_EQ(ref.point_returns[k].slant_range_m, eng.point_returns[k].slant_range_m)
+            << what << " " << k;
+      }
+      hidden += eng.hidden_targets.size();
+      seen += eng.point_returns.size();
+    }
+  }
+  omp_set_num_threads(saved);
+  EXPECT_GT(hidden, 0u);  // behind the tower, outside the sector
+  EXPECT_GT(seen, 0u);
 }
 
 TEST(PpiSimulation, BadSiteIsAnInputError) {

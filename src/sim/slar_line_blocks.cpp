@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -282,6 +283,9 @@ struct DirectRun {
   double near_m, far_m;
 
   int cell(int line) const { return line_cell(scene, g, cross_is_x, line); }
+  // Whether the sources write the scene maps (a run whose lines are not
+  // one per row or column makes them from the kept geometry instead).
+  bool writes_maps() const { return maps.mask != nullptr; }
   LineSpan whole() const { return {0, g.samples, &g}; }
   // Sample j of the line over row or column lc: its cell.
   void cell_of(int lc, int j, int& r, int& c) const {
@@ -350,7 +354,7 @@ struct CellSource {
   }
   // The scene-grid maps (scene_geometry_maps: each cell is its own sample).
   void store_maps(int, const LineSpan&, const detail::LineScratch& s) const {
-    if (lc < 0) return;
+    if (lc < 0 || !run.writes_maps()) return;
     for (int j = 0; j < run.g.samples; ++j) {
       const std::size_t jj = static_cast<std::size_t>(j);
       int r = 0, c = 0;
@@ -381,7 +385,7 @@ struct RowSource {
     return run.whole();
   }
   void store_maps(int, const LineSpan&, const detail::LineScratch& s) const {
-    if (lc < 0) return;
+    if (lc < 0 || !run.writes_maps()) return;
     kernels::map_row(run.g.samples, !run.u_grows_with_index, run.near_m, run.far_m, s.flags.data(),
                      s.range.data(), s.local_incidence.data(), run.in.valid + run.in.index(lc, 0),
                      run.maps.mask + run.maps.index(lc, 0),
@@ -444,14 +448,15 @@ struct DirectThreadSource {
 }  // namespace
 
 void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLineProfiles& prof,
-                         const SceneMapsWindow& maps, SlarLineCounts& counts) const {
+                         const SceneMapsWindow& maps, SlarLineCounts& counts,
+                         const detail::LineKeep* keep) const {
   const SlarGeometry& g = g_;
   const Track& t = g.track;
   const int samples = g.samples;
   const detail::SlarElementContext ctx = detail::element_context(params_, gain2_, lut_, prof.bins);
   const detail::LineStages stages{
       ctx, LineLookFrame{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m},
-      !gain2_.uniform(), params_.range_window_bins};
+      !gain2_.uniform() || (keep && keep->geometry), params_.range_window_bins, keep};
   const DirectRun run{scene_,
                       g,
                       in,
@@ -460,12 +465,13 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
                       u_grows_with_index_,
                       params_.range.near_m,
                       params_.range.far_m()};
-  const bool rows =
-      cross_is_x_ && in.col0 == 0 && in.cols == samples && maps.col0 == 0 && maps.cols == samples;
+  const bool no_maps = maps.mask == nullptr;
+  const bool rows = cross_is_x_ && in.col0 == 0 && in.cols == samples &&
+                    (no_maps || (maps.col0 == 0 && maps.cols == samples));
   // Lines along columns whose window holds every scene row go by blocks
-  // through a transposed tile.
-  const bool column_tiles =
-      !cross_is_x_ && in.row0 == 0 && in.rows == samples && maps.row0 == 0 && maps.rows == samples;
+  // through a transposed tile (which writes the maps back).
+  const bool column_tiles = !no_maps && !cross_is_x_ && in.row0 == 0 && in.rows == samples &&
+                            maps.row0 == 0 && maps.rows == samples;
   const int block_lines = column_tiles ? kColumnBlockLines : 16;
   detail::run_line_blocks(g, stages, line0, line1, block_lines, prof, counts,
                           [&](detail::LineScratch&) {
@@ -487,49 +493,110 @@ bool fused_slar_image_applies(const Scene& scene, const SlarGeometry& layout) {
   return fused_slar_applies(scene, layout) || !layout.direct_sampling;
 }
 
-SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeometryMaps& maps,
-                                const Sigma0Lut& lut, const SlarImagingParams& p,
-                                const std::string& radar_file) {
-  RIS_CHECK(fused_slar_image_applies(scene, g));
-  RIS_CHECK(p.range.count > 0 && p.range.bin_m > 0.0);
-  RIS_CHECK(p.azimuth_beamwidth_rad > 0.0);
-  SlarLineProfiles prof;
-  prof.allocate(g.lines, p.range.count);
-  // No fill (UninitVector): along a grid axis every cell is written by the
-  // line on its row or column (one line per row or column, checked below);
-  // the oblique path sets every cell first itself.
-  maps.mask.resize(scene.size());
-  maps.local_incidence_deg.resize(scene.size());
-  SlarLineCounts counts;
-  if (g.direct_sampling) {
-    const SlarLineEngine engine(scene, g, lut, p, radar_file);
-    {
-      RIS_CHECK(static_cast<std::size_t>(g.lines) * static_cast<std::size_t>(g.samples) ==
-                scene.size());
-      std::vector<std::uint8_t> taken(static_cast<std::size_t>(g.lines), 0);
-      for (int line = 0; line < g.lines; ++line) {
-        const int cell = engine.cell_of_line(line);
-        RIS_CHECK(cell >= 0 && cell < g.lines && !taken[static_cast<std::size_t>(cell)]);
-        taken[static_cast<std::size_t>(cell)] = 1;
-      }
-    }
-    const SceneMapsWindow out{
-        0, 0, scene.rows, scene.cols, maps.mask.data(), maps.local_incidence_deg.data()};
-    engine.run(0, g.lines, SceneWindow::whole(scene), prof, out, counts);
-  } else {
-    detail::run_oblique_lines(scene, g, lut, p, radar_file, prof, maps, counts);
+namespace {
+
+// Every cell row or column taken by exactly one line (the sources then
+// write every cell's maps once).
+void check_one_line_per_cell(const SlarLineEngine& engine, const SlarGeometry& g,
+                             const Scene& scene) {
+  RIS_CHECK(static_cast<std::size_t>(g.lines) * static_cast<std::size_t>(g.samples) ==
+            scene.size());
+  std::vector<std::uint8_t> taken(static_cast<std::size_t>(g.lines), 0);
+  for (int line = 0; line < g.lines; ++line) {
+    const int cell = engine.cell_of_line(line);
+    RIS_CHECK(cell >= 0 && cell < g.lines && !taken[static_cast<std::size_t>(cell)]);
+    taken[static_cast<std::size_t>(cell)] = 1;
   }
-  set_sample_counts(g, counts);
-  // Counted by the threads (a serial count over the scene was a serial step).
+}
+
+// The scene cells without data, counted by the threads (a serial count over
+// the scene was a serial step).
+std::int64_t count_nodata_cells(const Scene& scene) {
   std::int64_t nodata_cells = 0;
   for_thread_ranges(scene.size(), [&](std::size_t i0, std::size_t i1) {
     const std::int64_t part = count_zero_bytes(scene.valid.data(), i0, i1);
 #pragma omp atomic
     nodata_cells += part;
   });
-  g.nodata_cells = nodata_cells;
+  return nodata_cells;
+}
+
+}  // namespace
+
+SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeometryMaps& maps,
+                                const Sigma0Lut& lut, const SlarImagingParams& p,
+                                const std::string& radar_file, const SlarEngineKeep& keep) {
+  // Lines not one per cell row or column leave the maps to the kept geometry.
+  const bool source_maps = fused_slar_image_applies(scene, g);
+  RIS_CHECK(source_maps || keep.geometry);
+  RIS_CHECK(p.range.count > 0 && p.range.bin_m > 0.0);
+  RIS_CHECK(p.azimuth_beamwidth_rad > 0.0);
+  SlarLineProfiles prof;
+  prof.allocate(g.lines, p.range.count);
+  // The kept-geometry sink (its arrays allocated below, after the engine
+  // has copied the layout) and the point targets.
+  std::vector<float> element_power;
+  if (keep.element_power) {
+    element_power.assign(static_cast<std::size_t>(g.lines) * static_cast<std::size_t>(g.samples),
+                         0.0f);
+  }
+  std::vector<PointCandidate> candidates;  // in target order
+  std::optional<detail::LinePointTargets> targets;
+  if (keep.targets && !keep.targets->empty()) {
+    candidates = point_candidates(*keep.targets, scene, g);
+    targets.emplace(candidates);
+  }
+  const detail::LineKeep line_keep{keep.geometry ? &g : nullptr,
+                                   keep.element_power ? element_power.data() : nullptr,
+                                   targets ? &*targets : nullptr};
+  const detail::LineKeep* kept =
+      line_keep.geometry || line_keep.element_power_w || line_keep.targets ? &line_keep : nullptr;
+  SlarLineCounts counts;
+  if (g.direct_sampling) {
+    const SlarLineEngine engine(scene, g, lut, p, radar_file);
+    if (keep.geometry) g.allocate_samples();
+    SceneMapsWindow out;
+    if (source_maps) {
+      check_one_line_per_cell(engine, g, scene);
+      // No fill (UninitVector): every cell is written by the line on its row
+      // or column.
+      maps.mask.resize(scene.size());
+      maps.local_incidence_deg.resize(scene.size());
+      out = {0, 0, scene.rows, scene.cols, maps.mask.data(), maps.local_incidence_deg.data()};
+    }
+    engine.run(0, g.lines, SceneWindow::whole(scene), prof, out, counts, kept);
+  } else {
+    if (keep.geometry) g.allocate_samples();
+    // The oblique path sets every cell first itself.
+    maps.mask.resize(scene.size());
+    maps.local_incidence_deg.resize(scene.size());
+    detail::run_oblique_lines(scene, g, lut, p, radar_file, prof, maps, counts, kept);
+  }
+  set_sample_counts(g, counts);
+  g.nodata_cells = count_nodata_cells(scene);
   check_swath_hits_scene(prof.samples_in_swath, p.range, counts, radar_file);
-  return slar_image_from_profiles(prof, p, g.line_spacing_m);
+  SlarImage img = slar_image_from_profiles(prof, p, g.line_spacing_m);
+  if (keep.element_power) img.element_power_w = std::move(element_power);
+  if (targets) {
+    // In target order, as point_returns_on_lines gives them, with the
+    // power of each seen one.
+    std::vector<std::uint8_t> lit(candidates.size(), 0);
+    std::vector<double> power(keep.targets->size(), 0.0);
+    std::vector<std::uint8_t> lit_target(keep.targets->size(), 0);
+    for (std::size_t k = 0; k < targets->by_line.size(); ++k) {
+      lit_target[targets->by_line[k].target] = targets->lit[k];
+      power[targets->by_line[k].target] = targets->power_w[k];
+    }
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      lit[c] = lit_target[candidates[c].target];
+      if (lit[c]) img.point_power_w.push_back(power[candidates[c].target]);
+    }
+    std::vector<PointReturn> seen =
+        seen_point_returns(*keep.targets, candidates, lit, keep.hidden_targets);
+    if (keep.point_returns) *keep.point_returns = std::move(seen);
+  }
+  if (!source_maps) maps = scene_geometry_maps(scene, g, p.range);
+  return img;
 }
 
 void set_sample_counts(SlarGeometry& g, const SlarLineCounts& counts) {

@@ -1,10 +1,13 @@
-// Internal: the line engine every fused SLAR / incoherent SAR run goes
-// through (in memory along a grid axis or off it, streamed in blocks):
+// Internal: the line engine every simulation run goes through (SLAR and SAR
+// in memory along a grid axis or off it, streamed in blocks, on an
+// acquisition's grid; PPI rays):
 //
 //   line source  ->  per-line stages  ->  profile rows + scene-map sink
 //   (terrain of     (look geometry,       (SlarLineProfiles; the source's
-//    a line)         radiometry, image     own map writer)
-//                    formation)
+//    a line)         radiometry, image     own map writer) + kept-geometry
+//                    formation, point      sink (LineKeep: the per-sample
+//                    targets)              geometry and element power of
+//                                          the whole run, when asked for)
 //
 // A run supplies a thread source: made once per thread (its scratch and
 // buffers), it hands out, once per block of lines, the source that fits the
@@ -17,9 +20,10 @@
 //   void store_maps(int line, const LineSpan&, const LineScratch& s)
 //   void finish_block()                        e.g. a tile's maps written back
 // A source whose terrain is not a flat-Earth line (an acquisition's radar
-// grid on the ellipsoid: sim/acquisition_lines.h) computes the look geometry
-// itself in load() and says so with `static constexpr bool
-// kMakesGeometry = true`; the engine then skips line_geometry. Later sources
+// grid on the ellipsoid: sim/acquisition_lines.h; a PPI ray from its site:
+// ppi_simulation.cpp's PolarSource) computes the look geometry itself in
+// load() and says so with `static constexpr bool kMakesGeometry = true`;
+// the engine then skips line_geometry. Later sources
 // (an MPI rank's block range) add a thread source, not a driver.
 //
 // Blocks go to threads dynamically; each line's profile row and each cell's
@@ -59,8 +63,12 @@ constexpr bool makes_geometry() {
 struct LineStages {
   const SlarElementContext& ctx;
   LineLookFrame look;
-  bool need_incidence = false;
+  bool need_incidence = false;  // true when keep->geometry (the kept geometry holds it)
   double range_window_bins = 0.0;
+  // The kept-geometry sink and point targets (null: none): each line's
+  // geometry, element power and point returns, as the stage path
+  // (compute_slar_geometry + form_slar_image) keeps and adds them.
+  const LineKeep* keep = nullptr;
 };
 
 // Runs lines [line0, line1) in blocks of block_lines: fills their rows of
@@ -90,7 +98,7 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
                 line_geometry(*span.layout, stages.look, stages.need_incidence, s);
               }
               in_swath += accumulate_line(stages.ctx, span.n, s, prof, line, local,
-                                          stages.range_window_bins, span.first);
+                                          stages.range_window_bins, span.first, stages.keep, &g);
               source.store_maps(line, span, s);
             }
             source.finish_block();

@@ -16,6 +16,7 @@
 #include "ris/geometry/scene_geometry_maps.h"
 #include "ris/geometry/slar_geometry.h"
 #include "ris/image/slar_image.h"
+#include "ris/sim/point_target.h"
 #include "ris/sim/slar_line_parts.h"
 
 namespace ris::detail {
@@ -57,6 +58,32 @@ struct LineScratch {
   }
 };
 
+// The point targets of an engine run: the candidates (ris/sim/point_target.h)
+// sorted by line, and per candidate whether its line's terrain leaves it lit
+// and the power it returns (written by the thread that forms its line).
+struct LinePointTargets {
+  std::vector<PointCandidate> by_line;
+  std::vector<std::uint8_t> lit;
+  std::vector<double> power_w;
+  // Sorts the candidates by line (stable: target order within a line, the
+  // order the stage path adds them in) and sizes lit and power_w.
+  explicit LinePointTargets(std::vector<PointCandidate> candidates);
+};
+
+// What a run keeps beyond the profiles and the scene maps (the kept-geometry
+// sink); a null member is not kept. Each line's part is written by the
+// thread that forms the line.
+struct LineKeep {
+  // The per-sample geometry of the whole run, as compute_slar_geometry
+  // makes it: arrays allocated (allocate_samples), one row per line.
+  SlarGeometry* geometry = nullptr;
+  // P_i of each element, lines x samples, zero-filled (the coherent SAR's
+  // input, SlarImage::element_power_w).
+  float* element_power_w = nullptr;
+  // Point targets added to their lines' profiles.
+  LinePointTargets* targets = nullptr;
+};
+
 // The look geometry, element ends, cast shadow and layover of a line whose
 // terrain is in the scratch (MODEL.md section 2; the code the stage path
 // runs: ris/geometry/line_scan.h).
@@ -68,14 +95,24 @@ void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_
 // elements whose centre falls in a bin. first_sample: the line's sample
 // index of the scratch's element 0, when it holds a span of the line
 // (LineElements::first_index; the same bytes as the whole line then).
+// keep (optional): the run's kept-geometry sink and point targets; g: the
+// run's layout (its line numbering and samples), needed with keep.
 std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
                              SlarLineProfiles& prof, int line, SlarLineCounts& counts,
-                             double range_window_bins, int first_sample = 0);
+                             double range_window_bins, int first_sample = 0,
+                             const LineKeep* keep = nullptr, const SlarGeometry* g = nullptr);
+
+// The kept-geometry sink's step: the line's samples [first, first + n) from
+// the scratch into row `line` of `kept`, the samples outside unseen (NaN,
+// category 0, kUnseen: as the stage path leaves a sample without terrain).
+void keep_line_geometry(SlarGeometry& kept, int line, int first, int n, const LineScratch& s);
 
 // The fused run for a heading off the grid axes (slar_oblique_lines.cpp):
 // fills prof (allocated), maps (sized to the scene) and counts.
+// keep (optional): the kept-geometry sink and point targets.
 void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
                        const SlarImagingParams& p, const std::string& radar_file,
-                       SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts);
+                       SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts,
+                       const LineKeep* keep = nullptr);
 
 }  // namespace ris::detail

@@ -262,7 +262,8 @@ struct ObliqueThreadSource {
 // are whole-scene.
 void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
                        const SlarImagingParams& p, const std::string& radar_file,
-                       SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts) {
+                       SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts,
+                       const LineKeep* keep) {
   const TerrainTexels tex = terrain_texels(scene);
   const CellSampleFrame frame = cell_sample_frame(scene, g);
   const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, radar_file);
@@ -270,7 +271,7 @@ void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lu
   const Track& t = g.track;
   const LineStages stages{
       ctx, LineLookFrame{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m},
-      !gain2.uniform(), p.range_window_bins};
+      !gain2.uniform() || (keep && keep->geometry), p.range_window_bins, keep};
   const ObliqueRun run{scene, g, tex, frame, maps, p.range.near_m, p.range.far_m()};
   // Each row's cells outside the swath here, the others by the blocks
   // (each cell by one: not written twice).

@@ -14,6 +14,7 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/slar_simulation.h"
 #include "slar_fixtures.h"
+#include "slar_stage_reference.h"
 
 namespace ris {
 namespace {
@@ -58,9 +59,7 @@ TEST(SlarObliqueLines, TrackAcrossTheSceneFusedEqualsStagesByteForByte) {
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
       const RadarParams r = crossing_radar(k.x0, k.y0, k.x1, k.y1, k.side);
-      SlarOptions keep;
-      keep.keep_geometry = true;
-      const SlarSimulation ref = simulate_slar(s, r, src, keep);
+      const SlarSimulation ref = test::simulate_slar_by_stages(s, r, src);
       const SlarSimulation fused = simulate_slar(s, r, src);
       const std::string what = "track from (" + std::to_string(k.x0) + ", " + std::to_string(k.y0) +
                                "), threads " + std::to_string(threads);

@@ -114,65 +114,51 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
     throw InputError("scene", "", "the scene has no cell with data");
   }
 
-  // Geometry (the seed's SLAR Geometry, Slope and Shadow).
+  // Geometry (the seed's SLAR Geometry, Slope and Shadow), radiometry and
+  // image formation run per line through the line engine
+  // (ris/sim/slar_line_blocks.h), without whole-scene geometry buffers
+  // unless the run keeps the per-sample geometry: when the caller asks, for
+  // the coherent SAR (its range compression reads every element's range and
+  // power), and when the lines are not one per cell row or column (the
+  // scene maps are then made from it).
   sim.track = resolve_track(radar.track, scene, radar.source_file);
-  // A track along a grid axis runs fused per line (ris/sim/slar_line_blocks.h:
-  // the same bytes without whole-scene geometry buffers) unless the caller
-  // wants the per-sample geometry.
   const SlarGeometry layout = slar_geometry_layout(scene, sim.track, radar.azimuth_line_spacing_m);
-  // The fused path forms SLAR and incoherent SAR images (range and azimuth
-  // windows); the coherent SAR needs every element's power, point targets
-  // the per-sample geometry.
-  const bool fused_mode =
-      radar.mode == RadarMode::slar || (radar.mode == RadarMode::sar && !radar.sar.coherent);
-  const bool fused = !options.keep_geometry && fused_mode && options.targets.empty() &&
-                     fused_slar_image_applies(scene, layout);
+  const bool coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
+  const bool keep_geometry =
+      options.keep_geometry || coherent || !fused_slar_image_applies(scene, layout);
   // Memory before any large array or long loop (ris/util/resource_guard.h).
   const double h_ref =
       options.reference_height_m ? *options.reference_height_m : median_valid_elevation(scene);
-  require_run_memory(layout, !fused,
+  require_run_memory(layout, keep_geometry,
                      SlantRangeBins{sim.derived.near_slant_range_m, sim.derived.range_bin_m,
                                     sim.derived.range_bins},
                      h_ref, radar.source_file);
-  if (fused) {
-    scene.validate("scene");
-    check_terrain_below_sensor(scene, sim.track.altitude_m, radar.source_file);
-    sim.geometry = layout;
-  } else {
-    options.report("geometry", 0.0);
-    sim.geometry =
-        compute_slar_geometry(scene, sim.track, radar.azimuth_line_spacing_m, radar.source_file);
-  }
+  scene.validate("scene");
+  check_terrain_below_sensor(scene, sim.track.altitude_m, radar.source_file);
+  sim.geometry = layout;
 
   // sigma0 for every category the scene uses (and the reference's), the
   // switched-off factors at their reference values.
   options.report("backscatter", 0.3);
   RadiometrySetup rs = prepare_radiometry(scene, radar, sim.derived, sigma0, backscatter_file);
-  SlarImagingParams& imaging = rs.imaging;
 
   options.report("image formation", 0.4);
   // SAR windows, resolution warnings and thermal noise (as a streamed run).
   complete_slar_setup(sim, rs, scene);
   check_point_targets_on_scene(options.targets, scene);
-  if (fused) {
-    options.report("geometry + image formation + scene maps (fused)", 0.4);
-    sim.image = form_slar_image_fused(scene, sim.geometry, sim.scene_maps, rs.lut, imaging,
-                                      radar.source_file);
-  } else {
-    sim.point_returns =
-        point_returns_on_lines(options.targets, scene, sim.geometry, &sim.hidden_targets);
-    imaging.point_returns = sim.point_returns;
-    imaging.keep_element_power = radar.mode == RadarMode::sar && radar.sar.coherent;
-    sim.image = form_slar_image(sim.geometry, rs.lut, imaging, radar.source_file);
-  }
+  options.report("geometry + image formation + scene maps (line engine)", 0.4);
+  SlarEngineKeep keep;
+  keep.geometry = keep_geometry;
+  keep.element_power = coherent;
+  keep.targets = &options.targets;
+  keep.point_returns = &sim.point_returns;
+  keep.hidden_targets = &sim.hidden_targets;
+  sim.image = form_slar_image_fused(scene, sim.geometry, sim.scene_maps, rs.lut, rs.imaging,
+                                    radar.source_file, keep);
   // Switch corrections and SAR thermal noise (as a streamed run's blocks).
   finish_slar_image(sim, sim.image, rs.terms);
 
-  // Products on the scene grid and the ground-range grid.
-  if (!fused) {
-    options.report("scene maps", 0.8);
-    sim.scene_maps = scene_geometry_maps(scene, sim.geometry, sim.image.range);
-  }
+  // Products on the ground-range grid.
   options.report("ground-range grid", 0.9);
   sim.ground_grid =
       ground_range_grid(sim.image.range, sim.geometry.altitude_m, h_ref, sim.image.line_spacing_m);

@@ -26,9 +26,12 @@
 //   double alpha = g.azimuth_rad(k);  // ray k of g.rays (0 .. g.rays.lines - 1)
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ris/geometry/slar_geometry.h"
+#include "ris/geometry/terrain_line.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/radar_params.h"
 
@@ -52,5 +55,38 @@ struct PpiGeometry {
 // no data (key "site.position"), an antenna at or below the terrain at the
 // site (key "site.altitude"), or a range window that misses the scene.
 PpiGeometry compute_ppi_geometry(const Scene& scene, const RadarParams& radar);
+
+// compute_ppi_geometry's parts, for a run that forms the rays one at a time
+// (the line engine's polar source, ris/sim/ppi_simulation.h): the layout
+// (site, rays, samples; no per-sample arrays, counts 0; the same checks and
+// the memory check of the rays' geometry), and one ray's geometry.
+PpiGeometry ppi_geometry_layout(const Scene& scene, const RadarParams& radar);
+
+// One ray's per-sample outputs, pg.rays.samples values each (dh_du: the
+// slope along the ray, the scans' input).
+struct PpiRayOut {
+  float* height_m;
+  float* slant_range_m;
+  float* incidence_rad;
+  float* local_incidence_rad;
+  float* area_m2;
+  float* range_near_end_m;
+  float* range_far_end_m;
+  std::uint16_t* category;
+  std::uint8_t* flags;
+  float* dh_du;
+};
+// A thread's scratch for ppi_ray_geometry (the ray's sampled terrain).
+struct PpiRayScratch {
+  std::vector<float> height, dz_dx, dz_dy;
+  std::vector<std::uint16_t> category;
+  std::vector<std::uint8_t> terrain_flags;
+  explicit PpiRayScratch(int samples);
+};
+// The geometry of ray `ray` of layout pg (ppi_geometry_layout), the shadow
+// and layover scans included, as compute_ppi_geometry fills it; tex:
+// terrain_texels(scene).
+void ppi_ray_geometry(const Scene& scene, const TerrainTexels& tex, const PpiGeometry& pg, int ray,
+                      const PpiRayOut& out, PpiRayScratch& s);
 
 }  // namespace ris

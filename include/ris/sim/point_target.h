@@ -19,6 +19,8 @@
 //   std::vector<ris::PointReturn> r = ris::point_returns_on_lines(t, scene, geometry);
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,31 @@ double terrain_height_at(const Scene& scene, double x_m, double y_m);
 // `line` is lit: no sample of that line nearer than u has a larger
 // t = u / (H - h) (MODEL.md section 2, "Cast shadow").
 bool point_lit_on_line(const SlarGeometry& g, int line, double u_m, double h_m);
+// The same test on samples [first, first + n) of the line (flags and
+// heights of those samples; the samples outside are unseen): what the line
+// engine holds of a line (ris/sim/slar_line_blocks.h). u is layout g's.
+bool point_lit_on_samples(const SlarGeometry& g, int first, int n, const std::uint8_t* flags,
+                          const float* height_m, double u_m, double h_m);
+
+// A target placed on its line before the line's geometry is known: on a
+// line of the layout, in front of the track (u > 0) and below the sensor.
+// Whether the terrain hides it is decided on its line (point_lit_on_line or
+// point_lit_on_samples).
+struct PointCandidate {
+  std::size_t target = 0;  // index in the targets
+  PointReturn ret;         // line, along-track position, slant range, look angle, rcs
+  double u_m = 0.0;        // ground distance across the track
+  double h_m = 0.0;        // height above the datum
+};
+// The candidates among the targets, in target order. g: the layout.
+std::vector<PointCandidate> point_candidates(const std::vector<PointTarget>& targets,
+                                             const Scene& scene, const SlarGeometry& g);
+// The returns of the candidates found lit (lit[c] for candidates[c]), in
+// target order; `hidden` (optional) receives the names of the others.
+std::vector<PointReturn> seen_point_returns(const std::vector<PointTarget>& targets,
+                                            const std::vector<PointCandidate>& candidates,
+                                            const std::vector<std::uint8_t>& lit,
+                                            std::vector<std::string>* hidden);
 
 // The targets as seen from a SLAR/SAR track: line by along-track position,
 // slant range from the zero-Doppler point. Targets beyond the track's ends,

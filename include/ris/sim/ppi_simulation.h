@@ -7,8 +7,10 @@
 //   render_ppi    mean power -> speckle -> greytones; the B-scope and the
 //                 scan-converted PPI scope (ris/image/ppi_scope.h), range rings
 //
-// The B-scope is formed by ris/image/slar_image.h with the rays as lines and
-// an azimuth window of beamwidth / ray spacing rays, over the sector plus
+// The rays run through the line engine (ris/sim/slar_line_blocks.h) as its
+// lines, each ray's geometry made by the polar source (ppi_ray_geometry)
+// and kept; the B-scope is formed as ris/image/slar_image.h forms an image,
+// with an azimuth window of beamwidth / ray spacing rays, over the sector plus
 // padding rays (so the beam's edges see the ground beyond the sector's edge
 // rays, and a full circle wraps through north), then cropped to the sector.
 // The greytone switches act as for SLAR.
@@ -54,6 +56,16 @@ struct PpiSimulation {
 // unused (the ground presentation is over the site's terrain).
 PpiSimulation simulate_ppi(const Scene& scene, const RadarParams& radar, const Sigma0Source& sigma0,
                            const SlarOptions& options = {});
+
+// The targets on every (padded) ray of a computed geometry
+// (compute_ppi_geometry) whose sector holds their azimuth and whose terrain
+// leaves them lit, in target and ray order; `hidden` receives the names of
+// the targets seen on no ray. The stage path's rule, which simulate_ppi
+// applies ray by ray in the line engine (the reference it is tested
+// against).
+std::vector<PointReturn> point_returns_on_rays(const std::vector<PointTarget>& targets,
+                                               const Scene& scene, const PpiGeometry& pg,
+                                               std::vector<std::string>& hidden);
 
 struct PpiPictures {
   std::uint64_t seed = 0;

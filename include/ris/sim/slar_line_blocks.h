@@ -8,9 +8,12 @@
 //
 // It does exactly what compute_slar_geometry + form_slar_image +
 // scene_geometry_maps do, in the same arithmetic, so the products are the
-// same bytes (tested: slar_line_blocks_test.cpp); simulate_slar takes this
-// path when it applies (fused_slar_applies) and the caller does not ask for
-// the full geometry (SlarOptions::keep_geometry).
+// same bytes (tested against that stage path: slar_line_blocks_test.cpp,
+// tests/slar_stage_reference.h); every simulate_slar run goes through it.
+// A run that needs the per-sample geometry of the whole run (the coherent
+// SAR, SlarOptions::keep_geometry, lines not one per cell row or column)
+// keeps it through the engine's kept-geometry sink (SlarEngineKeep), and
+// point targets are placed per line as each line is formed.
 //
 // A block only needs the scene cells of its lines plus one cell of halo (for
 // the slope), given as a SceneWindow; this is what lets a scene larger than
@@ -25,15 +28,21 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/geometry/scene_geometry_maps.h"
 #include "ris/geometry/slar_geometry.h"
 #include "ris/image/slar_image.h"
 #include "ris/scene/scene.h"
+#include "ris/sim/point_target.h"
 #include "ris/sim/slar_line_parts.h"
 
 namespace ris {
+
+namespace detail {
+struct LineKeep;  // sim/slar_line_stages.h: the kept-geometry sink and point targets
+}  // namespace detail
 
 // Whether the fused path reproduces the reference stages for this layout:
 // direct sampling with one line per row (track along y) or column.
@@ -60,10 +69,13 @@ class SlarLineEngine {
   int cell_of_line(int line) const;
 
   // Processes lines [line0, line1) (OpenMP over lines, per-thread scratch):
-  // fills their rows of `prof` and the cells of `maps` those lines cover;
-  // adds to counts. `in` must hold window_for_lines(line0, line1).
+  // fills their rows of `prof` and the cells of `maps` those lines cover
+  // (none when maps.mask is null); adds to counts. `in` must hold
+  // window_for_lines(line0, line1). keep (optional): what the run keeps
+  // beyond the profiles (form_slar_image_fused's SlarEngineKeep).
   void run(int line0, int line1, const SceneWindow& in, SlarLineProfiles& prof,
-           const SceneMapsWindow& maps, SlarLineCounts& counts) const;
+           const SceneMapsWindow& maps, SlarLineCounts& counts,
+           const detail::LineKeep* keep = nullptr) const;
 
  private:
   const Scene& scene_;
@@ -88,15 +100,34 @@ void set_sample_counts(SlarGeometry& g, const SlarLineCounts& counts);
 SlarImage slar_image_from_profiles(SlarLineProfiles& prof, const SlarImagingParams& p,
                                    double line_spacing_m);
 
-// The whole fused run for an in-memory scene: fills `maps` (rows x cols),
+// What an in-memory engine run keeps or adds beyond the image and the scene
+// maps: the kept-geometry sink (the per-sample geometry of the whole run, as
+// compute_slar_geometry makes it), each element's power (the coherent SAR's
+// input) and point targets (as form_slar_image adds
+// point_returns_on_lines's returns).
+struct SlarEngineKeep {
+  bool geometry = false;       // layout's per-sample arrays, allocated and filled
+  bool element_power = false;  // SlarImage::element_power_w
+  const std::vector<PointTarget>* targets = nullptr;  // added on their lines
+  // With targets: the returns seen and the names of those hidden, as
+  // point_returns_on_lines gives them (SlarImage::point_power_w in the
+  // same order).
+  std::vector<PointReturn>* point_returns = nullptr;
+  std::vector<std::string>* hidden_targets = nullptr;
+};
+
+// The whole engine run for an in-memory scene: fills `maps` (rows x cols),
 // sets layout's counts, returns the image as form_slar_image does (same
-// InputError for a swath that misses the scene). fused_slar_image_applies()
-// must hold; every category of a valid cell must be in lut. Oblique tracks
-// (bilinear sampling) run line by line too, with the scene maps scattered per
-// line: the same bytes as the stage path (tested), with whole-scene slope
-// rasters (8 bytes per cell) but no per-sample geometry buffers.
+// InputError for a swath that misses the scene). Every category of a valid
+// cell must be in lut. Oblique tracks (bilinear sampling) run line by line
+// too, with the scene maps scattered per line: the same bytes as the stage
+// path (tested), with whole-scene slope rasters (8 bytes per cell) but no
+// per-sample geometry buffers unless kept. A track along a grid axis whose
+// lines are not one per cell row or column (fused_slar_image_applies false)
+// needs keep.geometry: its maps are made from the kept geometry
+// (scene_geometry_maps).
 SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& layout, SceneGeometryMaps& maps,
                                 const Sigma0Lut& lut, const SlarImagingParams& params,
-                                const std::string& radar_file);
+                                const std::string& radar_file, const SlarEngineKeep& keep = {});
 
 }  // namespace ris

@@ -55,10 +55,12 @@ struct SlarOptions {
   std::optional<double> reference_height_m;
   // Called at the start of each stage (name, fraction of the run done).
   std::function<void(std::string_view, double)> progress;
-  // Keep the per-sample geometry arrays in SlarSimulation::geometry. By
-  // default a track along a grid axis runs fused per line
-  // (ris/sim/slar_line_blocks.h) and `geometry` holds only its layout and
-  // counts (the products need no more); the images are the same bytes.
+  // Keep the per-sample geometry arrays in SlarSimulation::geometry. Every
+  // run goes per line through the line engine (ris/sim/slar_line_blocks.h);
+  // by default `geometry` holds only its layout and counts (the products
+  // need no more), unless the run needs the arrays itself (the coherent
+  // SAR; lines not one per cell row or column). The images are the same
+  // bytes either way.
   bool keep_geometry = false;
   // Point scatterers added to the scene (ris/sim/point_target.h); checked to
   // lie on the scene.
