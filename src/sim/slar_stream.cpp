@@ -321,13 +321,13 @@ class StreamRun {
       summary_.cpu_parts.emplace_back("CPU of pass 2b on rank 0: writing (every block)",
                                       geo_.consume_cpu);
     }
+    stage("greytones, ground range, PNGs (pass 2)");
+    pictures_pass(map, slant_dir);
+    stage_done();
     if (!root) {
       summary_.sim.warnings.clear();  // rank 0 reports them
       return std::move(summary_);
     }
-    stage("greytones, ground range, PNGs (pass 2)");
-    pictures_pass(map);
-    stage_done();
     write_metadata(map);
     bar_->finish();
     dir_->commit();
@@ -758,8 +758,12 @@ class StreamRun {
   // The pictures: a tiled GeoTIFF when too large for a PNG (picture_file),
   // else through a tiled temporary in the staging folder (removed before it
   // is committed), then to PNG row by row.
-  void pictures_pass(const GreytoneMap& map) {
+  void pictures_pass(const GreytoneMap& map, const std::string& slant_dir) {
     const GroundRangeGrid& gg = sim().ground_grid;
+    if (group_.rank() != 0) {  // blocks computed for rank 0
+      picture_blocks(map, slant_dir, nullptr, nullptr);
+      return;
+    }
     const std::string slant_file =
         picture_file("slant_range", bins(), lines(), info_.max_png_pixels);
     const std::string ground_file =
@@ -777,7 +781,7 @@ class StreamRun {
     {
       ByteWriter slant_grey_out = open_picture(slant_file, bins());
       ByteWriter ground_grey_out = open_picture(ground_file, gg.count);
-      picture_blocks(map, *slant_grey_out, *ground_grey_out);
+      picture_blocks(map, slant_dir, slant_grey_out.get(), ground_grey_out.get());
       slant_grey_out->close();
       ground_grey_out->close();
     }
@@ -788,38 +792,82 @@ class StreamRun {
     }
   }
 
+  // A block of image lines' greytones in slant and ground range (any rank).
+  struct PictureBlock {
+    int k0 = 0, lines = 0;
+    std::vector<std::uint8_t> slant, ground;
+  };
+
   // The speckled power read back block by block: its greytones in slant and
-  // ground range (render_slar).
-  void picture_blocks(const GreytoneMap& map, GeoTiffBlockWriter<std::uint8_t>& slant_out,
-                      GeoTiffBlockWriter<std::uint8_t>& ground_out) {
+  // ground range (render_slar), computed on every rank and written by rank 0
+  // (slant_out, ground_out; null on the other ranks) in line order.
+  void picture_blocks(const GreytoneMap& map, const std::string& slant_dir,
+                      GeoTiffBlockWriter<std::uint8_t>* slant_out,
+                      GeoTiffBlockWriter<std::uint8_t>* ground_out) {
     const SlarImage& img = sim().image;
     const GroundRangeGrid& gg = sim().ground_grid;
-    GdalDataset sp_ds = open_raster(dir_->path("speckled_power_slant.tif").string());
-    GdalDataset mask_ds = open_raster(dir_->path("mask_slant.tif").string());
-    std::vector<std::uint8_t> no_data, grey, ground_no_data, ground_grey;
-    for (int k0 = 0; k0 < lines(); k0 += block_lines()) {
-      const int n = std::min(block_lines(), lines() - k0);
-      const std::size_t np = sz(n) * sz(bins());
-      speckled_.resize(np);
-      mask_.resize(np);
-      read_rows(handle(sp_ds), k0, n, speckled_.data(), GDT_Float32, "speckled_power_slant.tif");
-      read_rows(handle(mask_ds), k0, n, mask_.data(), GDT_Byte, "mask_slant.tif");
-      no_data.resize(np);
-      for (std::size_t i = 0; i < np; ++i) no_data[i] = (mask_[i] & pixel_flag::kNoData) ? 1 : 0;
-      grey.resize(np);
-      greytones(speckled_, grey, map, no_data);
-      slant_out.write(grey.data(), n);
-      const std::vector<float> ground_power = to_ground_range(speckled_, n, img.range, gg);
-      const std::vector<std::uint8_t> ground_mask =
-          to_ground_range_nearest(mask_, n, img.range, gg, pixel_flag::kNoData);
-      ground_no_data.resize(ground_mask.size());
-      for (std::size_t i = 0; i < ground_mask.size(); ++i)
-        ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
-      ground_grey.resize(ground_power.size());
-      greytones(ground_power, ground_grey, map, ground_no_data);
-      ground_out.write(ground_grey.data(), n);
-      bar_->advance(0);
-    }
+    const std::filesystem::path dir(slant_dir);
+    std::optional<GdalDataset> sp_ds, mask_ds;  // at the first block (see geocoded_pass)
+    std::vector<std::uint8_t> no_data, ground_no_data;
+    const int blocks = (lines() + block_lines() - 1) / block_lines();
+    detail::run_blocks_in_order<PictureBlock>(
+        group_, blocks, schedule_,
+        [&](int b) {
+          if (!sp_ds) {
+            sp_ds.emplace(open_raster((dir / "speckled_power_slant.tif").string()));
+            mask_ds.emplace(open_raster((dir / "mask_slant.tif").string()));
+          }
+          PictureBlock k;
+          k.k0 = b * block_lines();
+          k.lines = std::min(block_lines(), lines() - k.k0);
+          const int n = k.lines;
+          const std::size_t np = sz(n) * sz(bins());
+          speckled_.resize(np);
+          mask_.resize(np);
+          read_rows(handle(*sp_ds), k.k0, n, speckled_.data(), GDT_Float32,
+                    "speckled_power_slant.tif");
+          read_rows(handle(*mask_ds), k.k0, n, mask_.data(), GDT_Byte, "mask_slant.tif");
+          no_data.resize(np);
+          for (std::size_t i = 0; i < np; ++i)
+            no_data[i] = (mask_[i] & pixel_flag::kNoData) ? 1 : 0;
+          k.slant.resize(np);
+          greytones(speckled_, k.slant, map, no_data);
+          const std::vector<float> ground_power = to_ground_range(speckled_, n, img.range, gg);
+          const std::vector<std::uint8_t> ground_mask =
+              to_ground_range_nearest(mask_, n, img.range, gg, pixel_flag::kNoData);
+          ground_no_data.resize(ground_mask.size());
+          for (std::size_t i = 0; i < ground_mask.size(); ++i)
+            ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
+          k.ground.resize(ground_power.size());
+          greytones(ground_power, k.ground, map, ground_no_data);
+          return k;
+        },
+        [](const PictureBlock& k, std::vector<char>& out) {
+          const std::size_t sizes[4] = {std::size_t(k.k0), std::size_t(k.lines), k.slant.size(),
+                                        k.ground.size()};
+          const char* h = reinterpret_cast<const char*>(sizes);
+          out.insert(out.end(), h, h + sizeof(sizes));
+          out.insert(out.end(), k.slant.begin(), k.slant.end());
+          out.insert(out.end(), k.ground.begin(), k.ground.end());
+        },
+        [](const char* p, std::size_t n) {
+          std::size_t sizes[4] = {};
+          RIS_CHECK(n >= sizeof(sizes));
+          std::memcpy(sizes, p, sizeof(sizes));
+          RIS_CHECK(n == sizeof(sizes) + sizes[2] + sizes[3]);
+          PictureBlock k;
+          k.k0 = static_cast<int>(sizes[0]);
+          k.lines = static_cast<int>(sizes[1]);
+          const char* at = p + sizeof(sizes);
+          k.slant.assign(at, at + sizes[2]);
+          k.ground.assign(at + sizes[2], at + sizes[2] + sizes[3]);
+          return k;
+        },
+        [&](int, PictureBlock& k) {
+          slant_out->write(k.slant.data(), k.lines);
+          ground_out->write(k.ground.data(), k.lines);
+          bar_->advance(0);
+        });
   }
 
   // ---- Pass 2b: geocoded products, scene rows top down ------------------

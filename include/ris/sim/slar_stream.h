@@ -33,10 +33,10 @@
 //
 // Under MPI (`mpirun -np N ris simulate --stream`; ris/util/process_group.h,
 // docs/scale.md) every rank reads its own windows of the scene: pass 0 is
-// split by rows and reduced exactly, the blocks of passes 1 and 2b are
+// split by rows and reduced exactly, the blocks of passes 1, 2b and 2 are
 // computed on any rank (src/sim/block_schedule.h) and consumed by rank 0 in
-// order (azimuth integration, fading, every write), and passes 1b and 2 run
-// on rank 0: the products are the single process's bytes.
+// order (azimuth integration, fading, every write), and pass 1b and the
+// PNGs run on rank 0: the products are the single process's bytes.
 //
 // It runs SLAR tracks along a grid axis (heading 0, 90, 180 or 270 deg, one
 // azimuth line per cell row or column: fused_slar_applies); other tracks,
