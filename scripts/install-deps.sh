@@ -26,6 +26,8 @@ packages=(
   chromium chromium-driver python3-selenium
   # The Python module (import ris, docs/python.md) and its tests
   pybind11-dev python3-dev python3-numpy python3-pytest python3-gdal
+  # MPI (Debian's OpenMPI): mpirun -np N ris simulate ... --stream (docs/scale.md)
+  libopenmpi-dev openmpi-bin
   # The Python module's to_xarray() (optional at run time; its tests run when it imports)
   python3-xarray
 )

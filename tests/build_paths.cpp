@@ -1,6 +1,6 @@
 #include "build_paths.h"
 
-// The four definitions are given to this file alone (CMakeLists.txt).
+// The definitions are given to this file alone (CMakeLists.txt).
 namespace ris::test {
 
 const char* ris_exe() {
@@ -14,6 +14,9 @@ const char* data_dir() {
 }
 const char* test_data_dir() {
   return RIS_SOURCE_DIR "/tests/data";
+}
+const char* mpiexec() {
+  return RIS_MPIEXEC;
 }
 
 }  // namespace ris::test

@@ -10,5 +10,7 @@ const char* ris_exe();        // the built `ris` tool
 const char* source_dir();     // the source tree's root
 const char* data_dir();       // <source>/data (radars, scenes, libraries)
 const char* test_data_dir();  // <source>/tests/data
+// The MPI launcher `ris` was built for (mpirun), or "" when built without MPI.
+const char* mpiexec();
 
 }  // namespace ris::test

@@ -36,6 +36,7 @@
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/run.h"
 #include "ris/sim/slar_products.h"
+#include "ris/util/process_group.h"
 #include "ris/util/progress.h"
 #include "run_input_options.h"
 
@@ -127,7 +128,12 @@ void print_streamed(const RunRequest& r, const RunResult& res) {
   fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
              s.sim.image.lines, s.sim.image.bins, s.sim.ground_grid.count);
   print_geometry_counts(s.sim.geometry);
-  for (const auto& [name, t] : s.stage_seconds) fmt::print("  {:.2f} s  {}\n", t, name);
+  for (std::size_t i = 0; i < s.stage_seconds.size(); ++i) {
+    const auto& [name, t] = s.stage_seconds[i];
+    fmt::print("  {:.2f} s  {} ({:.2f} s CPU)\n", t, name,
+               i < s.stage_cpu_seconds.size() ? s.stage_cpu_seconds[i] : 0.0);
+  }
+  for (const auto& [name, t] : s.cpu_parts) fmt::print("  {:.2f} s  {}\n", t, name);
 }
 
 void run_simulate(SimulateArgs& a) {
@@ -154,6 +160,8 @@ void run_simulate(SimulateArgs& a) {
     };
   }
   const RunResult res = run_simulation(r, callbacks);
+  // The other ranks of an MPI run computed blocks; rank 0 wrote and reports.
+  if (process_group().rank() != 0) return;
   if (res.kind == RunKind::streamed) {
     print_streamed(r, res);
   } else {

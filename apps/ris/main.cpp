@@ -1,4 +1,5 @@
 // ris: the radar image simulator command-line tool.
+#include <fmt/format.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
@@ -6,12 +7,16 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
+#include <string>
 
 #include "command_registry.h"
+#include "mpi/process_group_start.h"
 #include "ris/io/safe_paths.h"
 #include "ris/util/data_dir.h"
 #include "ris/util/error.h"
 #include "ris/util/memory_reuse.h"
+#include "ris/util/process_group.h"
 
 namespace ris::app {
 
@@ -42,6 +47,9 @@ int main(int argc, char** argv) {
   // One process, one run: outputs are checked against every input it read
   // (ris/io/safe_paths.h).
   ris::track_inputs(true);
+  // The MPI job this process is a rank of, when started by mpirun or srun.
+  const std::unique_ptr<ris::ProcessGroup> group = ris::app::join_process_group(argc, argv);
+  if (group) ris::install_process_group(group.get());
   CLI::App app{"ris: radar image simulator (SLAR, SAR and PPI images from terrain)", "ris"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("ris ") + RIS_VERSION);
@@ -51,13 +59,18 @@ int main(int argc, char** argv) {
   // Messages go to stderr as "ris: level: text"; -v is read before parsing so
   // that it applies to everything the subcommands print.
   spdlog::set_default_logger(spdlog::stderr_color_mt("ris"));
-  spdlog::set_pattern("ris: %^%l%$: %v");
+  spdlog::set_pattern(ris::process_group().size() > 1
+                          ? fmt::format("ris (rank {} of {}): %^%l%$: %v",
+                                        ris::process_group().rank(), ris::process_group().size())
+                          : std::string("ris: %^%l%$: %v"));
   bool verbose = false;  // applied by the pre-scan below
   app.add_flag("-v,--verbose", verbose, "Print debug messages");
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-v" || arg == "--verbose") spdlog::set_level(spdlog::level::debug);
   }
+  // The other ranks of an MPI run print their errors only (rank 0 reports).
+  if (ris::process_group().rank() != 0) spdlog::set_level(spdlog::level::err);
 
   auto& commands = ris::app::registered_commands();
   std::sort(commands.begin(), commands.end(),
@@ -68,19 +81,23 @@ int main(int argc, char** argv) {
   // usage error (CLI11's own codes, 100 and up, are folded into 2); 1 an
   // input error (a file, key, value or resource limit); 3 any other failure
   // (out of memory, an I/O error, an internal error).
+  int code = 0;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+    code = app.exit(e) == 0 ? 0 : 2;
   } catch (const ris::InputError& e) {
     spdlog::error("{}", e.what());
-    return 1;
+    code = 1;
   } catch (const std::bad_alloc&) {
     spdlog::error("out of memory (the inputs ask for more than the machine has)");
-    return 3;
+    code = 3;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
-    return 3;
+    code = 3;
   }
-  return 0;
+  // A rank of an MPI run that fails ends the others too (its message printed
+  // and its staged output removed by now: docs/scale.md).
+  if (code != 0 && ris::process_group().size() > 1) ris::process_group().abort(code);
+  return code;
 }

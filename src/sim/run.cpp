@@ -18,6 +18,7 @@
 #include "ris/sim/sar_coherent.h"
 #include "ris/sim/slar_products.h"
 #include "ris/util/error.h"
+#include "ris/util/process_group.h"
 #include "ris/util/resource_guard.h"
 
 namespace ris {
@@ -160,7 +161,9 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   o.quiet = r.quiet;
   res.streamed =
       simulate_slar_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
-  for (const std::string& w : res.streamed->sim.warnings) warn(cb, w);
+  // Once, by rank 0, in an MPI run (every rank sets up the same stages).
+  if (process_group().rank() == 0)
+    for (const std::string& w : res.streamed->sim.warnings) warn(cb, w);
 }
 
 // Speckle, greytones and point-target measurements of a kept SLAR/SAR run.
@@ -237,6 +240,13 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   }
   const Clock::time_point t0 = Clock::now();
   RunResult res;
+  if (process_group().size() > 1 && !(r.stream || r.block_lines > 0)) {
+    // Else every rank would run the whole simulation and write the same folder.
+    throw InputError(r.scene_path, "--stream",
+                     fmt::format("a run over {} MPI ranks is a streamed run (docs/scale.md); add "
+                                 "--stream, or run without mpirun",
+                                 process_group().size()));
+  }
   if (!r.acquisition_path.empty()) {
     run_acquisition(r, cb, res);
     if (!r.out_dir.empty()) {

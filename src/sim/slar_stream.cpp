@@ -5,13 +5,19 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <vector>
@@ -34,9 +40,11 @@
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/sim/slar_run_setup.h"
 #include "ris/util/error.h"
+#include "ris/util/process_group.h"
 #include "ris/util/progress.h"
 #include "ris/util/rank_select.h"
 #include "ris/util/resource_guard.h"
+#include "sim/block_schedule.h"
 
 namespace ris {
 
@@ -84,7 +92,10 @@ struct SceneSummary {
 // on_new_category(c, row, col): called at the first cell of each category,
 // so a category the backscatter source lacks stops the run there rather
 // than after the whole pass.
-SceneSummary summarise_scene(const SceneStreamReader& in, int block_rows, ProgressBar& bar,
+// Rows [row_begin, row_end) (an MPI rank's part; reduce_scene_summary
+// combines the parts).
+SceneSummary summarise_scene(const SceneStreamReader& in, int row_begin, int row_end,
+                             int block_rows, ProgressBar& bar,
                              const std::function<void(std::uint16_t, int, int)>& on_new_category) {
   const Scene& g = in.grid();
   SceneSummary s;
@@ -93,8 +104,8 @@ SceneSummary summarise_scene(const SceneStreamReader& in, int block_rows, Progre
   std::vector<float> z(cap);
   std::vector<std::uint16_t> cat(cap);
   std::vector<std::uint8_t> ok(cap);
-  for (int r0 = 0; r0 < g.rows; r0 += block_rows) {
-    const int n = std::min(block_rows, g.rows - r0);
+  for (int r0 = row_begin; r0 < row_end; r0 += block_rows) {
+    const int n = std::min(block_rows, row_end - r0);
     in.read(r0, n, 0, g.cols, z.data(), cat.data(), ok.data());
     const std::size_t cells = sz(n) * sz(g.cols);
     for (std::size_t i = 0; i < cells; ++i) {
@@ -124,6 +135,49 @@ SceneSummary summarise_scene(const SceneStreamReader& in, int block_rows, Progre
   return s;
 }
 
+// The whole scene's summary from every rank's part (rows in rank order),
+// on every rank: counts summed, categories merged, and the extremes folded
+// in rank order with the same strict comparisons as summarise_scene, so the
+// highest cell is the first in row order, as one process finds it.
+void reduce_scene_summary(ProcessGroup& g, SceneSummary& s) {
+  if (g.size() == 1) return;
+  std::vector<std::uint64_t> counts(65536 + 2, 0);
+  counts[0] = static_cast<std::uint64_t>(s.valid_cells);
+  counts[1] = static_cast<std::uint64_t>(s.nodata_cells);
+  for (std::uint16_t c : s.categories) counts[2 + sz(c)] = 1;
+  g.sum(counts);
+  s.valid_cells = static_cast<std::int64_t>(counts[0]);
+  s.nodata_cells = static_cast<std::int64_t>(counts[1]);
+  s.categories.clear();
+  for (std::size_t c = 0; c < 65536; ++c)
+    if (counts[2 + c] > 0) s.categories.push_back(static_cast<std::uint16_t>(c));
+  std::vector<std::uint64_t> top = s.elevation.counters();
+  g.sum(top);
+  s.elevation.set_counters(top);
+  struct Extremes {
+    float h_min, h_max;
+    int max_row, max_col;
+  };
+  const Extremes mine{s.h_min, s.h_max, s.max_row, s.max_col};
+  std::vector<char> bytes(sizeof(Extremes));
+  std::memcpy(bytes.data(), &mine, sizeof(Extremes));
+  const std::vector<std::vector<char>> all = g.all_gather(bytes);
+  s.h_min = std::numeric_limits<float>::infinity();
+  s.h_max = -std::numeric_limits<float>::infinity();
+  s.max_row = s.max_col = -1;
+  for (const std::vector<char>& b : all) {
+    Extremes e{};
+    RIS_CHECK(b.size() == sizeof(Extremes));
+    std::memcpy(&e, b.data(), sizeof(Extremes));
+    if (e.h_min < s.h_min) s.h_min = e.h_min;
+    if (e.h_max > s.h_max) {
+      s.h_max = e.h_max;
+      s.max_row = e.max_row;
+      s.max_col = e.max_col;
+    }
+  }
+}
+
 // Exact median of the values counted in pass 1 and refined in pass 2: the
 // upper median (nth_element at n / 2) or, with both_middles, the mean of the
 // two middle values for an even count (median_valid_power_w).
@@ -142,6 +196,32 @@ double median_value(const FloatRankSelect& sel, std::uint64_t n, bool both_middl
 // Whether the track runs along y (lines are cell rows), as fused_slar_applies.
 bool along_y_axis(const Track& t) {
   return std::abs(std::abs(t.along_y) - 1.0) < 1e-9;
+}
+
+// CPU time of this process (every thread), seconds.
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// How an MPI run hands out pass 1's blocks (src/sim/block_schedule.h):
+// RIS_MPI_SCHEDULE=interleaved or dynamic (the default; docs/scale.md).
+detail::BlockSchedule block_schedule_from_environment() {
+  const char* v = std::getenv("RIS_MPI_SCHEDULE");
+  if (v == nullptr || std::string(v).empty() || std::string(v) == "dynamic")
+    return detail::BlockSchedule::dynamic;
+  if (std::string(v) == "interleaved") return detail::BlockSchedule::interleaved;
+  throw InputError("", "RIS_MPI_SCHEDULE",
+                   fmt::format("expected dynamic or interleaved, got '{}'", v));
+}
+
+// The failure tests' hooks: RIS_FAIL_BLOCK=b (RIS_FAIL_GEO_BLOCK=b) makes
+// pass 1's (pass 2b's) block b throw on the rank that computes it
+// (tests/mpi_cli_test.cpp); unset: -1, none.
+int failing_block_from_environment(const char* name) {
+  const char* v = std::getenv(name);
+  return v == nullptr ? -1 : std::atoi(v);
 }
 
 // A pixel counted by the auto greytone reference (ris/image/greytone.h).
@@ -176,7 +256,13 @@ class StreamRun {
   StreamRun(const std::filesystem::path& scene_path, const RadarParams& radar,
             const Sigma0Source& sigma0, const SlarRunInfo& info,
             const std::filesystem::path& out_dir, const SlarStreamOptions& options)
-      : in_(scene_path), options_(options), info_(info), out_dir_(out_dir) {
+      : in_(scene_path),
+        schedule_(block_schedule_from_environment()),
+        fail_block_(failing_block_from_environment("RIS_FAIL_BLOCK")),
+        fail_geo_block_(failing_block_from_environment("RIS_FAIL_GEO_BLOCK")),
+        options_(options),
+        info_(info),
+        out_dir_(out_dir) {
     summary_.grid = in_.grid();
     summary_.sim.radar = radar;
     summary_.sim.derived = derive(summary_.sim.radar);
@@ -185,34 +271,63 @@ class StreamRun {
     georef_ = Georef{grid().geotransform(), grid().crs_wkt};
   }
 
+  // Every rank of an MPI run (ris/util/process_group.h) runs passes 0 and
+  // 1 on its part; rank 0 alone writes, and runs the passes after 1.
   SlarStreamSummary run(const Sigma0Source& sigma0) {
     plan();
+    const bool root = group_.rank() == 0;
     bar_.emplace("simulate (streamed)", 3 * std::int64_t(grid().rows) * grid().cols, "cells",
-                 options_.quiet);
+                 options_.quiet || !root);
     stage("scene statistics");
+    // This rank's rows: whole blocks of scene_block_rows_, split evenly.
+    const int row_blocks = (grid().rows + scene_block_rows_ - 1) / scene_block_rows_;
+    const auto part_row = [&](int rank) {
+      const auto b = std::int64_t(row_blocks) * rank / group_.size();
+      return static_cast<int>(std::min<std::int64_t>(b * scene_block_rows_, grid().rows));
+    };
     // Every category checked against the backscatter source at its first
     // cell (a scene of one undefined category fails at once, not after the
-    // pass).
-    ss_ = summarise_scene(in_, scene_block_rows_, *bar_, [&](std::uint16_t c, int row, int col) {
-      if (c == kNoDataCategory || sigma0.has_category(c)) return;
-      throw InputError(backscatter_file_, "",
-                       fmt::format("no backscatter for category {} (the scene {} uses it, "
-                                   "first at row {}, column {}; add it to the backscatter "
-                                   "file or give another with --backscatter)",
-                                   c, in_.path(), row, col));
-    });
+    // pass; in an MPI run, the first in the rank's rows).
+    ss_ = summarise_scene(in_, part_row(group_.rank()), part_row(group_.rank() + 1),
+                          scene_block_rows_, *bar_, [&](std::uint16_t c, int row, int col) {
+                            if (c == kNoDataCategory || sigma0.has_category(c)) return;
+                            throw InputError(
+                                backscatter_file_, "",
+                                fmt::format("no backscatter for category {} (the scene {} uses "
+                                            "it, first at row {}, column {}; add it to the "
+                                            "backscatter file or give another with --backscatter)",
+                                            c, in_.path(), row, col));
+                          });
+    reduce_scene_summary(group_, ss_);
     stage_done();
     set_up_stages(sigma0);
-    dir_.emplace(out_dir_);
+    if (root) dir_.emplace(out_dir_);
     lines_pass();
-    const GreytoneMap map = make_greytone_map_for_median(radar(), median_mean_power());
+    // Rank 0's median mean power (pass 1b) and the folder holding the slant
+    // products, for every rank's share of the geocoding.
+    const double median = root ? median_mean_power() : 0.0;
+    const auto [median_all, slant_dir] =
+        share_from_rank0(median, root ? dir_->path("").string() : std::string());
+    const GreytoneMap map = make_greytone_map_for_median(radar(), median_all);
     set_ground_grid();
-    stage("greytones, ground range, PNGs (pass 2)");
-    pictures_pass(map);
-    stage_done();
     stage("geocoded products (pass 2b)");
-    geocoded_pass(map);
+    geocoded_pass(map, slant_dir);
     stage_done();
+    if (root) {
+      summary_.cpu_parts.emplace_back(
+          fmt::format("CPU of pass 2b on rank 0: {} of {} blocks computed", geo_.computed,
+                      geo_.blocks),
+          geo_.compute_cpu);
+      summary_.cpu_parts.emplace_back("CPU of pass 2b on rank 0: writing (every block)",
+                                      geo_.consume_cpu);
+    }
+    stage("greytones, ground range, PNGs (pass 2)");
+    pictures_pass(map, slant_dir);
+    stage_done();
+    if (!root) {
+      summary_.sim.warnings.clear();  // rank 0 reports them
+      return std::move(summary_);
+    }
     write_metadata(map);
     bar_->finish();
     dir_->commit();
@@ -232,12 +347,14 @@ class StreamRun {
 
   void stage(const std::string& name) {
     summary_.stage_seconds.emplace_back(name, 0.0);
+    cpu_mark_ = process_cpu_seconds();
     bar_->set_stage(name);
     mark_ = std::chrono::steady_clock::now();
   }
   void stage_done() {
     summary_.stage_seconds.back().second =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - mark_).count();
+    summary_.stage_cpu_seconds.push_back(process_cpu_seconds() - cpu_mark_);
   }
 
   // What the stream runs (SLAR and the incoherent SAR along a grid axis: the
@@ -267,7 +384,13 @@ class StreamRun {
             ? std::min(options_.block_lines, n)
             : static_cast<int>(std::clamp<std::int64_t>(options_.memory_budget_bytes / per_line, 16,
                                                         std::max(n, 16)));
-    summary_.block_lines = std::min(block_lines, n);
+    // Over several MPI ranks, at least 4 blocks a rank, so the queue has
+    // blocks to balance (the bytes do not depend on the block length).
+    const int ranks = group_.size();
+    const int for_ranks = ranks > 1 && options_.block_lines <= 0
+                              ? std::max(16, (n + 4 * ranks - 1) / (4 * ranks))
+                              : n;
+    summary_.block_lines = std::min({block_lines, n, for_ranks});
     // Scene rows read at a time by the passes over whole rows.
     scene_block_rows_ = std::min(grid().rows, std::max(in_.block_rows(), 256));
   }
@@ -327,11 +450,27 @@ class StreamRun {
     return k;
   }
 
+  // A block of lines as computed by any rank and consumed, in line order, by
+  // rank 0 (src/sim/block_schedule.h): its profile rows, counts and its own
+  // cells' scene-grid maps (in the writers' layout).
+  struct LineBlock {
+    int l0 = 0, l1 = 0;
+    SlarLineProfiles prof;
+    SlarLineCounts counts;
+    std::vector<std::uint8_t> scene_mask;
+    std::vector<float> incidence;
+  };
+
   void lines_pass() {
     const SlarGeometry& g = sim().geometry;
     const SlarLineEngine engine(grid(), g, rs_.lut, rs_.imaging, radar().source_file);
-    SlarAzimuthIntegrator az(rs_.imaging, g.line_spacing_m, lines(), bins());
-    LineSinks sinks = open_line_sinks();
+    const bool root = group_.rank() == 0;
+    std::optional<SlarAzimuthIntegrator> az;
+    std::optional<LineSinks> sinks;
+    if (root) {
+      az.emplace(rs_.imaging, g.line_spacing_m, lines(), bins());
+      sinks.emplace(open_line_sinks());
+    }
     // N per range bin, as make_greytone_image.
     looks_.resize(sz(bins()));
     for (int k = 0; k < bins(); ++k)
@@ -340,68 +479,191 @@ class StreamRun {
     z_.resize(win_cap);
     cat_.resize(win_cap);
     ok_.resize(win_cap);
-    std::vector<float> incidence(win_cap);
-    std::vector<std::uint8_t> scene_mask(win_cap);
-    SlarLineProfiles prof;
+    window_incidence_.resize(win_cap);
+    window_mask_.resize(win_cap);
     SlarLineCounts counts;
     std::int64_t samples_in_swath = 0;
+    const int blocks = (lines() + block_lines() - 1) / block_lines();
 
     stage("geometry, image formation, scene maps, fading (pass 1)");
-    for (int l0 = 0; l0 < lines(); l0 += block_lines()) {
-      const int l1 = std::min(lines(), l0 + block_lines());
-      int row0 = 0, rows = 0, col0 = 0, cols = 0;
-      engine.window_for_lines(l0, l1, row0, rows, col0, cols);
-      in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
-      const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
-      const SceneMapsWindow maps{row0, col0, rows, cols, scene_mask.data(), incidence.data()};
-      prof.allocate(l1 - l0, bins(), l0);
-      engine.run(l0, l1, win, prof, maps, counts);
-      samples_in_swath += prof.samples_in_swath;
-      write_block_maps(engine, l0, l1, win, maps, sinks);
-      write_shadow_text(prof, l0, l1, sinks.shadow_text);
-      az.push(prof, l1 - l0);
-      emit_ready(az, sinks);
-      bar_->advance(std::int64_t(l1 - l0) * cross_cells_);
-      ++summary_.blocks;
+    // This process's CPU time (all its threads) in the two halves of pass 1,
+    // reported with the passes: what a rank computes, and what rank 0 alone
+    // does (docs/scale.md's cost model).
+    double compute_cpu = 0.0, consume_cpu = 0.0;
+    int computed = 0;
+    detail::run_blocks_in_order<LineBlock>(
+        group_, blocks, schedule_,
+        [&](int b) {
+          const double t0 = process_cpu_seconds();
+          LineBlock k = compute_block(engine, b);
+          compute_cpu += process_cpu_seconds() - t0;
+          ++computed;
+          return k;
+        },
+        [](const LineBlock& k, std::vector<char>& out) { pack_block(k, out); },
+        [](const char* p, std::size_t n) { return unpack_block(p, n); },
+        [&](int, LineBlock& k) {
+          const double t0 = process_cpu_seconds();
+          counts.add(k.counts);
+          samples_in_swath += k.prof.samples_in_swath;
+          write_block_maps(k, *sinks);
+          write_shadow_text(k.prof, k.l0, k.l1, sinks->shadow_text);
+          az->push(k.prof, k.l1 - k.l0);
+          emit_ready(*az, *sinks);
+          bar_->advance(std::int64_t(k.l1 - k.l0) * cross_cells_);
+          ++summary_.blocks;
+          if (spare_.size() < 2) spare_.push_back(std::move(k));
+          consume_cpu += process_cpu_seconds() - t0;
+        });
+    // The median elevation's second pass: every rank refined its blocks.
+    if (group_.size() > 1) {
+      std::vector<std::uint64_t> low = ss_.elevation.counters();
+      group_.sum(low);
+      ss_.elevation.set_counters(low);
     }
-    RIS_CHECK(az.lines_emitted() == lines());
+    if (!root) return;
+    RIS_CHECK(az->lines_emitted() == lines());
     finish_counts(counts, samples_in_swath);
-    sinks.mean->close();
-    sinks.speckled->close();
-    sinks.mask->close();
-    sinks.scene_mask->close();
-    sinks.incidence->close();
-    sinks.shadow_text.close();
-    if (!sinks.shadow_text)
+    sinks->mean->close();
+    sinks->speckled->close();
+    sinks->mask->close();
+    sinks->scene_mask->close();
+    sinks->incidence->close();
+    sinks->shadow_text.close();
+    if (!sinks->shadow_text)
       throw InputError(dir_->path("shadowmap.txt").string(), "", "write failed");
     stage_done();
+    summary_.cpu_parts.emplace_back(
+        fmt::format("CPU of pass 1 on rank 0: {} of {} blocks computed", computed, blocks),
+        compute_cpu);
+    summary_.cpu_parts.emplace_back(
+        "CPU of pass 1 on rank 0: integration, fading, writing (every block)", consume_cpu);
+  }
+
+  // Block b's lines through the line engine, on this rank: its window (the
+  // lines' cells and their halo) read from the scene file, geometry, image
+  // formation and its own cells' maps; the median elevation's second pass
+  // over its own cells.
+  LineBlock compute_block(const SlarLineEngine& engine, int b) {
+    LineBlock k;
+    if (!spare_.empty()) {  // buffers reused
+      k = std::move(spare_.back());
+      spare_.pop_back();
+    }
+    if (b == fail_block_) {
+      throw std::runtime_error(fmt::format("block {}: a failure injected by RIS_FAIL_BLOCK", b));
+    }
+    k.l0 = b * block_lines();
+    k.l1 = std::min(lines(), k.l0 + block_lines());
+    k.counts = SlarLineCounts();
+    int row0 = 0, rows = 0, col0 = 0, cols = 0;
+    engine.window_for_lines(k.l0, k.l1, row0, rows, col0, cols);
+    in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
+    const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
+    const SceneMapsWindow maps{
+        row0, col0, rows, cols, window_mask_.data(), window_incidence_.data()};
+    k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
+    k.prof.samples_in_swath = 0;
+    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts);
+    keep_block_maps(engine, win, maps, k);
+    return k;
+  }
+
+  static void pack_block(const LineBlock& k, std::vector<char>& out) {
+    const auto put = [&](const void* p, std::size_t n) {
+      const char* c = static_cast<const char*>(p);
+      out.insert(out.end(), c, c + n);
+    };
+    const int head[5] = {k.l0, k.l1, k.prof.line0, k.prof.lines, k.prof.bins};
+    put(head, sizeof(head));
+    put(&k.prof.samples_in_swath, sizeof(std::int64_t));
+    put(&k.counts, sizeof(SlarLineCounts));
+    const std::size_t np = k.prof.power_w.size(), nm = k.scene_mask.size();
+    put(&nm, sizeof(nm));
+    put(k.prof.power_w.data(), np * sizeof(float));
+    put(k.prof.area_m2.data(), np * sizeof(float));
+    put(k.prof.touch.data(), np);
+    put(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
+    put(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
+    put(k.scene_mask.data(), nm);
+    put(k.incidence.data(), nm * sizeof(float));
+  }
+
+  static LineBlock unpack_block(const char* p, std::size_t n) {
+    const char* const end = p + n;
+    const auto get = [&](void* to, std::size_t bytes) {
+      RIS_CHECK(std::size_t(end - p) >= bytes);
+      std::memcpy(to, p, bytes);
+      p += bytes;
+    };
+    LineBlock k;
+    int head[5] = {};
+    get(head, sizeof(head));
+    k.l0 = head[0];
+    k.l1 = head[1];
+    k.prof.line0 = head[2];
+    k.prof.lines = head[3];
+    k.prof.bins = head[4];
+    get(&k.prof.samples_in_swath, sizeof(std::int64_t));
+    get(&k.counts, sizeof(SlarLineCounts));
+    std::size_t nm = 0;
+    get(&nm, sizeof(nm));
+    const std::size_t np = sz(k.prof.lines) * sz(k.prof.bins);
+    k.prof.power_w.resize(np);
+    k.prof.area_m2.resize(np);
+    k.prof.touch.resize(np);
+    k.prof.mapped_count.resize(np);
+    k.prof.visible_count.resize(np);
+    get(k.prof.power_w.data(), np * sizeof(float));
+    get(k.prof.area_m2.data(), np * sizeof(float));
+    get(k.prof.touch.data(), np);
+    get(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
+    get(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
+    k.scene_mask.resize(nm);
+    k.incidence.resize(nm);
+    get(k.scene_mask.data(), nm);
+    get(k.incidence.data(), nm * sizeof(float));
+    RIS_CHECK(p == end);
+    return k;
   }
 
   // The block's own cells (its lines' rows or columns, without the halo):
-  // scene-grid maps out, the median elevation's second pass.
-  void write_block_maps(const SlarLineEngine& engine, int l0, int l1, const SceneWindow& win,
-                        const SceneMapsWindow& maps, LineSinks& sinks) {
-    const int c_a = engine.cell_of_line(l0), c_b = engine.cell_of_line(l1 - 1);
-    RIS_CHECK(c_a >= 0 && c_b >= 0 && std::abs(c_b - c_a) == l1 - l0 - 1);
-    const int lo = std::min(c_a, c_b), count = l1 - l0;
+  // their scene-grid maps kept for the writers (count rows x cols along y,
+  // rows x count across), the median elevation's second pass.
+  void keep_block_maps(const SlarLineEngine& engine, const SceneWindow& win,
+                       const SceneMapsWindow& maps, LineBlock& k) {
+    const int c_a = engine.cell_of_line(k.l0), c_b = engine.cell_of_line(k.l1 - 1);
+    RIS_CHECK(c_a >= 0 && c_b >= 0 && std::abs(c_b - c_a) == k.l1 - k.l0 - 1);
+    const int lo = std::min(c_a, c_b), count = k.l1 - k.l0;
     const int cols = win.cols;
     if (along_y_axis(sim().track)) {
       const std::size_t at = sz(lo - win.row0) * sz(cols);
-      sinks.scene_mask->write(maps.mask + at, count);
-      sinks.incidence->write(maps.local_incidence_deg + at, count);
-      for (std::size_t i = at; i < at + sz(count) * sz(cols); ++i)
+      const std::size_t n = sz(count) * sz(cols);
+      k.scene_mask.assign(maps.mask + at, maps.mask + at + n);
+      k.incidence.assign(maps.local_incidence_deg + at, maps.local_incidence_deg + at + n);
+      for (std::size_t i = at; i < at + n; ++i)
         if (ok_[i] && std::isfinite(z_[i])) ss_.elevation.refine(z_[i]);
     } else {
       const std::size_t at = sz(lo - win.col0);
-      sinks.scene_mask->write(maps.mask + at, count, sz(cols));
-      sinks.incidence->write(maps.local_incidence_deg + at, count, sz(cols));
+      k.scene_mask.resize(sz(win.rows) * sz(count));
+      k.incidence.resize(k.scene_mask.size());
       for (int r = 0; r < win.rows; ++r) {
+        const std::size_t from = sz(r) * sz(cols) + at, to = sz(r) * sz(count);
+        std::copy_n(maps.mask + from, count, k.scene_mask.data() + to);
+        std::copy_n(maps.local_incidence_deg + from, count, k.incidence.data() + to);
         for (int c = lo; c < lo + count; ++c) {
           const std::size_t i = sz(r) * sz(cols) + sz(c - win.col0);
           if (ok_[i] && std::isfinite(z_[i])) ss_.elevation.refine(z_[i]);
         }
       }
     }
+  }
+
+  // A block's maps out, in line order (rank 0).
+  void write_block_maps(const LineBlock& k, LineSinks& sinks) {
+    const int count = k.l1 - k.l0;
+    sinks.scene_mask->write(k.scene_mask.data(), count);
+    sinks.incidence->write(k.incidence.data(), count);
   }
 
   // The seed's shadow map, line by line (ris/image/shadow_map.h).
@@ -496,8 +758,12 @@ class StreamRun {
   // The pictures: a tiled GeoTIFF when too large for a PNG (picture_file),
   // else through a tiled temporary in the staging folder (removed before it
   // is committed), then to PNG row by row.
-  void pictures_pass(const GreytoneMap& map) {
+  void pictures_pass(const GreytoneMap& map, const std::string& slant_dir) {
     const GroundRangeGrid& gg = sim().ground_grid;
+    if (group_.rank() != 0) {  // blocks computed for rank 0
+      picture_blocks(map, slant_dir, nullptr, nullptr);
+      return;
+    }
     const std::string slant_file =
         picture_file("slant_range", bins(), lines(), info_.max_png_pixels);
     const std::string ground_file =
@@ -515,7 +781,7 @@ class StreamRun {
     {
       ByteWriter slant_grey_out = open_picture(slant_file, bins());
       ByteWriter ground_grey_out = open_picture(ground_file, gg.count);
-      picture_blocks(map, *slant_grey_out, *ground_grey_out);
+      picture_blocks(map, slant_dir, slant_grey_out.get(), ground_grey_out.get());
       slant_grey_out->close();
       ground_grey_out->close();
     }
@@ -526,46 +792,121 @@ class StreamRun {
     }
   }
 
+  // A block of image lines' greytones in slant and ground range (any rank).
+  struct PictureBlock {
+    int k0 = 0, lines = 0;
+    std::vector<std::uint8_t> slant, ground;
+  };
+
   // The speckled power read back block by block: its greytones in slant and
-  // ground range (render_slar).
-  void picture_blocks(const GreytoneMap& map, GeoTiffBlockWriter<std::uint8_t>& slant_out,
-                      GeoTiffBlockWriter<std::uint8_t>& ground_out) {
+  // ground range (render_slar), computed on every rank and written by rank 0
+  // (slant_out, ground_out; null on the other ranks) in line order.
+  void picture_blocks(const GreytoneMap& map, const std::string& slant_dir,
+                      GeoTiffBlockWriter<std::uint8_t>* slant_out,
+                      GeoTiffBlockWriter<std::uint8_t>* ground_out) {
     const SlarImage& img = sim().image;
     const GroundRangeGrid& gg = sim().ground_grid;
-    GdalDataset sp_ds = open_raster(dir_->path("speckled_power_slant.tif").string());
-    GdalDataset mask_ds = open_raster(dir_->path("mask_slant.tif").string());
-    std::vector<std::uint8_t> no_data, grey, ground_no_data, ground_grey;
-    for (int k0 = 0; k0 < lines(); k0 += block_lines()) {
-      const int n = std::min(block_lines(), lines() - k0);
-      const std::size_t np = sz(n) * sz(bins());
-      speckled_.resize(np);
-      mask_.resize(np);
-      read_rows(handle(sp_ds), k0, n, speckled_.data(), GDT_Float32, "speckled_power_slant.tif");
-      read_rows(handle(mask_ds), k0, n, mask_.data(), GDT_Byte, "mask_slant.tif");
-      no_data.resize(np);
-      for (std::size_t i = 0; i < np; ++i) no_data[i] = (mask_[i] & pixel_flag::kNoData) ? 1 : 0;
-      grey.resize(np);
-      greytones(speckled_, grey, map, no_data);
-      slant_out.write(grey.data(), n);
-      const std::vector<float> ground_power = to_ground_range(speckled_, n, img.range, gg);
-      const std::vector<std::uint8_t> ground_mask =
-          to_ground_range_nearest(mask_, n, img.range, gg, pixel_flag::kNoData);
-      ground_no_data.resize(ground_mask.size());
-      for (std::size_t i = 0; i < ground_mask.size(); ++i)
-        ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
-      ground_grey.resize(ground_power.size());
-      greytones(ground_power, ground_grey, map, ground_no_data);
-      ground_out.write(ground_grey.data(), n);
-      bar_->advance(0);
-    }
+    const std::filesystem::path dir(slant_dir);
+    std::optional<GdalDataset> sp_ds, mask_ds;  // at the first block (see geocoded_pass)
+    std::vector<std::uint8_t> no_data, ground_no_data;
+    const int blocks = (lines() + block_lines() - 1) / block_lines();
+    detail::run_blocks_in_order<PictureBlock>(
+        group_, blocks, schedule_,
+        [&](int b) {
+          if (!sp_ds) {
+            sp_ds.emplace(open_raster((dir / "speckled_power_slant.tif").string()));
+            mask_ds.emplace(open_raster((dir / "mask_slant.tif").string()));
+          }
+          PictureBlock k;
+          k.k0 = b * block_lines();
+          k.lines = std::min(block_lines(), lines() - k.k0);
+          const int n = k.lines;
+          const std::size_t np = sz(n) * sz(bins());
+          speckled_.resize(np);
+          mask_.resize(np);
+          read_rows(handle(*sp_ds), k.k0, n, speckled_.data(), GDT_Float32,
+                    "speckled_power_slant.tif");
+          read_rows(handle(*mask_ds), k.k0, n, mask_.data(), GDT_Byte, "mask_slant.tif");
+          no_data.resize(np);
+          for (std::size_t i = 0; i < np; ++i)
+            no_data[i] = (mask_[i] & pixel_flag::kNoData) ? 1 : 0;
+          k.slant.resize(np);
+          greytones(speckled_, k.slant, map, no_data);
+          const std::vector<float> ground_power = to_ground_range(speckled_, n, img.range, gg);
+          const std::vector<std::uint8_t> ground_mask =
+              to_ground_range_nearest(mask_, n, img.range, gg, pixel_flag::kNoData);
+          ground_no_data.resize(ground_mask.size());
+          for (std::size_t i = 0; i < ground_mask.size(); ++i)
+            ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
+          k.ground.resize(ground_power.size());
+          greytones(ground_power, k.ground, map, ground_no_data);
+          return k;
+        },
+        [](const PictureBlock& k, std::vector<char>& out) {
+          const std::size_t sizes[4] = {std::size_t(k.k0), std::size_t(k.lines), k.slant.size(),
+                                        k.ground.size()};
+          const char* h = reinterpret_cast<const char*>(sizes);
+          out.insert(out.end(), h, h + sizeof(sizes));
+          out.insert(out.end(), k.slant.begin(), k.slant.end());
+          out.insert(out.end(), k.ground.begin(), k.ground.end());
+        },
+        [](const char* p, std::size_t n) {
+          std::size_t sizes[4] = {};
+          RIS_CHECK(n >= sizeof(sizes));
+          std::memcpy(sizes, p, sizeof(sizes));
+          RIS_CHECK(n == sizeof(sizes) + sizes[2] + sizes[3]);
+          PictureBlock k;
+          k.k0 = static_cast<int>(sizes[0]);
+          k.lines = static_cast<int>(sizes[1]);
+          const char* at = p + sizeof(sizes);
+          k.slant.assign(at, at + sizes[2]);
+          k.ground.assign(at + sizes[2], at + sizes[2] + sizes[3]);
+          return k;
+        },
+        [&](int, PictureBlock& k) {
+          slant_out->write(k.slant.data(), k.lines);
+          ground_out->write(k.ground.data(), k.lines);
+          bar_->advance(0);
+        });
   }
 
   // ---- Pass 2b: geocoded products, scene rows top down ------------------
-  void geocoded_pass(const GreytoneMap& map) {
-    GdalDataset sp_ds = open_raster(dir_->path("speckled_power_slant.tif").string());
-    GdalDataset mask_ds = open_raster(dir_->path("mask_slant.tif").string());
-    FloatWriter power_out = open_writer<float>("geocoded_power.tif", grid().cols, grid().rows);
-    ByteWriter grey_out = open_writer<std::uint8_t>("geocoded_grey.tif", grid().cols, grid().rows);
+  // (median, folder) as rank 0 has them, on every rank.
+  std::pair<double, std::string> share_from_rank0(double median, const std::string& folder) {
+    if (group_.size() == 1) return {median, folder};
+    std::array<char, sizeof(double)> m_bytes{};
+    std::memcpy(m_bytes.data(), &median, sizeof(double));
+    const std::string text = std::string(m_bytes.data(), m_bytes.size()) + folder;
+    const std::vector<char> mine(text.begin(), text.end());
+    const std::vector<char> root = group_.all_gather(mine).at(0);
+    RIS_CHECK(root.size() >= sizeof(double));
+    double m = 0.0;
+    std::memcpy(&m, root.data(), sizeof(double));
+    return {m, std::string(root.data() + sizeof(double), root.size() - sizeof(double))};
+  }
+
+  // A block of scene rows geocoded (any rank) for rank 0 to write.
+  struct GeoBlock {
+    int r0 = 0, rows = 0;
+    std::vector<float> power;
+    std::vector<std::uint8_t> grey;
+  };
+
+  // Every rank geocodes blocks of scene rows, reading the slant products
+  // rank 0 wrote into `slant_dir` (its staging folder: on a file system
+  // every rank sees); rank 0 writes them in row order.
+  void geocoded_pass(const GreytoneMap& map, const std::string& slant_dir) {
+    const std::filesystem::path dir(slant_dir);
+    // Opened at a rank's first block, so that a rank that cannot read them
+    // (an output folder not on a shared file system) fails through the
+    // schedule: rank 0 reports it and removes its staging folder.
+    std::optional<GdalDataset> sp_ds, mask_ds;
+    FloatWriter power_out;
+    ByteWriter grey_out;
+    if (group_.rank() == 0) {
+      power_out = open_writer<float>("geocoded_power.tif", grid().cols, grid().rows);
+      grey_out = open_writer<std::uint8_t>("geocoded_grey.tif", grid().cols, grid().rows);
+    }
     // Scene rows a tile row at a time (pass 1's window is freed).
     const int block_rows = scene_block_rows_;
     const std::size_t cap = sz(block_rows) * sz(grid().cols);
@@ -574,20 +915,64 @@ class StreamRun {
     ok_.resize(z_.size());
     pix_line_.resize(cap);
     pix_bin_.resize(cap);
-    std::vector<float> out_power(cap);
-    std::vector<std::uint8_t> out_grey(cap);
-    for (int r0 = 0; r0 < grid().rows; r0 += block_rows) {
-      const int n = std::min(block_rows, grid().rows - r0);
-      const std::size_t nc = sz(n) * sz(grid().cols);
-      in_.read(r0, n, 0, grid().cols, z_.data(), cat_.data(), ok_.data());
-      std::fill(out_power.begin(), out_power.begin() + static_cast<std::ptrdiff_t>(nc), kNaNf);
-      std::fill(out_grey.begin(), out_grey.begin() + static_cast<std::ptrdiff_t>(nc),
-                std::uint8_t{0});
-      geocode_rows(map, r0, n, sp_ds, mask_ds, out_power.data(), out_grey.data());
-      power_out->write(out_power.data(), n);
-      grey_out->write(out_grey.data(), n);
-      bar_->advance(static_cast<std::int64_t>(nc));
-    }
+    const int blocks = (grid().rows + block_rows - 1) / block_rows;
+    geo_.blocks = blocks;
+    detail::run_blocks_in_order<GeoBlock>(
+        group_, blocks, schedule_,
+        [&](int b) {
+          const double t0 = process_cpu_seconds();
+          if (b == fail_geo_block_) {
+            throw std::runtime_error(
+                fmt::format("geocoding block {}: a failure injected by RIS_FAIL_GEO_BLOCK", b));
+          }
+          if (!sp_ds) {
+            sp_ds.emplace(open_raster((dir / "speckled_power_slant.tif").string()));
+            mask_ds.emplace(open_raster((dir / "mask_slant.tif").string()));
+          }
+          GeoBlock k;
+          k.r0 = b * block_rows;
+          k.rows = std::min(block_rows, grid().rows - k.r0);
+          const std::size_t nc = sz(k.rows) * sz(grid().cols);
+          in_.read(k.r0, k.rows, 0, grid().cols, z_.data(), cat_.data(), ok_.data());
+          k.power.assign(nc, kNaNf);
+          k.grey.assign(nc, std::uint8_t{0});
+          geocode_rows(map, k.r0, k.rows, *sp_ds, *mask_ds, k.power.data(), k.grey.data());
+          geo_.compute_cpu += process_cpu_seconds() - t0;
+          ++geo_.computed;
+          return k;
+        },
+        [](const GeoBlock& k, std::vector<char>& out) {
+          const int head[2] = {k.r0, k.rows};
+          const char* h = reinterpret_cast<const char*>(head);
+          out.insert(out.end(), h, h + sizeof(head));
+          const char* p = reinterpret_cast<const char*>(k.power.data());
+          out.insert(out.end(), p, p + k.power.size() * sizeof(float));
+          const char* g = reinterpret_cast<const char*>(k.grey.data());
+          out.insert(out.end(), g, g + k.grey.size());
+        },
+        [&](const char* p, std::size_t n) {
+          GeoBlock k;
+          int head[2] = {};
+          RIS_CHECK(n >= sizeof(head));
+          std::memcpy(head, p, sizeof(head));
+          k.r0 = head[0];
+          k.rows = head[1];
+          const std::size_t nc = sz(k.rows) * sz(grid().cols);
+          RIS_CHECK(n == sizeof(head) + nc * (sizeof(float) + 1));
+          k.power.resize(nc);
+          k.grey.resize(nc);
+          std::memcpy(k.power.data(), p + sizeof(head), nc * sizeof(float));
+          std::memcpy(k.grey.data(), p + sizeof(head) + nc * sizeof(float), nc);
+          return k;
+        },
+        [&](int, GeoBlock& k) {
+          const double t0 = process_cpu_seconds();
+          power_out->write(k.power.data(), k.rows);
+          grey_out->write(k.grey.data(), k.rows);
+          bar_->advance(static_cast<std::int64_t>(k.power.size()));
+          geo_.consume_cpu += process_cpu_seconds() - t0;
+        });
+    if (group_.rank() != 0) return;
     power_out->close();
     grey_out->close();
   }
@@ -651,6 +1036,10 @@ class StreamRun {
   }
 
   const SceneStreamReader in_;
+  ProcessGroup& group_ = process_group();
+  const detail::BlockSchedule schedule_;
+  const int fail_block_;      // RIS_FAIL_BLOCK, -1: none
+  const int fail_geo_block_;  // RIS_FAIL_GEO_BLOCK, -1: none
   const SlarStreamOptions& options_;
   const SlarRunInfo& info_;
   const std::filesystem::path out_dir_;
@@ -662,6 +1051,7 @@ class StreamRun {
   std::optional<ProgressBar> bar_;
   std::optional<StagedDirectory> dir_;
   std::chrono::steady_clock::time_point mark_;
+  double cpu_mark_ = 0.0;
   int cross_cells_ = 0;
   int scene_block_rows_ = 0;
   SceneSummary ss_;
@@ -673,6 +1063,13 @@ class StreamRun {
   std::vector<float> z_;
   std::vector<std::uint16_t> cat_;
   std::vector<std::uint8_t> ok_;
+  std::vector<float> window_incidence_;
+  std::vector<std::uint8_t> window_mask_;
+  std::vector<LineBlock> spare_;  // pass 1's consumed blocks, their buffers reused
+  struct {
+    int blocks = 0, computed = 0;
+    double compute_cpu = 0.0, consume_cpu = 0.0;
+  } geo_;  // pass 2b's CPU time on this rank
   std::vector<float> mean_, speckled_;
   std::vector<std::uint8_t> mask_;
   std::vector<std::int32_t> pix_line_, pix_bin_;

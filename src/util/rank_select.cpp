@@ -21,6 +21,27 @@ std::uint64_t FloatRankSelect::total() const {
   return n;
 }
 
+std::vector<std::uint64_t> FloatRankSelect::counters() const {
+  if (wanted_.empty()) return top_;
+  std::vector<std::uint64_t> all;
+  all.reserve(wanted_.size() * 65536);
+  for (const Wanted& w : wanted_) all.insert(all.end(), w.low.begin(), w.low.end());
+  return all;
+}
+
+void FloatRankSelect::set_counters(const std::vector<std::uint64_t>& sums) {
+  if (wanted_.empty()) {
+    RIS_CHECK(sums.size() == top_.size());
+    top_ = sums;
+    return;
+  }
+  RIS_CHECK(sums.size() == wanted_.size() * 65536);
+  for (std::size_t i = 0; i < wanted_.size(); ++i) {
+    const auto at = static_cast<std::ptrdiff_t>(i * 65536);
+    wanted_[i].low.assign(sums.begin() + at, sums.begin() + at + 65536);
+  }
+}
+
 void FloatRankSelect::select(const std::vector<std::uint64_t>& ranks) {
   wanted_.clear();
   for (std::uint64_t rank : ranks) {

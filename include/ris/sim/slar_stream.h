@@ -26,9 +26,17 @@
 //      elevation's second pass;
 //   1b the mean power read back for the exact median (auto greytone
 //      reference), when the radar asks for it;
+//   2b the geocoded products, scene rows top down, reading back the
+//      speckled power;
 //   2  greytones (slant and ground range, into PNGs through tiled
-//      temporaries) and the geocoded products, scene rows top down, reading
-//      back the speckled power.
+//      temporaries).
+//
+// Under MPI (`mpirun -np N ris simulate --stream`; ris/util/process_group.h,
+// docs/scale.md) every rank reads its own windows of the scene: pass 0 is
+// split by rows and reduced exactly, the blocks of passes 1, 2b and 2 are
+// computed on any rank (src/sim/block_schedule.h) and consumed by rank 0 in
+// order (azimuth integration, fading, every write), and pass 1b and the
+// PNGs run on rank 0: the products are the single process's bytes.
 //
 // It runs SLAR tracks along a grid axis (heading 0, 90, 180 or 270 deg, one
 // azimuth line per cell row or column: fused_slar_applies); other tracks,
@@ -74,6 +82,12 @@ struct SlarStreamSummary {
   int blocks = 0;
   // Wall time of each pass (name, seconds), for the user and benchmarks.
   std::vector<std::pair<std::string, double>> stage_seconds;
+  // CPU time (user + system, every thread of this process) of each pass,
+  // in the same order; and parts of passes 1 and 2b on rank 0 (what rank 0
+  // computed, and what it alone does: integrating and writing), for the
+  // cost model of docs/scale.md.
+  std::vector<double> stage_cpu_seconds;
+  std::vector<std::pair<std::string, double>> cpu_parts;
 };
 
 // Runs the simulation and writes every product of write_slar_products into

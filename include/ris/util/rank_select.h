@@ -43,6 +43,16 @@ class FloatRankSelect {
   // After pass 2: the value at ranks[i].
   float value(std::size_t i) const;
 
+  // The counters of the pass under way (before select(): pass 1's bucket
+  // counts; after: pass 2's counts for each wanted rank, one after the
+  // other), so that selectors that each counted a part of the values (the
+  // ranks of a distributed run: ris/util/process_group.h) are summed
+  // exactly: add every part's counters element-wise and set the sums on
+  // each (then select() and value() give what one selector of all the
+  // values would).
+  std::vector<std::uint64_t> counters() const;
+  void set_counters(const std::vector<std::uint64_t>& sums);
+
   // Order-preserving encoding of a float's bits (detail::float_order_key).
   static std::uint32_t key(float v);
 

@@ -1,0 +1,187 @@
+// `mpirun -np N ris simulate ... --stream` (docs/scale.md): every product the
+// same bytes as a single process, for SLAR along the grid (heading 0) and
+// across it (heading 90) and the incoherent SAR; a failing rank fails the
+// whole run and leaves no output. Skipped when ris was built without MPI.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "build_paths.h"
+#include "test_util.h"
+
+namespace ris {
+namespace {
+
+namespace fs = std::filesystem;
+
+#define RIS_REQUIRE_MPI()                                                             \
+  if (std::string(test::mpiexec()).empty()) {                                         \
+    GTEST_SKIP() << "ris was built without MPI (install libopenmpi-dev openmpi-bin)"; \
+  }
+
+// mpirun as these tests run it: more ranks than cores (--oversubscribe),
+// as root in a container (--allow-run-as-root), shared memory without the
+// ptrace-based single copy a container may forbid.
+std::string mpirun(int ranks, const std::string& env = "") {
+  return "env OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_rmaps_base_oversubscribe=1 " +
+         env + " " + test::mpiexec() + " --oversubscribe --allow-run-as-root -np " +
+         std::to_string(ranks) + " ";
+}
+
+test::RunResult run_shell(const std::string& cmd) {
+  test::TempDir tmp;
+  const std::string log = (tmp / "out.txt").string();
+  const int status = std::system((cmd + " > " + log + " 2>&1").c_str());
+  test::RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.output = test::read_file(log);
+  return r;
+}
+
+// A shipped radar file with its text edited (heading, coherence).
+std::string radar_with(const test::TempDir& dir, const std::string& name, const std::string& from,
+                       const std::string& old_text, const std::string& new_text) {
+  std::string text = test::read_file(fs::path(test::data_dir()) / "radars" / from);
+  const auto at = text.find(old_text);
+  EXPECT_NE(at, std::string::npos) << old_text;
+  if (at != std::string::npos) text.replace(at, old_text.size(), new_text);
+  const fs::path p = dir / name;
+  test::write_file(p, text);
+  return p.string();
+}
+
+// The products of `out` and `ref`: the same files, byte for byte.
+void expect_same_files(const fs::path& ref, const fs::path& out, const std::string& tag) {
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(ref)) {
+    const fs::path other = out / e.path().filename();
+    ASSERT_TRUE(fs::exists(other)) << tag << ": " << other;
+    EXPECT_TRUE(test::read_file(e.path()) == test::read_file(other))
+        << tag << ": " << e.path().filename();
+    ++files;
+  }
+  int others = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++others;
+  EXPECT_EQ(files, others) << tag;
+  EXPECT_GE(files, 10) << tag;
+}
+
+// A small noise scene (300 x 200 cells of 10 m), run by one process and by
+// 1, 2 and 3 ranks in blocks of 16 lines (13 or 19 blocks).
+void expect_ranks_give_single_process_bytes(const std::string& radar, const std::string& tag) {
+  test::TempDir dir;
+  const std::string scene = (dir / "scene.tif").string();
+  const auto s = test::run_ris(
+      "scene fractal --generator noise --size 300x200 --cell-size 10 --relief 300 --base 50 -o " +
+      scene);
+  ASSERT_EQ(s.exit_code, 0) << s.output;
+  const std::string args = " simulate --quiet --threads 1 --block-lines 16 --scene " + scene +
+                           " --radar " + radar + " --out ";
+  const auto one = test::run_ris(args + (dir / "one").string());
+  ASSERT_EQ(one.exit_code, 0) << tag << "\n" << one.output;
+  for (int ranks : {1, 2, 3}) {
+    for (const char* schedule : {"dynamic", "interleaved"}) {
+      if (ranks == 1 && std::string(schedule) == "interleaved") continue;
+      const fs::path out = dir / ("np" + std::to_string(ranks) + schedule);
+      const auto r = run_shell(mpirun(ranks, std::string("RIS_MPI_SCHEDULE=") + schedule) +
+                               test::ris_exe() + args + out.string());
+      const std::string t = tag + ", " + std::to_string(ranks) + " ranks, " + schedule;
+      ASSERT_EQ(r.exit_code, 0) << t << "\n" << r.output;
+      expect_same_files(dir / "one", out, t);
+    }
+  }
+}
+
+TEST(MpiCli, SlarAlongTheGridGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "seed-fig4-5.toml", "heading = \"0 deg\"", "heading = \"0 deg\""),
+      "SLAR heading 0");
+}
+
+TEST(MpiCli, SlarAcrossTheGridGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "seed-fig4-5.toml", "heading = \"0 deg\"", "heading = \"90 deg\""),
+      "SLAR heading 90");
+}
+
+TEST(MpiCli, IncoherentSarGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "sar-x-band-stripmap.toml", "coherent = true", "coherent = false"),
+      "incoherent SAR");
+}
+
+// No folder beside `out` but the inputs: neither the output nor a staging
+// folder left behind.
+void expect_nothing_written(const test::TempDir& dir, const std::string& tag) {
+  for (const auto& e : fs::directory_iterator(dir.path())) {
+    const std::string name = e.path().filename().string();
+    EXPECT_TRUE(name == "scene.tif" || name == "tall.tif" || name.ends_with(".toml"))
+        << tag << ": left " << name;
+  }
+}
+
+TEST(MpiCli, AFailingRankFailsTheRunWithoutOutput) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  const std::string scene = (dir / "scene.tif").string();
+  ASSERT_EQ(test::run_ris("scene fractal --generator noise --size 300x200 --cell-size 10 "
+                          "--relief 300 --base 50 -o " +
+                          scene)
+                .exit_code,
+            0);
+  const std::string args = std::string(test::ris_exe()) +
+                           " simulate --quiet --threads 1 --block-lines 16 --scene " + scene +
+                           " --out " + (dir / "out").string();
+  // Block 1 fails on rank 1 (interleaved: block b on rank b mod 2), in pass
+  // 1, after rank 0 has staged its output folder.
+  auto r = run_shell(mpirun(2, "RIS_MPI_SCHEDULE=interleaved RIS_FAIL_BLOCK=1") + args);
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("rank 1 of 2 failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("RIS_FAIL_BLOCK"), std::string::npos) << r.output;
+  expect_nothing_written(dir, "a worker's block");
+  // A block of the geocoding pass (2b) on rank 1, after rank 0 has written
+  // pass 1's products into its staging folder (a scene of 600 rows: 3
+  // geocoding blocks of 256 rows).
+  const std::string tall = (dir / "tall.tif").string();
+  ASSERT_EQ(test::run_ris("scene fractal --generator noise --size 100x600 --cell-size 10 "
+                          "--relief 300 --base 50 -o " +
+                          tall)
+                .exit_code,
+            0);
+  r = run_shell(mpirun(2, "RIS_MPI_SCHEDULE=interleaved RIS_FAIL_GEO_BLOCK=1") + test::ris_exe() +
+                " simulate --quiet --threads 1 --block-lines 64 --scene " + tall + " --out " +
+                (dir / "out").string());
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("rank 1 of 2 failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("RIS_FAIL_GEO_BLOCK"), std::string::npos) << r.output;
+  expect_nothing_written(dir, "a worker's geocoding block");
+  // The same block on rank 0 (dynamic; 1 rank).
+  r = run_shell(mpirun(1, "RIS_FAIL_BLOCK=1") + args);
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("RIS_FAIL_BLOCK"), std::string::npos) << r.output;
+  expect_nothing_written(dir, "rank 0's block");
+  // A bad input only rank 1 reads in pass 0: a backscatter table without
+  // the scene's categories fails on every rank that meets one.
+  test::write_file(dir / "bs.toml", "");
+  r = run_shell(mpirun(2) + args + " --backscatter " + (dir / "bs.toml").string());
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  expect_nothing_written(dir, "bad backscatter");
+  // A run over several ranks without --stream is refused (each rank would
+  // write the whole output).
+  r = run_shell(mpirun(2) + test::ris_exe() + " simulate --quiet --scene " + scene + " --out " +
+                (dir / "out").string());
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("--stream"), std::string::npos) << r.output;
+  expect_nothing_written(dir, "no --stream");
+}
+
+}  // namespace
+}  // namespace ris
