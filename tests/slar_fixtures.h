@@ -57,8 +57,10 @@ inline Track north_track(const Scene& s, double altitude_m, double near_m) {
 // same bytes.
 template <typename Vector>
 bool same_bytes(const Vector& a, const Vector& b) {
+  // Empty vectors may hold null data, which memcmp must not be given (UBSan).
   return a.size() == b.size() &&
-         std::memcmp(a.data(), b.data(), a.size() * sizeof(typename Vector::value_type)) == 0;
+         (a.empty() ||
+          std::memcmp(a.data(), b.data(), a.size() * sizeof(typename Vector::value_type)) == 0);
 }
 
 // A straight track from the origin, length_m long at heading_rad (clockwise
