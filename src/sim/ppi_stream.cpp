@@ -577,6 +577,13 @@ class PpiStreamRun {
     sinks.mask->write(mask_.data(), m);
   }
 
+  // B-scope rays read back at a time by passes 1b and 2: up to a tile's
+  // height (256), within an eighth of the budget (~10 bytes a pixel).
+  int readback_rays() const {
+    const std::int64_t fit = options_.memory_budget_bytes / 8 / (std::int64_t(bins()) * 10);
+    return std::max(summary_.block_rays, static_cast<int>(std::clamp<std::int64_t>(fit, 1, 256)));
+  }
+
   // ---- Pass 1b: the median mean power (auto greytone reference) ---------
   double median_mean_power() {
     const std::uint64_t n_power = power_.total();
@@ -586,7 +593,7 @@ class PpiStreamRun {
     power_.select(median_ranks(n_power));
     GdalDataset mean_ds = open_raster(dir_->path("mean_power_bscope.tif").string());
     GdalDataset mask_ds = open_raster(dir_->path("mask_bscope.tif").string());
-    const int step = std::max(1, summary_.block_rays);
+    const int step = readback_rays();
     for (int k0 = 0; k0 < scan_rays(); k0 += step) {
       const int n = std::min(step, scan_rays() - k0);
       const std::size_t np = sz(n) * sz(bins());
@@ -610,7 +617,7 @@ class PpiStreamRun {
       GeoTiffBlockWriter<std::uint8_t> out(tmp, bins(), scan_rays(), {""}, nullptr);
       GdalDataset sp_ds = open_raster(dir_->path("speckled_power_bscope.tif").string());
       GdalDataset mask_ds = open_raster(dir_->path("mask_bscope.tif").string());
-      const int step = std::max(1, summary_.block_rays);
+      const int step = readback_rays();
       std::vector<std::uint8_t> no_data, grey;
       for (int k0 = 0; k0 < scan_rays(); k0 += step) {
         const int n = std::min(step, scan_rays() - k0);
