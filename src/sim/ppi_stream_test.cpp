@@ -172,6 +172,33 @@ TEST(PpiStream, RefusesWhatTheInMemoryRunRefuses) {
   for (const char* d : {"a", "b", "c", "d"}) EXPECT_FALSE(fs::exists(dir / d)) << d;
 }
 
+// Through the command line: `ris simulate --stream` (and --block-lines, rays
+// then) with a PPI radar streams, and writes the in-memory run's files.
+TEST(PpiStream, CommandLineStreamsPpiRuns) {
+  test::TempDir dir;
+  const std::string scene = (dir / "s.tif").string();
+  ASSERT_EQ(test::run_ris("scene fractal --quiet --size 200x140 --cell-size 30 --relief 300 "
+                          "--patches 1,2,3 -o " +
+                          scene)
+                .exit_code,
+            0);
+  for (const char* name : {"ppi-ground-mast-30m", "ppi-airborne-nav-10000ft"}) {
+    const std::string common = fmt::format("simulate --quiet --scene {} --radar {}/radars/{}.toml",
+                                           scene, ris::test::data_dir(), name);
+    const fs::path mem = dir / "mem", streamed = dir / "streamed", blocks = dir / "blocks";
+    ASSERT_EQ(test::run_ris(common + " --out " + mem.string()).exit_code, 0) << name;
+    const test::RunResult s = test::run_ris(common + " --stream --out " + streamed.string());
+    ASSERT_EQ(s.exit_code, 0) << name << ": " << s.output;
+    EXPECT_NE(s.output.find("streamed in 1 blocks"), std::string::npos) << s.output;
+    const test::RunResult b = test::run_ris(common + " --block-lines 50 --out " + blocks.string());
+    ASSERT_EQ(b.exit_code, 0) << name << ": " << b.output;
+    EXPECT_NE(b.output.find("blocks of 50 rays"), std::string::npos) << b.output;
+    expect_same_folders(mem, streamed, std::string(name) + " --stream");
+    expect_same_folders(mem, blocks, std::string(name) + " --block-lines 50");
+    for (const fs::path& p : {mem, streamed, blocks}) fs::remove_all(p);
+  }
+}
+
 // Runs ris with the arguments; returns its peak resident set in MiB (-1 on
 // failure), as tests/stream_memory_test.cpp.
 double peak_rss_mib(const std::vector<std::string>& args) {
