@@ -213,6 +213,33 @@ TEST(PpiStream, CommandLineStreamsPpiRuns) {
   }
 }
 
+// Under mpirun with more than one rank a streamed PPI run is refused (every
+// rank would write the folder; its rays are not split over ranks yet), and
+// nothing is written; one rank runs it.
+TEST(PpiStream, MpiWithSeveralRanksIsRefused) {
+  if (std::string(test::mpiexec()).empty()) GTEST_SKIP() << "ris was built without MPI";
+  test::TempDir dir;
+  const std::string scene = (dir / "s.tif").string();
+  ASSERT_EQ(
+      test::run_ris("scene fractal --quiet --size 100x70 --cell-size 60 -o " + scene).exit_code, 0);
+  const std::string log = (dir / "log.txt").string();
+  const auto run = [&](int ranks, const fs::path& out) {
+    const std::string cmd = fmt::format(
+        "env OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_rmaps_base_oversubscribe=1 "
+        "{} --oversubscribe --allow-run-as-root -np {} {} simulate --quiet --scene {} --radar "
+        "{}/radars/ppi-ground-mast-30m.toml --stream --out {} > {} 2>&1",
+        test::mpiexec(), ranks, test::ris_exe(), scene, test::data_dir(), out.string(), log);
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  EXPECT_NE(run(2, dir / "two"), 0);
+  EXPECT_NE(test::read_file(log).find("not split over MPI ranks"), std::string::npos)
+      << test::read_file(log);
+  EXPECT_FALSE(fs::exists(dir / "two"));
+  EXPECT_EQ(run(1, dir / "one"), 0) << test::read_file(log);
+  EXPECT_TRUE(fs::exists(dir / "one" / "ppi_scope.png"));
+}
+
 // Runs ris with the arguments; returns its peak resident set in MiB (-1 on
 // failure), as tests/stream_memory_test.cpp.
 double peak_rss_mib(const std::vector<std::string>& args) {

@@ -157,6 +157,11 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
     check_out_dir(r, res.radar.mode, probe.grid().rows, probe.grid().cols);
   }
   if (res.radar.mode == RadarMode::ppi) {  // rays in blocks (ris/sim/ppi_stream.h)
+    if (process_group().size() > 1) {
+      throw InputError("", "mpirun",
+                       "a streamed PPI run is not split over MPI ranks yet; run it as one "
+                       "process (without mpirun, or with -np 1)");
+    }
     PpiStreamOptions o;
     o.block_rays = r.block_lines;
     o.quiet = r.quiet;
