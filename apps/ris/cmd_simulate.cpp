@@ -122,6 +122,18 @@ void print_acquisition(const RunRequest& r, const RunResult& res) {
 }
 
 void print_streamed(const RunRequest& r, const RunResult& res) {
+  if (res.ppi_streamed) {
+    const PpiStreamSummary& p = *res.ppi_streamed;
+    fmt::print(
+        "simulated {} ({} x {} cells, streamed in {} blocks of {} rays, {} scene windows) "
+        "with {}\n",
+        r.scene_path, p.grid.cols, p.grid.rows, p.blocks, p.block_rays, p.windows, r.radar_path);
+    fmt::print("  B-scope: {} rays x {} range bins; scope {} x {} pixels\n", p.sim.bscope.lines,
+               p.sim.bscope.bins, p.sim.scope_grid.size, p.sim.scope_grid.size);
+    print_geometry_counts(p.sim.geometry.rays);
+    for (const auto& [name, t] : p.stage_seconds) fmt::print("  {:.2f} s  {}\n", t, name);
+    return;
+  }
   const SlarStreamSummary& s = *res.streamed;
   fmt::print("simulated {} ({} x {} cells, streamed in {} blocks of {} lines) with {}\n",
              r.scene_path, s.grid.cols, s.grid.rows, s.blocks, s.block_lines, r.radar_path);

@@ -11,10 +11,7 @@
 
 namespace ris {
 
-namespace {
-
-// The B-scope index (ray * bins + bin) of a scope pixel, or -1.
-std::int64_t source_index(const PpiScopeGrid& g, int row, int col) {
+std::int64_t ppi_scope_source(const PpiScopeGrid& g, int row, int col) {
   const double e = g.east_m(col), n = g.north_m(row);
   const double r = std::hypot(e, n);
   const double R = g.presentation == PpiPresentation::slant ? r : std::hypot(r, g.depth_m);
@@ -32,6 +29,14 @@ std::int64_t source_index(const PpiScopeGrid& g, int row, int col) {
   return static_cast<std::int64_t>(ray) * g.range.count + static_cast<std::int64_t>(pos);
 }
 
+bool on_range_ring(const PpiScopeGrid& g, int row, int col, double spacing_m) {
+  const double r = std::hypot(g.east_m(col), g.north_m(row));
+  const double k = std::round(r / spacing_m);
+  return k >= 1.0 && std::abs(r - k * spacing_m) <= 0.5 * g.pixel_m;
+}
+
+namespace {
+
 template <typename T>
 std::vector<T> convert(std::span<const T> bscope, const PpiScopeGrid& g, T fill) {
   RIS_CHECK(bscope.size() ==
@@ -40,7 +45,7 @@ std::vector<T> convert(std::span<const T> bscope, const PpiScopeGrid& g, T fill)
 #pragma omp parallel for schedule(static)
   for (int row = 0; row < g.size; ++row) {
     for (int col = 0; col < g.size; ++col) {
-      const std::int64_t i = source_index(g, row, col);
+      const std::int64_t i = ppi_scope_source(g, row, col);
       if (i >= 0) {
         out[static_cast<std::size_t>(row) * static_cast<std::size_t>(g.size) +
             static_cast<std::size_t>(col)] = bscope[static_cast<std::size_t>(i)];
@@ -97,9 +102,7 @@ void draw_range_rings(std::span<std::uint8_t> grey, const PpiScopeGrid& g, doubl
   if (!(spacing_m > 0.0)) return;
   for (int row = 0; row < g.size; ++row) {
     for (int col = 0; col < g.size; ++col) {
-      const double r = std::hypot(g.east_m(col), g.north_m(row));
-      const double k = std::round(r / spacing_m);
-      if (k >= 1.0 && std::abs(r - k * spacing_m) <= 0.5 * g.pixel_m) {
+      if (on_range_ring(g, row, col, spacing_m)) {
         grey[static_cast<std::size_t>(row) * static_cast<std::size_t>(g.size) +
              static_cast<std::size_t>(col)] = value;
       }

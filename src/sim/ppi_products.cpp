@@ -20,12 +20,17 @@ namespace ris {
 
 nlohmann::json ppi_metadata(const Scene& scene, const PpiSimulation& sim, const PpiPictures& pic,
                             const SlarRunInfo& info) {
+  return ppi_metadata(summarise_scene(scene), sim, pic, info);
+}
+
+nlohmann::json ppi_metadata(const SceneSummary& scene, const PpiSimulation& sim,
+                            const PpiPictures& pic, const SlarRunInfo& info) {
   using nlohmann::json;
   const PpiGeometry& g = sim.geometry;
   const PpiScopeGrid& sg = sim.scope_grid;
   json out = run_header_json("ppi");
-  out["inputs"] = run_inputs_json(summarise_scene(scene), sim.radar, sim.categories,
-                                  sim.category_names, sim.backscatter_description, info);
+  out["inputs"] = run_inputs_json(scene, sim.radar, sim.categories, sim.category_names,
+                                  sim.backscatter_description, info);
   out.update(
       json{{"derived",
             {{"radar", derived_to_json(sim.derived)},
@@ -77,6 +82,29 @@ const std::vector<std::string_view>& ppi_product_stems() {
   return stems;
 }
 
+PpiRasterSpecs ppi_raster_specs(const Scene& grid, const PpiSimulation& sim) {
+  const SlarImage& b = sim.bscope;
+  const PpiScopeGrid& sg = sim.scope_grid;
+  PpiRasterSpecs s;
+  s.bscope = {{"RIS_ROWS", "rays, clockwise from the scan start"},
+              {"RIS_COLUMNS", "slant-range bins, near first"},
+              {"RIS_NEAR_SLANT_RANGE_M", fmt::format("{:.6f}", b.range.near_m)},
+              {"RIS_RANGE_BIN_M", fmt::format("{:.6f}", b.range.bin_m)},
+              {"RIS_VERSION", RIS_VERSION}};
+  // The ground presentation is a map: georeference it like the scene.
+  const double half = 0.5 * sg.size * sg.pixel_m;
+  s.georef = Georef{{sim.geometry.site_x_m - half, sg.pixel_m, 0.0, sim.geometry.site_y_m + half,
+                     0.0, -sg.pixel_m},
+                    grid.crs_wkt};
+  s.scope_georeferenced = sg.presentation == PpiPresentation::ground;
+  s.scope = {
+      {"RIS_PRESENTATION", sg.presentation == PpiPresentation::slant ? "radius = slant range"
+                                                                     : "radius = ground range"},
+      {"RIS_PIXEL_M", fmt::format("{:.6f}", sg.pixel_m)},
+      {"RIS_VERSION", RIS_VERSION}};
+  return s;
+}
+
 void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene,
                         const PpiSimulation& sim, const PpiPictures& pic, const SlarRunInfo& info) {
   StagedDirectory dir(out_dir);
@@ -85,22 +113,10 @@ void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene
   const int png_level = png_compression_level(info.compression);
   const GeoTiffCompression float_tif = product_tiff_settings(info, true);
   const GeoTiffCompression int_tif = product_tiff_settings(info, false);
-  const RasterMetadata bmeta = {{"RIS_ROWS", "rays, clockwise from the scan start"},
-                                {"RIS_COLUMNS", "slant-range bins, near first"},
-                                {"RIS_NEAR_SLANT_RANGE_M", fmt::format("{:.6f}", b.range.near_m)},
-                                {"RIS_RANGE_BIN_M", fmt::format("{:.6f}", b.range.bin_m)},
-                                {"RIS_VERSION", RIS_VERSION}};
-  // The ground presentation is a map: georeference it like the scene.
-  const double half = 0.5 * sg.size * sg.pixel_m;
-  const Georef georef{{sim.geometry.site_x_m - half, sg.pixel_m, 0.0, sim.geometry.site_y_m + half,
-                       0.0, -sg.pixel_m},
-                      scene.crs_wkt};
-  const Georef* scope_ref = sg.presentation == PpiPresentation::ground ? &georef : nullptr;
-  const RasterMetadata smeta = {
-      {"RIS_PRESENTATION", sg.presentation == PpiPresentation::slant ? "radius = slant range"
-                                                                     : "radius = ground range"},
-      {"RIS_PIXEL_M", fmt::format("{:.6f}", sg.pixel_m)},
-      {"RIS_VERSION", RIS_VERSION}};
+  const PpiRasterSpecs specs = ppi_raster_specs(scene, sim);
+  const RasterMetadata& bmeta = specs.bscope;
+  const RasterMetadata& smeta = specs.scope;
+  const Georef* scope_ref = specs.scope_georeferenced ? &specs.georef : nullptr;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // One task per file, run concurrently (each opens its own GDAL dataset).
   std::vector<std::function<void()>> tasks;

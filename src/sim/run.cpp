@@ -154,7 +154,20 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   require_regular_input(r.scene_path, "--scene");
   {
     const SceneStreamReader probe(r.scene_path);  // the header only
-    check_out_dir(r, RadarMode::slar, probe.grid().rows, probe.grid().cols);
+    check_out_dir(r, res.radar.mode, probe.grid().rows, probe.grid().cols);
+  }
+  if (res.radar.mode == RadarMode::ppi) {  // rays in blocks (ris/sim/ppi_stream.h)
+    if (process_group().size() > 1) {
+      throw InputError("", "mpirun",
+                       "a streamed PPI run is not split over MPI ranks yet; run it as one "
+                       "process (without mpirun, or with -np 1)");
+    }
+    PpiStreamOptions o;
+    o.block_rays = r.block_lines;
+    o.quiet = r.quiet;
+    res.ppi_streamed =
+        simulate_ppi_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
+    return;
   }
   SlarStreamOptions o;
   o.block_lines = r.block_lines;

@@ -32,6 +32,7 @@
 
 #include "ris/geometry/slar_geometry.h"
 #include "ris/geometry/terrain_line.h"
+#include "ris/geometry/terrain_sample.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/radar_params.h"
 
@@ -88,5 +89,28 @@ struct PpiRayScratch {
 // terrain_texels(scene).
 void ppi_ray_geometry(const Scene& scene, const TerrainTexels& tex, const PpiGeometry& pg, int ray,
                       const PpiRayOut& out, PpiRayScratch& s);
+
+// The steps of the two above that do not need the scene in memory, for a run
+// that reads it a window at a time (ris/sim/ppi_stream.h); `grid` is the
+// scene's grid (its arrays are not read).
+//
+// The radar with a [site] latlon placed on the scene's grid.
+RadarParams ppi_site_on_scene(const RadarParams& radar, const Scene& grid);
+// Throws InputError (key site.position / site.latlon) for a site off the scene.
+void check_ppi_site_inside(const Scene& grid, const RadarParams& radar);
+// site: the terrain at the site (bilinear_terrain_sample). Returns its
+// height; throws InputError for a site on no data or an antenna at or below it.
+double check_ppi_site_terrain(const RadarParams& radar, const TerrainSample& site);
+// The rays and samples (site on the scene, its terrain height and the lowest
+// elevation of the cells with data given; no memory check).
+PpiGeometry ppi_rays_layout(const Scene& grid, const RadarParams& radar, double site_ground_m,
+                            float h_min_m);
+// Ray `ray`'s samples in the scene's grid coordinates (the line sampler's
+// GridLine; inside_samples gives those within the scene).
+GridLine ppi_ray_line(const Scene& grid, const PpiGeometry& pg, int ray);
+// ppi_ray_geometry after the terrain is sampled: terrain[j - begin] is
+// sample j's in [begin, end), the others are unseen.
+void ppi_ray_geometry_from_terrain(const PpiGeometry& pg, int ray, int begin, int end,
+                                   const SampledTerrain& terrain, const PpiRayOut& out);
 
 }  // namespace ris

@@ -52,6 +52,14 @@ std::vector<float> to_ppi_scope(std::span<const float> bscope, const PpiScopeGri
 std::vector<std::uint8_t> to_ppi_scope_nearest(std::span<const std::uint8_t> bscope,
                                                const PpiScopeGrid& grid, std::uint8_t fill);
 
+// The B-scope index (ray * bins + bin) scope pixel (row, col) takes, or -1
+// outside the sector or range window (the rule of to_ppi_scope).
+std::int64_t ppi_scope_source(const PpiScopeGrid& grid, int row, int col);
+
+// Whether scope pixel (row, col) lies on a range ring every spacing_m
+// (spacing_m > 0; the rule of draw_range_rings).
+bool on_range_ring(const PpiScopeGrid& grid, int row, int col, double spacing_m);
+
 // Marks range rings every spacing_m (radius in the scope's presentation) on a
 // greytone scope: the pixels whose centre lies within half a pixel of a ring
 // get `value`.

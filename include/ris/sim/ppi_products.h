@@ -23,14 +23,29 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ris/io/raster_io.h"
 #include "ris/scene/scene.h"
 #include "ris/sim/ppi_simulation.h"
+#include "ris/sim/run_metadata.h"
 #include "ris/sim/slar_products.h"
 
 namespace ris {
 
 nlohmann::json ppi_metadata(const Scene& scene, const PpiSimulation& sim, const PpiPictures& pic,
                             const SlarRunInfo& info);
+// The same given the scene's summary (a streamed scene, ris/sim/ppi_stream.h):
+// sim's and pic's arrays are not read.
+nlohmann::json ppi_metadata(const SceneSummary& scene, const PpiSimulation& sim,
+                            const PpiPictures& pic, const SlarRunInfo& info);
+
+// The rasters' metadata and the scope's georeferencing (ground presentation).
+struct PpiRasterSpecs {
+  RasterMetadata bscope;  // the B-scope rasters
+  RasterMetadata scope;   // the scope rasters
+  Georef georef;          // the scope's, when scope_georeferenced
+  bool scope_georeferenced = false;
+};
+PpiRasterSpecs ppi_raster_specs(const Scene& grid, const PpiSimulation& sim);
 
 // The product stems of a PPI run (ProductSelection; docs/outputs.md).
 const std::vector<std::string_view>& ppi_product_stems();

@@ -37,6 +37,7 @@
 #include "ris/sim/point_target.h"
 #include "ris/sim/point_target_irf.h"
 #include "ris/sim/ppi_simulation.h"
+#include "ris/sim/ppi_stream.h"
 #include "ris/sim/run_info.h"
 #include "ris/sim/slar_simulation.h"
 #include "ris/sim/slar_stream.h"
@@ -121,6 +122,8 @@ struct RunResult {
   std::shared_ptr<const AcquisitionSimulation> acquisition;
   // A streamed run (no arrays kept: the products are on disk).
   std::optional<SlarStreamSummary> streamed;
+  // A streamed PPI run (kind streamed; `streamed` is then empty).
+  std::optional<PpiStreamSummary> ppi_streamed;
   // Wall time: the whole run, and writing the products.
   double seconds = 0.0;
   double write_seconds = 0.0;
