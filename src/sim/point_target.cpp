@@ -107,6 +107,20 @@ bool point_lit_on_line(const SlarGeometry& g, int line, double u_m, double h_m) 
   return point_lit_on_samples(g, 0, g.samples, g.flags.data() + i, g.height_m.data() + i, u_m, h_m);
 }
 
+PointCandidate point_candidate(std::size_t target, int line, double along_m, double u_m, double h_m,
+                               double altitude_m, double rcs_m2) {
+  PointCandidate c;
+  c.target = target;
+  c.u_m = u_m;
+  c.h_m = h_m;
+  c.ret.line = line;
+  c.ret.along_m = along_m;
+  c.ret.slant_range_m = std::hypot(u_m, altitude_m - h_m);
+  c.ret.look_rad = std::atan2(u_m, altitude_m - h_m);
+  c.ret.rcs_m2 = rcs_m2;
+  return c;
+}
+
 std::vector<PointCandidate> point_candidates(const std::vector<PointTarget>& targets,
                                              const Scene& scene, const SlarGeometry& g) {
   std::vector<PointCandidate> out;
@@ -117,16 +131,7 @@ std::vector<PointCandidate> point_candidates(const std::vector<PointTarget>& tar
     const int line = static_cast<int>(std::floor(s / g.line_spacing_m));
     const double h = terrain_height_at(scene, t.x_m, t.y_m) + t.height_m;
     if (!(line >= 0 && line < g.lines && u > 0.0 && std::isfinite(h) && h < H)) continue;
-    PointCandidate c;
-    c.target = k;
-    c.u_m = u;
-    c.h_m = h;
-    c.ret.line = line;
-    c.ret.along_m = s;
-    c.ret.slant_range_m = std::hypot(u, H - h);
-    c.ret.look_rad = std::atan2(u, H - h);
-    c.ret.rcs_m2 = t.rcs_m2;
-    out.push_back(c);
+    out.push_back(point_candidate(k, line, s, u, h, H, t.rcs_m2));
   }
   return out;
 }

@@ -93,16 +93,7 @@ std::vector<PointCandidate> ray_candidates(const std::vector<PointTarget>& targe
       const double d = wrap_pi(alpha - pg.azimuth_rad(k));
       if (!(d >= -0.5 * pg.ray_spacing_rad && d < 0.5 * pg.ray_spacing_rad)) continue;
       if (!(u > 0.0)) continue;
-      PointCandidate c;
-      c.target = out.size();
-      c.u_m = u;
-      c.h_m = h;
-      c.ret.line = k;
-      c.ret.along_m = alpha;
-      c.ret.slant_range_m = std::hypot(u, H - h);
-      c.ret.look_rad = std::atan2(u, H - h);
-      c.ret.rcs_m2 = pt.rcs_m2;
-      out.push_back(c);
+      out.push_back(point_candidate(out.size(), k, alpha, u, h, H, pt.rcs_m2));
       target_of.push_back(t);
     }
   }

@@ -72,6 +72,11 @@ struct PointCandidate {
   double u_m = 0.0;        // ground distance across the track
   double h_m = 0.0;        // height above the datum
 };
+// Target `target` (rcs_m2) on line `line` at along-track position along_m (a
+// ray's azimuth for a PPI), ground distance u_m across the track and height
+// h_m, seen from altitude_m: its slant range and look angle.
+PointCandidate point_candidate(std::size_t target, int line, double along_m, double u_m, double h_m,
+                               double altitude_m, double rcs_m2);
 // The candidates among the targets, in target order. g: the layout.
 std::vector<PointCandidate> point_candidates(const std::vector<PointTarget>& targets,
                                              const Scene& scene, const SlarGeometry& g);
