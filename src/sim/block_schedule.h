@@ -24,6 +24,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
@@ -80,7 +81,10 @@ void run_blocks_in_order(ProcessGroup& g, int n, BlockSchedule schedule, Compute
     return;
   }
   if (g.rank() != 0) {
-    // A worker: its blocks, computed and sent in turn.
+    // A worker: its blocks, computed and sent in turn. RIS_KILL_BLOCK=b (a
+    // test's hook: a rank killed from outside, docs/scale.md) makes the
+    // worker given block b die of SIGKILL before computing it.
+    const int kill_block = failing_block_from_environment("RIS_KILL_BLOCK");
     int next_static = g.rank();
     for (;;) {
       int b = -1;
@@ -96,6 +100,7 @@ void run_blocks_in_order(ProcessGroup& g, int n, BlockSchedule schedule, Compute
         g.finish_sends();
         return;
       }
+      if (b == kill_block) std::raise(SIGKILL);
       std::vector<char> bytes(sizeof(int));
       std::memcpy(bytes.data(), &b, sizeof(int));
       try {
