@@ -85,16 +85,17 @@ const std::vector<std::string_view>& ppi_product_stems() {
   return stems;
 }
 
-std::int64_t ppi_product_bytes_bound(const RadarParams& radar) {
+PpiProductSize ppi_product_size(const RadarParams& radar) {
   const RadarDerived d = derive(radar);
   const PpiParams& p = radar.ppi;
   // The B-scope (ppi_rays_layout's scan rays) and the scope (ppi_scope_grid
   // with no depth: its largest radius), in doubles (no overflow).
-  const double rays = std::max(1.0, std::round(p.scan_width_rad / p.ray_spacing_rad));
-  const double bins = std::max(1, d.range_bins);
-  const double far_m = std::max(d.far_slant_range_m, d.near_slant_range_m + bins * d.range_bin_m);
+  PpiProductSize z;
+  z.rays = std::max(1.0, std::round(p.scan_width_rad / p.ray_spacing_rad));
+  z.bins = std::max(1, d.range_bins);
+  const double far_m = d.near_slant_range_m + z.bins * d.range_bin_m;  // the B-scope's far end
   const double pixel_m = p.scope_pixel_m > 0.0 ? p.scope_pixel_m : d.range_bin_m;
-  const double size = 2.0 * std::max(1.0, std::ceil(far_m / pixel_m));
+  z.scope_pixels = 2.0 * std::max(1.0, std::ceil(far_m / pixel_m));
   const auto tiff = [](double cols, double rows, double bytes_per_pixel) {
     const double tiled = std::ceil(cols / 256.0) * 256.0 * std::ceil(rows / 256.0) * 256.0;
     const bool overviews = cols * rows >= double(kOverviewMinPixels);
@@ -103,10 +104,12 @@ std::int64_t ppi_product_bytes_bound(const RadarParams& radar) {
   // A PNG stored without compression: a filter byte a row, 5 bytes a 64 KiB
   // deflate block.
   const auto png = [](double cols, double rows) { return (cols + 1.0) * rows * 1.001 + 1024.0; };
-  const double bytes = tiff(bins, rays, 9.0) + png(bins, rays) + tiff(bins, rays, 1.0) +
-                       tiff(size, size, 5.0) + png(size, size) + tiff(size, size, 1.0) +
-                       double(1 << 20);
-  return static_cast<std::int64_t>(std::min(bytes, 0x1p62));
+  z.bscope_bytes = tiff(z.bins, z.rays, 9.0) + png(z.bins, z.rays) + tiff(z.bins, z.rays, 1.0);
+  const double side = z.scope_pixels;
+  z.scope_bytes = tiff(side, side, 5.0) + png(side, side) + tiff(side, side, 1.0);
+  z.bytes =
+      static_cast<std::int64_t>(std::min(z.bscope_bytes + z.scope_bytes + double(1 << 20), 0x1p62));
+  return z;
 }
 
 PpiRasterSpecs ppi_raster_specs(const Scene& grid, const PpiSimulation& sim) {

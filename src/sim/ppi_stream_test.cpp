@@ -221,7 +221,7 @@ std::int64_t folder_bytes(const fs::path& dir) {
 }
 
 // The free-disk check of a PPI run counts its products (rays x bins and the
-// scope: ppi_product_bytes_bound), not the scene's cells. The bound holds
+// scope: ppi_product_size), not the scene's cells. The bound holds
 // what an in-memory run writes uncompressed and is not loose (within 1.5
 // times it); on a scene of 2000^2 cells (28 MB at the SLAR's 7 bytes a
 // cell) the ground radar's run passes a disk ceiling just above the bound
@@ -230,7 +230,7 @@ TEST(PpiStream, DiskCheckCountsThePpiProductsNotTheScene) {
   test::TempDir dir;
   const std::string radar_path =
       std::string(ris::test::data_dir()) + "/radars/ppi-ground-mast-30m.toml";
-  const std::int64_t bound = ppi_product_bytes_bound(load_radar(radar_path));
+  const std::int64_t bound = ppi_product_size(load_radar(radar_path)).bytes;
   const std::string small = (dir / "small.tif").string();
   ASSERT_EQ(
       test::run_ris("scene fractal --quiet --size 200x140 --cell-size 30 -o " + small).exit_code,
@@ -263,7 +263,10 @@ TEST(PpiStream, DiskCheckCountsThePpiProductsNotTheScene) {
   EXPECT_LE(folder_bytes(dir / "ok"), bound);
   const test::RunResult refused = run_under(bound / mib - 1, dir / "refused");
   EXPECT_EQ(refused.exit_code, 1) << refused.output;
-  EXPECT_NE(refused.output.find("PPI"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("'scan.pixel': the products of a PPI run (720 rays x 400 range "
+                                "bins, a scope of 800 x 800 pixels)"),
+            std::string::npos)
+      << refused.output;
   EXPECT_FALSE(fs::exists(dir / "refused"));
 }
 

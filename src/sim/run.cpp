@@ -133,9 +133,13 @@ void check_out_dir(const RunRequest& r, const RadarParams& radar, std::int64_t r
     stems.emplace_back(s);
   }
   require_safe_output_folder(r.out_dir, stems, "--out");
-  if (mode == RadarMode::ppi) {
-    require_disk(ppi_product_bytes_bound(radar), r.out_dir, radar.source_file, "--out",
-                 "the products of a PPI run (its rays x range bins and scope)");
+  if (mode == RadarMode::ppi) {  // the key of the larger part named
+    const PpiProductSize z = ppi_product_size(radar);
+    require_disk(z.bytes, r.out_dir, radar.source_file,
+                 z.scope_bytes >= z.bscope_bytes ? "scan.pixel" : "scan.ray_spacing",
+                 fmt::format("the products of a PPI run ({:.0f} rays x {:.0f} range bins, a "
+                             "scope of {:.0f} x {:.0f} pixels)",
+                             z.rays, z.bins, z.scope_pixels, z.scope_pixels));
     return;
   }
   const std::int64_t cells = checked_mul(rows, cols, r.scene_path, "");

@@ -60,7 +60,13 @@ const std::vector<std::string_view>& ppi_product_stems();
 // the slant-range radius) at 4 + 1 (power, mask) and ppi_scope.png, the
 // streamed run's two temporary greytone rasters (1 byte a pixel) the PNGs
 // are made from, and 1 MiB for metadata.json and the files' headers.
-std::int64_t ppi_product_bytes_bound(const RadarParams& radar);
+struct PpiProductSize {
+  double rays = 0, bins = 0;  // the B-scope (scan rays x range bins)
+  double scope_pixels = 0;    // the scope's side
+  double bscope_bytes = 0, scope_bytes = 0;
+  std::int64_t bytes = 0;  // the whole bound (B-scope, scope, 1 MiB)
+};
+PpiProductSize ppi_product_size(const RadarParams& radar);
 
 // Writes the products info.products selects (all by default) with
 // info.compression, concurrently.
