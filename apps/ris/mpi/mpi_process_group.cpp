@@ -15,6 +15,7 @@
 #include <deque>
 #include <limits>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -68,6 +69,24 @@ void stop_cleanly_on_signal() {
   }).detach();
 }
 
+// An error in an MPI call (a peer's connection lost when its node dies,
+// before the launcher has stopped this rank): MPI_ERRORS_ARE_FATAL would
+// abort at once and leave the staging folder; this handler removes it
+// first, says so, then aborts every rank.
+void on_mpi_error(MPI_Comm*, int* code, ...) {
+  remove_staged_directories();
+  char text[MPI_MAX_ERROR_STRING] = {};
+  int length = 0;
+  MPI_Error_string(*code, text, &length);
+  std::fputs(fmt::format("ris (rank {} of {}): error: MPI: {}; no output written, the staging "
+                         "folder removed\n",
+                         g_rank.load(), g_size.load(), std::string(text, std::size_t(length)))
+                 .c_str(),
+             stderr);
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, 3);
+}
+
 int checked_count(std::size_t bytes) {
   RIS_CHECK(bytes <= std::size_t(std::numeric_limits<int>::max()));
   return static_cast<int>(bytes);
@@ -84,6 +103,9 @@ class MpiProcessGroup final : public ProcessGroup {
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
     g_size = size_;
     g_rank = rank_;
+    MPI_Errhandler on_error = MPI_ERRHANDLER_NULL;
+    MPI_Comm_create_errhandler(on_mpi_error, &on_error);
+    MPI_Comm_set_errhandler(MPI_COMM_WORLD, on_error);
     if (provided >= MPI_THREAD_SERIALIZED) progress_ = std::thread([this] { progress_loop(); });
   }
   ~MpiProcessGroup() override {
