@@ -189,7 +189,8 @@ void expect_nothing_written(const test::TempDir& dir, const std::string& tag) {
 // other ranks (SIGTERM); rank 0 removes its staging folder on it
 // (apps/ris/mpi/mpi_process_group.cpp). The run must fail, not hang (the
 // test's `timeout` gives up after 120 s with status 124), name the failure
-// and leave no output and no staging folder; for a SLAR and a PPI run.
+// and leave no output and no staging folder; for a SLAR and a PPI run (and a
+// PPI block that throws).
 TEST(MpiCli, AKilledRankFailsTheRunWithoutOutput) {
   RIS_REQUIRE_MPI();
   test::TempDir dir;
@@ -215,6 +216,14 @@ TEST(MpiCli, AKilledRankFailsTheRunWithoutOutput) {
     EXPECT_NE(r.output.find("stopped by signal"), std::string::npos) << radar << "\n" << r.output;
     expect_nothing_written(dir, radar + ": a killed rank");
   }
+  // A PPI block that throws on rank 1 fails the run as a SLAR block does
+  // (AFailingRankFailsTheRunWithoutOutput).
+  const auto r = run_shell(mpirun(2, "RIS_MPI_SCHEDULE=interleaved RIS_FAIL_BLOCK=3") + common +
+                           " --radar " + test::data_dir() + "/radars/ppi-ground-mast-30m.toml");
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("rank 1 of 2 failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("RIS_FAIL_BLOCK"), std::string::npos) << r.output;
+  expect_nothing_written(dir, "a PPI worker's block");
 }
 
 TEST(MpiCli, AFailingRankFailsTheRunWithoutOutput) {
