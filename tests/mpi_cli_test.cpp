@@ -121,16 +121,18 @@ TEST(MpiCli, IncoherentSarGivesSingleProcessBytes) {
 }
 
 // A streamed PPI run (rays in blocks, ris/sim/ppi_stream.h) on a noise
-// scene of 200 x 140 cells of 30 m (the shipped radars' site at its middle):
-// one process, then 1, 2 and 3 ranks with each schedule, in blocks of 16
-// rays (`block_args`) or the default (at least 4 blocks a rank).
+// scene of 200 x 600 cells of 30 m (the shipped radars' site, 3 km east and
+// 2.1 km north of its south-west corner; 3 blocks of 256 rows, so pass 0's
+// rows are split over the ranks): one process, then 1, 2 and 3 ranks with
+// each schedule, in blocks of 16 rays (`block_args`) or the default (at
+// least 4 blocks a rank).
 void expect_ppi_ranks_give_single_process_bytes(const std::string& radar,
                                                 const std::string& block_args,
                                                 const std::string& tag) {
   test::TempDir dir;
   const std::string scene = (dir / "scene.tif").string();
   const auto s = test::run_ris(
-      "scene fractal --generator noise --size 200x140 --cell-size 30 --relief 300 --base 50 "
+      "scene fractal --generator noise --size 200x600 --cell-size 30 --relief 300 --base 50 "
       "--patches 1,2,3 -o " +
       scene);
   ASSERT_EQ(s.exit_code, 0) << s.output;
