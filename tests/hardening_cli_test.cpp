@@ -181,11 +181,13 @@ TEST(HardeningCli, LineCountOverflowAndHugeImagesAreRefused) {
   const fs::path ppi = radar_with(dir, "ppi-ground-mast-30m.toml", "pixel = \"1 mm\"", "[scan]");
   expect_refused(test::run_ris("simulate --quiet --radar " + q(ppi) + " --out " + q(dir / "out")),
                  1, "'scan.pixel'", dir.path(), before);
-  // 1.8 M rays of a PPI: their geometry would not fit.
+  // 1.8 M rays of a PPI: their products would not fit on the disk (checked
+  // before the run; without an output folder, their geometry in memory).
   const fs::path rays =
       radar_with(dir, "ppi-ground-mast-30m.toml", "ray_spacing = \"2e-4 deg\"", "[scan]");
   expect_refused(test::run_ris("simulate --quiet --radar " + q(rays) + " --out " + q(dir / "out")),
-                 1, "'scan.ray_spacing': the geometry of 1805002 rays", dir.path(), before);
+                 1, "'scan.ray_spacing': the products of a PPI run (1800000 rays", dir.path(),
+                 before);
 }
 
 TEST(HardeningCli, HugeSizesAreRefusedBeforeAnyWork) {

@@ -1,7 +1,8 @@
 // `mpirun -np N ris simulate ... --stream` (docs/scale.md): every product the
 // same bytes as a single process, for SLAR along the grid (heading 0) and
-// across it (heading 90) and the incoherent SAR; a failing rank fails the
-// whole run and leaves no output. Skipped when ris was built without MPI.
+// across it (heading 90), the incoherent SAR and PPI (both shipped radars, a
+// sector); a failing or killed rank fails the whole run and leaves no
+// output. Skipped when ris was built without MPI.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -53,7 +54,8 @@ std::string radar_with(const test::TempDir& dir, const std::string& name, const 
 }
 
 // The products of `out` and `ref`: the same files, byte for byte.
-void expect_same_files(const fs::path& ref, const fs::path& out, const std::string& tag) {
+void expect_same_files(const fs::path& ref, const fs::path& out, const std::string& tag,
+                       int min_files = 10) {
   int files = 0;
   for (const auto& e : fs::directory_iterator(ref)) {
     const fs::path other = out / e.path().filename();
@@ -65,7 +67,7 @@ void expect_same_files(const fs::path& ref, const fs::path& out, const std::stri
   int others = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++others;
   EXPECT_EQ(files, others) << tag;
-  EXPECT_GE(files, 10) << tag;
+  EXPECT_GE(files, min_files) << tag;
 }
 
 // A small noise scene (300 x 200 cells of 10 m), run by one process and by
@@ -118,6 +120,62 @@ TEST(MpiCli, IncoherentSarGivesSingleProcessBytes) {
       "incoherent SAR");
 }
 
+// A streamed PPI run (rays in blocks, ris/sim/ppi_stream.h) on a noise
+// scene of 200 x 600 cells of 30 m (the shipped radars' site, 3 km east and
+// 2.1 km north of its south-west corner; 3 blocks of 256 rows, so pass 0's
+// rows are split over the ranks): one process, then 1, 2 and 3 ranks with
+// each schedule, in blocks of 16 rays (`block_args`) or the default (at
+// least 4 blocks a rank).
+void expect_ppi_ranks_give_single_process_bytes(const std::string& radar,
+                                                const std::string& block_args,
+                                                const std::string& tag) {
+  test::TempDir dir;
+  const std::string scene = (dir / "scene.tif").string();
+  const auto s = test::run_ris(
+      "scene fractal --generator noise --size 200x600 --cell-size 30 --relief 300 --base 50 "
+      "--patches 1,2,3 -o " +
+      scene);
+  ASSERT_EQ(s.exit_code, 0) << s.output;
+  const std::string args = " simulate --quiet --threads 1 --stream" + block_args + " --scene " +
+                           scene + " --radar " + radar + " --out ";
+  const auto one = test::run_ris(args + (dir / "one").string());
+  ASSERT_EQ(one.exit_code, 0) << tag << "\n" << one.output;
+  for (int ranks : {1, 2, 3}) {
+    for (const char* schedule : {"dynamic", "interleaved"}) {
+      if (ranks == 1 && std::string(schedule) == "interleaved") continue;
+      const fs::path out = dir / ("np" + std::to_string(ranks) + schedule);
+      const auto r = run_shell(mpirun(ranks, std::string("RIS_MPI_SCHEDULE=") + schedule) +
+                               test::ris_exe() + args + out.string());
+      const std::string t = tag + ", " + std::to_string(ranks) + " ranks, " + schedule;
+      ASSERT_EQ(r.exit_code, 0) << t << "\n" << r.output;
+      expect_same_files(dir / "one", out, t, 8);  // 7 products and metadata.json
+    }
+  }
+}
+
+TEST(MpiCli, PpiGroundRadarGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  const std::string radar = std::string(test::data_dir()) + "/radars/ppi-ground-mast-30m.toml";
+  expect_ppi_ranks_give_single_process_bytes(radar, " --block-lines 16", "PPI ground, 16 rays");
+  expect_ppi_ranks_give_single_process_bytes(radar, "", "PPI ground, default blocks");
+}
+
+TEST(MpiCli, PpiAirborneRadarGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  expect_ppi_ranks_give_single_process_bytes(
+      std::string(test::data_dir()) + "/radars/ppi-airborne-nav-10000ft.toml", " --block-lines 16",
+      "PPI airborne");
+}
+
+TEST(MpiCli, PpiSectorGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ppi_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "ppi-ground-mast-30m.toml", "[scan]\n",
+                 "[scan]\nstart = \"30 deg\"\nwidth = \"100 deg\"\n"),
+      " --block-lines 7", "PPI sector");
+}
+
 // No folder beside `out` but the inputs: neither the output nor a staging
 // folder left behind.
 void expect_nothing_written(const test::TempDir& dir, const std::string& tag) {
@@ -126,6 +184,48 @@ void expect_nothing_written(const test::TempDir& dir, const std::string& tag) {
     EXPECT_TRUE(name == "scene.tif" || name == "tall.tif" || name.ends_with(".toml"))
         << tag << ": left " << name;
   }
+}
+
+// A rank killed from outside (the OOM killer, scancel): RIS_KILL_BLOCK=b
+// makes the worker given block b raise SIGKILL on itself. mpirun ends the
+// other ranks (SIGTERM); rank 0 removes its staging folder on it
+// (apps/ris/mpi/mpi_process_group.cpp). The run must fail, not hang (the
+// test's `timeout` gives up after 120 s with status 124), name the failure
+// and leave no output and no staging folder; for a SLAR and a PPI run (and a
+// PPI block that throws).
+TEST(MpiCli, AKilledRankFailsTheRunWithoutOutput) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  const std::string scene = (dir / "scene.tif").string();
+  ASSERT_EQ(test::run_ris("scene fractal --generator noise --size 200x140 --cell-size 30 "
+                          "--relief 300 --base 50 -o " +
+                          scene)
+                .exit_code,
+            0);
+  const std::string common = std::string(test::ris_exe()) +
+                             " simulate --quiet --threads 1 --stream --block-lines 16 --scene " +
+                             scene + " --out " + (dir / "out").string();
+  for (const std::string radar : {"seed-fig4-5.toml", "ppi-ground-mast-30m.toml"}) {
+    // Block 3 is rank 1's (interleaved: block b on rank b mod 2), after rank
+    // 0 has staged its output folder and written blocks 0 to 2.
+    const auto r =
+        run_shell("timeout 120 " + mpirun(2, "RIS_MPI_SCHEDULE=interleaved RIS_KILL_BLOCK=3") +
+                  common + " --radar " + test::data_dir() + "/radars/" + radar);
+    EXPECT_NE(r.exit_code, 0) << radar << "\n" << r.output;
+    EXPECT_NE(r.exit_code, 124) << radar << ": the run hung\n" << r.output;
+    // mpirun's message names the killed rank; rank 0's says why it stopped.
+    EXPECT_NE(r.output.find("signal 9"), std::string::npos) << radar << "\n" << r.output;
+    EXPECT_NE(r.output.find("stopped by signal"), std::string::npos) << radar << "\n" << r.output;
+    expect_nothing_written(dir, radar + ": a killed rank");
+  }
+  // A PPI block that throws on rank 1 fails the run as a SLAR block does
+  // (AFailingRankFailsTheRunWithoutOutput).
+  const auto r = run_shell(mpirun(2, "RIS_MPI_SCHEDULE=interleaved RIS_FAIL_BLOCK=3") + common +
+                           " --radar " + test::data_dir() + "/radars/ppi-ground-mast-30m.toml");
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("rank 1 of 2 failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("RIS_FAIL_BLOCK"), std::string::npos) << r.output;
+  expect_nothing_written(dir, "a PPI worker's block");
 }
 
 TEST(MpiCli, AFailingRankFailsTheRunWithoutOutput) {

@@ -2,9 +2,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <fstream>
+#include <mutex>
 #include <system_error>
+#include <vector>
 
 #include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
@@ -20,7 +23,31 @@ std::string unique_suffix() {
   static std::atomic<unsigned> counter{0};
   return ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
 }
+
+// The staging folders of the StagedDirectory objects alive in this process
+// (remove_staged_directories).
+std::mutex& staged_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::vector<fs::path>& staged_folders() {
+  static std::vector<fs::path> v;
+  return v;
+}
 }  // namespace
+
+void remove_staged_directories() noexcept {
+  const std::lock_guard<std::mutex> lock(staged_mutex());
+  for (const fs::path& p : staged_folders()) {
+    // The writing thread may still add a file between listing and removal:
+    // a few tries.
+    for (int attempt = 0; attempt < 20; ++attempt) {
+      std::error_code ec;
+      fs::remove_all(p, ec);
+      if (!ec && !path_exists(p)) break;
+    }
+  }
+}
 
 AtomicPath::AtomicPath(fs::path final_path) : final_(std::move(final_path)) {
   fs::path parent = final_.parent_path();
@@ -82,12 +109,29 @@ StagedDirectory::StagedDirectory(fs::path final_dir) : final_(std::move(final_di
   staging_ = fs::absolute(final_).lexically_normal();
   if (staging_.filename().empty()) staging_ = staging_.parent_path();
   staging_ = staging_.parent_path() / ("." + staging_.filename().string() + unique_suffix());
-  fs::create_directories(staging_);
+  {  // known before it exists (remove_staged_directories)
+    const std::lock_guard<std::mutex> lock(staged_mutex());
+    staged_folders().push_back(staging_);
+  }
+  try {
+    fs::create_directories(staging_);
+  } catch (...) {
+    forget_staging();
+    throw;
+  }
+}
+
+void StagedDirectory::forget_staging() noexcept {
+  const std::lock_guard<std::mutex> lock(staged_mutex());
+  std::vector<fs::path>& v = staged_folders();
+  const auto it = std::find(v.begin(), v.end(), staging_);
+  if (it != v.end()) v.erase(it);
 }
 
 StagedDirectory::~StagedDirectory() {
   std::error_code ec;
   fs::remove_all(staging_, ec);
+  forget_staging();
 }
 
 void StagedDirectory::commit() {

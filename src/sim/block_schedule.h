@@ -21,7 +21,11 @@
 // calls ProcessGroup::abort).
 #pragma once
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <map>
@@ -35,6 +39,25 @@
 namespace ris::detail {
 
 enum class BlockSchedule { dynamic, interleaved };
+
+// How an MPI run hands out its blocks: RIS_MPI_SCHEDULE=interleaved or
+// dynamic (the default; docs/scale.md).
+inline BlockSchedule block_schedule_from_environment() {
+  const char* v = std::getenv("RIS_MPI_SCHEDULE");
+  if (v == nullptr || std::string(v).empty() || std::string(v) == "dynamic")
+    return BlockSchedule::dynamic;
+  if (std::string(v) == "interleaved") return BlockSchedule::interleaved;
+  throw InputError("", "RIS_MPI_SCHEDULE",
+                   fmt::format("expected dynamic or interleaved, got '{}'", v));
+}
+
+// The failure tests' hooks (tests/mpi_cli_test.cpp): `name`=b (RIS_FAIL_BLOCK,
+// RIS_FAIL_GEO_BLOCK) makes a pass's block b throw on the rank that computes
+// it; unset: -1, none.
+inline int failing_block_from_environment(const char* name) {
+  const char* v = std::getenv(name);
+  return v == nullptr ? -1 : std::atoi(v);
+}
 
 namespace block_tags {
 inline constexpr int kAssign = 101;  // rank 0 -> worker: an int block, -1 = no more
@@ -58,7 +81,10 @@ void run_blocks_in_order(ProcessGroup& g, int n, BlockSchedule schedule, Compute
     return;
   }
   if (g.rank() != 0) {
-    // A worker: its blocks, computed and sent in turn.
+    // A worker: its blocks, computed and sent in turn. RIS_KILL_BLOCK=b (a
+    // test's hook: a rank killed from outside, docs/scale.md) makes the
+    // worker given block b die of SIGKILL before computing it.
+    const int kill_block = failing_block_from_environment("RIS_KILL_BLOCK");
     int next_static = g.rank();
     for (;;) {
       int b = -1;
@@ -74,6 +100,7 @@ void run_blocks_in_order(ProcessGroup& g, int n, BlockSchedule schedule, Compute
         g.finish_sends();
         return;
       }
+      if (b == kill_block) std::raise(SIGKILL);
       std::vector<char> bytes(sizeof(int));
       std::memcpy(bytes.data(), &b, sizeof(int));
       try {

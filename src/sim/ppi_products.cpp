@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -10,7 +11,9 @@
 
 #include "ris/io/atomic_file.h"
 #include "ris/io/compression_preset.h"
+#include "ris/io/geotiff_block_writer.h"
 #include "ris/io/raster_io.h"
+#include "ris/sensor/radar_derived.h"
 #include "ris/sensor/radar_json.h"
 #include "ris/sim/run_metadata.h"
 #include "ris/util/concurrent_tasks.h"
@@ -80,6 +83,33 @@ const std::vector<std::string_view>& ppi_product_stems() {
       "ppi_scope",         "ppi_scope_power",       "ppi_scope_mask", "bscope",
       "mean_power_bscope", "speckled_power_bscope", "mask_bscope"};
   return stems;
+}
+
+PpiProductSize ppi_product_size(const RadarParams& radar) {
+  const RadarDerived d = derive(radar);
+  const PpiParams& p = radar.ppi;
+  // The B-scope (ppi_rays_layout's scan rays) and the scope (ppi_scope_grid
+  // with no depth: its largest radius), in doubles (no overflow).
+  PpiProductSize z;
+  z.rays = std::max(1.0, std::round(p.scan_width_rad / p.ray_spacing_rad));
+  z.bins = std::max(1, d.range_bins);
+  const double far_m = d.near_slant_range_m + z.bins * d.range_bin_m;  // the B-scope's far end
+  const double pixel_m = p.scope_pixel_m > 0.0 ? p.scope_pixel_m : d.range_bin_m;
+  z.scope_pixels = 2.0 * std::max(1.0, std::ceil(far_m / pixel_m));
+  const auto tiff = [](double cols, double rows, double bytes_per_pixel) {
+    const double tiled = std::ceil(cols / 256.0) * 256.0 * std::ceil(rows / 256.0) * 256.0;
+    const bool overviews = cols * rows >= double(kOverviewMinPixels);
+    return tiled * bytes_per_pixel * (overviews ? 4.0 / 3.0 : 1.0);
+  };
+  // A PNG stored without compression: a filter byte a row, 5 bytes a 64 KiB
+  // deflate block.
+  const auto png = [](double cols, double rows) { return (cols + 1.0) * rows * 1.001 + 1024.0; };
+  z.bscope_bytes = tiff(z.bins, z.rays, 9.0) + png(z.bins, z.rays) + tiff(z.bins, z.rays, 1.0);
+  const double side = z.scope_pixels;
+  z.scope_bytes = tiff(side, side, 5.0) + png(side, side) + tiff(side, side, 1.0);
+  z.bytes =
+      static_cast<std::int64_t>(std::min(z.bscope_bytes + z.scope_bytes + double(1 << 20), 0x1p62));
+  return z;
 }
 
 PpiRasterSpecs ppi_raster_specs(const Scene& grid, const PpiSimulation& sim) {

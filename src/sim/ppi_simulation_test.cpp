@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -330,6 +331,23 @@ TEST(PpiSimulation, BadSiteIsAnInputError) {
     EXPECT_EQ(e.key(), "target[0].position");
     EXPECT_NE(std::string(e.what()).find("off the scene"), std::string::npos) << e.what();
   }
+}
+
+// 1.8 M rays: their geometry (31 bytes a sample) is refused by the memory
+// check before it is allocated, naming the key (a run with an output folder
+// meets the disk check first: tests/hardening_cli_test.cpp).
+TEST(PpiSimulation, TooManyRaysAreRefusedBeforeTheirGeometryIsAllocated) {
+  ::setenv("RIS_MAX_MEMORY_MB", "2048", 1);
+  try {
+    simulate_ppi(flat_scene(), ppi_radar("ray_spacing = \"2e-4 deg\"\n"),
+                 test::CosineSigma0Source());
+    ADD_FAILURE() << "1.8 M rays accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "scan.ray_spacing");
+    EXPECT_NE(std::string(e.what()).find("rays x 180 samples needs"), std::string::npos)
+        << e.what();
+  }
+  ::unsetenv("RIS_MAX_MEMORY_MB");
 }
 
 TEST(PpiSimulation, SiteInLatitudeLongitudeEqualsItsProjectedPosition) {

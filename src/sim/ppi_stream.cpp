@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -30,8 +32,10 @@
 #include "ris/sim/radiometry_setup.h"
 #include "ris/sim/run_metadata.h"
 #include "ris/util/error.h"
+#include "ris/util/process_group.h"
 #include "ris/util/progress.h"
 #include "ris/util/rank_select.h"
+#include "sim/block_schedule.h"
 
 namespace ris {
 
@@ -139,31 +143,111 @@ void sample_from_window(const TexelWindow& w, const Scene& grid, const GridLine&
   }
 }
 
+// A block's counts of pass 1 (summed over the blocks; r_min and r_max: the
+// slant range of the samples seen, for the swath-misses-the-scene message).
+struct RayCounts {
+  std::int64_t in_swath = 0, shadow = 0, layover = 0, back_facing = 0, nodata = 0;
+  std::int64_t windows = 0, max_window_cells = 0;  // scene windows read
+  float r_min = std::numeric_limits<float>::infinity();
+  float r_max = -std::numeric_limits<float>::infinity();
+  void add(const RayCounts& o) {
+    in_swath += o.in_swath;
+    shadow += o.shadow;
+    layover += o.layover;
+    back_facing += o.back_facing;
+    nodata += o.nodata;
+    windows += o.windows;
+    max_window_cells = std::max(max_window_cells, o.max_window_cells);
+    r_min = std::min(r_min, o.r_min);
+    r_max = std::max(r_max, o.r_max);
+  }
+};
+
+// A block of rays as computed by any rank of an MPI run and consumed, in
+// ray order, by rank 0 (src/sim/block_schedule.h): its range profiles and
+// counts.
+struct RayBlock {
+  int k0 = 0, k1 = 0;
+  SlarLineProfiles prof;
+  RayCounts counts;
+};
+
+void pack_ray_block(const RayBlock& k, std::vector<char>& out) {
+  const auto put = [&](const void* p, std::size_t n) {
+    const char* c = static_cast<const char*>(p);
+    out.insert(out.end(), c, c + n);
+  };
+  const int head[5] = {k.k0, k.k1, k.prof.line0, k.prof.lines, k.prof.bins};
+  put(head, sizeof(head));
+  put(&k.counts, sizeof(RayCounts));
+  const std::size_t np = k.prof.power_w.size();
+  put(k.prof.power_w.data(), np * sizeof(float));
+  put(k.prof.area_m2.data(), np * sizeof(float));
+  put(k.prof.touch.data(), np);
+  put(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
+  put(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
+}
+
+RayBlock unpack_ray_block(const char* p, std::size_t n) {
+  const char* const end = p + n;
+  const auto get = [&](void* to, std::size_t bytes) {
+    RIS_CHECK(std::size_t(end - p) >= bytes);
+    std::memcpy(to, p, bytes);
+    p += bytes;
+  };
+  RayBlock k;
+  int head[5] = {};
+  get(head, sizeof(head));
+  k.k0 = head[0];
+  k.k1 = head[1];
+  k.prof.allocate(head[3], head[4], head[2]);
+  get(&k.counts, sizeof(RayCounts));
+  const std::size_t np = k.prof.power_w.size();
+  get(k.prof.power_w.data(), np * sizeof(float));
+  get(k.prof.area_m2.data(), np * sizeof(float));
+  get(k.prof.touch.data(), np);
+  get(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
+  get(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
+  RIS_CHECK(p == end);
+  return k;
+}
+
 class PpiStreamRun {
  public:
   PpiStreamRun(const std::filesystem::path& scene_path, const RadarParams& radar,
                const SlarRunInfo& info, const std::filesystem::path& out_dir,
                const PpiStreamOptions& options)
-      : in_(scene_path), options_(options), info_(info), out_dir_(out_dir) {
+      : in_(scene_path),
+        schedule_(detail::block_schedule_from_environment()),
+        fail_block_(detail::failing_block_from_environment("RIS_FAIL_BLOCK")),
+        options_(options),
+        info_(info),
+        out_dir_(out_dir) {
     summary_.grid = in_.grid();
     sim().radar = radar;
     RIS_CHECK(radar.mode == RadarMode::ppi);
   }
 
+  // Every rank of an MPI run (ris/util/process_group.h) runs passes 0 and 1
+  // on its part (scene rows, blocks of rays); rank 0 alone writes, and runs
+  // the passes after 1.
   PpiStreamSummary run(const Sigma0Source& sigma0) {
+    const bool root = group_.rank() == 0;
     backscatter_file_ =
         info_.backscatter_path.empty() ? sigma0.description() : info_.backscatter_path;
     scene_block_rows_ = std::min(grid().rows, std::max(in_.block_rows(), 256));
     bar_.emplace("simulate (streamed PPI)", 2 * std::int64_t(grid().rows) * grid().cols, "cells",
-                 options_.quiet);
+                 options_.quiet || !root);
     stage("scene statistics");
     summarise_scene(sigma0);
+    reduce_scene_summary();
     stage_done();
     set_up(sigma0);
-    dir_.emplace(out_dir_);
+    if (root) dir_.emplace(out_dir_);
     stage("rays: terrain, geometry, image formation, fading (pass 1)");
     rays_pass();
     stage_done();
+    if (!root) return std::move(summary_);
     const GreytoneMap map = make_greytone_map_for_median(sim().radar, median_mean_power());
     stage("B-scope greytones (pass 2)");
     bscope_picture(map);
@@ -206,8 +290,15 @@ class PpiStreamRun {
     std::vector<float> z(cap);
     std::vector<std::uint16_t> cat(cap);
     std::vector<std::uint8_t> ok(cap);
-    for (int r0 = 0; r0 < grid().rows; r0 += scene_block_rows_) {
-      const int n = std::min(scene_block_rows_, grid().rows - r0);
+    // This rank's rows: whole blocks of scene_block_rows_, split evenly.
+    const int row_blocks = (grid().rows + scene_block_rows_ - 1) / scene_block_rows_;
+    const auto part_row = [&](int rank) {
+      const auto b = std::int64_t(row_blocks) * rank / group_.size();
+      return static_cast<int>(std::min<std::int64_t>(b * scene_block_rows_, grid().rows));
+    };
+    const int row_end = part_row(group_.rank() + 1);
+    for (int r0 = part_row(group_.rank()); r0 < row_end; r0 += scene_block_rows_) {
+      const int n = std::min(scene_block_rows_, row_end - r0);
       in_.read(r0, n, 0, grid().cols, z.data(), cat.data(), ok.data());
       const std::size_t cells = sz(n) * sz(grid().cols);
       for (std::size_t i = 0; i < cells; ++i) {
@@ -233,6 +324,35 @@ class PpiStreamRun {
     }
     for (std::size_t c = 0; c < seen.size(); ++c)
       if (seen[c]) categories_.push_back(static_cast<std::uint16_t>(c));
+  }
+
+  // The whole scene's pass 0 from every rank's rows, on every rank: counts
+  // summed, categories merged, the extremes folded in rank order (rows in
+  // order) with summarise_scene's comparisons, so they are one process's.
+  void reduce_scene_summary() {
+    if (group_.size() == 1) return;
+    std::vector<std::uint64_t> counts(65536 + 2, 0);
+    counts[0] = static_cast<std::uint64_t>(valid_cells_);
+    counts[1] = static_cast<std::uint64_t>(nodata_cells_);
+    for (std::uint16_t c : categories_) counts[2 + sz(c)] = 1;
+    group_.sum(counts);
+    valid_cells_ = static_cast<std::int64_t>(counts[0]);
+    nodata_cells_ = static_cast<std::int64_t>(counts[1]);
+    categories_.clear();
+    for (std::size_t c = 0; c < 65536; ++c)
+      if (counts[2 + c] > 0) categories_.push_back(static_cast<std::uint16_t>(c));
+    const float mine[2] = {h_min_, h_max_};
+    std::vector<char> bytes(sizeof(mine));
+    std::memcpy(bytes.data(), mine, sizeof(mine));
+    h_min_ = std::numeric_limits<float>::infinity();
+    h_max_ = -std::numeric_limits<float>::infinity();
+    for (const std::vector<char>& b : group_.all_gather(bytes)) {
+      float e[2] = {};
+      RIS_CHECK(b.size() == sizeof(e));
+      std::memcpy(e, b.data(), sizeof(e));
+      h_min_ = std::min(h_min_, e[0]);
+      h_max_ = std::max(h_max_, e[1]);
+    }
   }
 
   // The terrain at the site as bilinear_terrain_sample gives it on the whole
@@ -303,7 +423,13 @@ class PpiStreamRun {
                           ? options_.block_rays
                           : static_cast<int>(std::clamp<std::int64_t>(budget / 2 / per_ray, 1,
                                                                       std::max(all_rays(), 1)));
-    summary_.block_rays = std::min(block, all_rays());
+    // Over several MPI ranks, at least 4 blocks a rank, so the queue has
+    // blocks to balance (the bytes do not depend on the block length).
+    const int ranks = group_.size();
+    const int for_ranks = ranks > 1 && options_.block_rays <= 0
+                              ? std::max(16, (all_rays() + 4 * ranks - 1) / (4 * ranks))
+                              : all_rays();
+    summary_.block_rays = std::max(1, std::min({block, all_rays(), for_ranks}));
   }
 
   template <typename T>
@@ -395,8 +521,8 @@ class PpiStreamRun {
     in_.read(tw.row0, tw.rows, tw.col0, tw.cols, ws_.elevation_m.data(), ws_.category.data(),
              ws_.valid.data());
     tw.tex = terrain_texels(ws_);
-    ++summary_.windows;
-    summary_.max_window_cells = std::max(summary_.max_window_cells, std::int64_t(nc));
+    ++block_counts_->windows;
+    block_counts_->max_window_cells = std::max(block_counts_->max_window_cells, std::int64_t(nc));
     const int samples = pg().rays.samples;
 #pragma omp parallel for schedule(dynamic, 1)
     for (int k = g0; k < g1; ++k) {
@@ -412,7 +538,7 @@ class PpiStreamRun {
 
   // Rays [k0, k1): geometry from the sampled terrain, then each ray's range
   // profile (form_slar_image's per-line step).
-  void block_profiles(int k0, int k1, SlarLineProfiles& prof) {
+  void block_profiles(int k0, int k1, SlarLineProfiles& prof, RayCounts& counts) {
     const int n = k1 - k0, samples = pg().rays.samples;
     SlarGeometry& g = geom_;
     g = SlarGeometry{};
@@ -425,7 +551,7 @@ class PpiStreamRun {
     prof.allocate(n, bins(), k0);
     std::int64_t in_swath = 0;
     std::int64_t shadow = 0, layover = 0, back = 0, nodata = 0;
-    float r_min = r_min_, r_max = r_max_;
+    float r_min = counts.r_min, r_max = counts.r_max;
 #pragma omp parallel reduction(+ : in_swath, shadow, layover, back, nodata) \
     reduction(min : r_min) reduction(max : r_max)
     {
@@ -477,13 +603,13 @@ class PpiStreamRun {
         }
       }
     }
-    in_swath_ += in_swath;
-    shadow_ += shadow;
-    layover_ += layover;
-    back_facing_ += back;
-    nodata_samples_ += nodata;
-    r_min_ = r_min;
-    r_max_ = r_max;
+    counts.in_swath += in_swath;
+    counts.shadow += shadow;
+    counts.layover += layover;
+    counts.back_facing += back;
+    counts.nodata += nodata;
+    counts.r_min = r_min;
+    counts.r_max = r_max;
   }
 
   struct Sinks {
@@ -491,8 +617,7 @@ class PpiStreamRun {
     ByteWriter mask;
   };
 
-  void rays_pass() {
-    specs_ = ppi_raster_specs(grid(), sim());
+  Sinks open_sinks() {
     Sinks sinks;
     sinks.mean = open_writer<float>("mean_power_bscope.tif", bins(), scan_rays(), specs_.bscope,
                                     "mean_power_w", nullptr);
@@ -500,44 +625,87 @@ class PpiStreamRun {
                                         specs_.bscope, "speckled_power_w", nullptr);
     sinks.mask = open_writer<std::uint8_t>("mask_bscope.tif", bins(), scan_rays(), specs_.bscope,
                                            "mask", nullptr);
+    return sinks;
+  }
+
+  // Blocks of rays computed on any rank (compute_block) and integrated,
+  // faded and written by rank 0 in ray order: the azimuth integrator's
+  // running sums are summed in ray order, as in one process
+  // (docs/scale.md).
+  void rays_pass() {
+    const bool root = group_.rank() == 0;
     const SlarImage& b = sim().bscope;
-    looks_.resize(sz(bins()));
-    for (int k = 0; k < bins(); ++k)
-      looks_[sz(k)] = independent_samples(sim().radar, b.range.near_m + (k + 0.5) * b.range.bin_m);
+    std::optional<Sinks> sinks;
+    std::optional<SlarAzimuthIntegrator> az;
+    if (root) {
+      specs_ = ppi_raster_specs(grid(), sim());
+      sinks.emplace(open_sinks());
+      looks_.resize(sz(bins()));
+      for (int k = 0; k < bins(); ++k)
+        looks_[sz(k)] =
+            independent_samples(sim().radar, b.range.near_m + (k + 0.5) * b.range.bin_m);
+      az.emplace(rs_.imaging, pg().rays.line_spacing_m, all_rays(), bins());
+    }
     const TwoWayGainTable gain2(rs_.imaging.elevation_gain, rs_.imaging.peak_gain,
                                 sim().radar.source_file);
     ctx_.emplace(detail::element_context(rs_.imaging, gain2, rs_.lut, bins()));
-    SlarAzimuthIntegrator az(rs_.imaging, pg().rays.line_spacing_m, all_rays(), bins());
-    SlarLineProfiles prof;
     const std::int64_t cells = std::int64_t(grid().rows) * grid().cols;
-    for (int k0 = 0; k0 < all_rays(); k0 += summary_.block_rays) {
-      const int k1 = std::min(all_rays(), k0 + summary_.block_rays);
-      sample_block_terrain(k0, k1);
-      block_profiles(k0, k1, prof);
-      az.push(prof, k1 - k0);
-      emit_ready(az, sinks);
-      ++summary_.blocks;
-      bar_->advance(cells * (k1 - k0) / std::max(all_rays(), 1));
-    }
-    RIS_CHECK(az.lines_emitted() == all_rays());
-    if (in_swath_ == 0) {
+    const int blocks = (all_rays() + summary_.block_rays - 1) / summary_.block_rays;
+    RayCounts counts;
+    detail::run_blocks_in_order<RayBlock>(
+        group_, blocks, schedule_, [&](int k) { return compute_block(k); }, pack_ray_block,
+        unpack_ray_block,
+        [&](int, RayBlock& k) {
+          counts.add(k.counts);
+          az->push(k.prof, k.k1 - k.k0);
+          emit_ready(*az, *sinks);
+          ++summary_.blocks;
+          bar_->advance(cells * (k.k1 - k.k0) / std::max(all_rays(), 1));
+          if (spare_.size() < 2) spare_.push_back(std::move(k));
+        });
+    if (!root) return;
+    RIS_CHECK(az->lines_emitted() == all_rays());
+    if (counts.in_swath == 0) {
       throw InputError(sim().radar.source_file, "sweep_delay",
                        fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the scene, "
                                    "which spans slant range {:.1f} to {:.1f} m; expected a sweep "
                                    "delay and length (or near range and range bins) that overlap "
                                    "it",
-                                   b.range.near_m, b.range.far_m(), r_min_, r_max_));
+                                   b.range.near_m, b.range.far_m(), counts.r_min, counts.r_max));
     }
+    summary_.windows = counts.windows;
+    summary_.max_window_cells = counts.max_window_cells;
     SlarGeometry& g = sim().geometry.rays;
-    g.nodata_samples = nodata_samples_;
-    g.shadow_samples = shadow_;
-    g.back_facing_samples = back_facing_;
-    g.layover_samples = layover_;
+    g.nodata_samples = counts.nodata;
+    g.shadow_samples = counts.shadow;
+    g.back_facing_samples = counts.back_facing;
+    g.layover_samples = counts.layover;
     g.nodata_cells = nodata_cells_;
-    sim().bscope.samples_in_swath = in_swath_;
-    sinks.mean->close();
-    sinks.speckled->close();
-    sinks.mask->close();
+    sim().bscope.samples_in_swath = counts.in_swath;
+    sinks->mean->close();
+    sinks->speckled->close();
+    sinks->mask->close();
+  }
+
+  // Block b's rays on this rank: their terrain from windows of the scene
+  // file, geometry and range profiles.
+  RayBlock compute_block(int b) {
+    RayBlock k;
+    if (!spare_.empty()) {  // buffers reused
+      k = std::move(spare_.back());
+      spare_.pop_back();
+    }
+    if (b == fail_block_) {
+      throw std::runtime_error(fmt::format("block {}: a failure injected by RIS_FAIL_BLOCK", b));
+    }
+    k.k0 = b * summary_.block_rays;
+    k.k1 = std::min(all_rays(), k.k0 + summary_.block_rays);
+    k.counts = RayCounts();
+    block_counts_ = &k.counts;
+    sample_block_terrain(k.k0, k.k1);
+    block_profiles(k.k0, k.k1, k.prof, k.counts);
+    block_counts_ = nullptr;
+    return k;
   }
 
   // The rays the integrator has ready: switch corrections, then those of the
@@ -741,6 +909,9 @@ class PpiStreamRun {
   }
 
   const SceneStreamReader in_;
+  ProcessGroup& group_ = process_group();
+  const detail::BlockSchedule schedule_;
+  const int fail_block_;  // RIS_FAIL_BLOCK, -1: none
   const PpiStreamOptions& options_;
   const SlarRunInfo& info_;
   const std::filesystem::path out_dir_;
@@ -771,9 +942,8 @@ class PpiStreamRun {
   std::vector<std::uint8_t> t_flags_;
   Scene ws_;  // the window
   SlarGeometry geom_;
-  std::int64_t in_swath_ = 0, shadow_ = 0, layover_ = 0, back_facing_ = 0, nodata_samples_ = 0;
-  float r_min_ = std::numeric_limits<float>::infinity();
-  float r_max_ = -std::numeric_limits<float>::infinity();
+  RayCounts* block_counts_ = nullptr;  // the block being computed
+  std::vector<RayBlock> spare_;        // consumed blocks, their buffers reused
   FloatRankSelect power_;
   std::vector<float> mean_, speckled_;
   std::vector<std::uint8_t> mask_;

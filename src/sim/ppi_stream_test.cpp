@@ -213,31 +213,61 @@ TEST(PpiStream, CommandLineStreamsPpiRuns) {
   }
 }
 
-// Under mpirun with more than one rank a streamed PPI run is refused (every
-// rank would write the folder; its rays are not split over ranks yet), and
-// nothing is written; one rank runs it.
-TEST(PpiStream, MpiWithSeveralRanksIsRefused) {
-  if (std::string(test::mpiexec()).empty()) GTEST_SKIP() << "ris was built without MPI";
+// The sum of the sizes of the files in `dir`.
+std::int64_t folder_bytes(const fs::path& dir) {
+  std::int64_t n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) n += std::int64_t(fs::file_size(e.path()));
+  return n;
+}
+
+// The free-disk check of a PPI run counts its products (rays x bins and the
+// scope: ppi_product_size), not the scene's cells. The bound holds
+// what an in-memory run writes uncompressed and is not loose (within 1.5
+// times it); on a scene of 2000^2 cells (28 MB at the SLAR's 7 bytes a
+// cell) the ground radar's run passes a disk ceiling just above the bound
+// (RIS_MAX_DISK_MB) and is refused, writing nothing, just below it.
+TEST(PpiStream, DiskCheckCountsThePpiProductsNotTheScene) {
   test::TempDir dir;
-  const std::string scene = (dir / "s.tif").string();
+  const std::string radar_path =
+      std::string(ris::test::data_dir()) + "/radars/ppi-ground-mast-30m.toml";
+  const std::int64_t bound = ppi_product_size(load_radar(radar_path)).bytes;
+  const std::string small = (dir / "small.tif").string();
   ASSERT_EQ(
-      test::run_ris("scene fractal --quiet --size 100x70 --cell-size 60 -o " + scene).exit_code, 0);
-  const std::string log = (dir / "log.txt").string();
-  const auto run = [&](int ranks, const fs::path& out) {
-    const std::string cmd = fmt::format(
-        "env OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_rmaps_base_oversubscribe=1 "
-        "{} --oversubscribe --allow-run-as-root -np {} {} simulate --quiet --scene {} --radar "
-        "{}/radars/ppi-ground-mast-30m.toml --stream --out {} > {} 2>&1",
-        test::mpiexec(), ranks, test::ris_exe(), scene, test::data_dir(), out.string(), log);
-    const int status = std::system(cmd.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      test::run_ris("scene fractal --quiet --size 200x140 --cell-size 30 -o " + small).exit_code,
+      0);
+  const std::string common = "simulate --quiet --radar " + radar_path + " --scene ";
+  const test::RunResult raw =
+      test::run_ris(common + small + " --compress none --out " + (dir / "raw").string());
+  ASSERT_EQ(raw.exit_code, 0) << raw.output;
+  const std::int64_t written = folder_bytes(dir / "raw");
+  EXPECT_LE(written, bound);
+  EXPECT_GE(3 * written, 2 * bound) << "the bound " << bound << " is loose: " << written;
+
+  const std::string big = (dir / "big.tif").string();
+  ASSERT_EQ(test::run_ris("scene fractal --quiet --generator noise --size 2000 --cell-size 10 "
+                          "--relief 100 -o " +
+                          big)
+                .exit_code,
+            0);
+  const std::int64_t mib = std::int64_t(1) << 20;
+  ASSERT_GT(2000LL * 2000 * 7, bound + 2 * mib) << "the scene must outweigh the products";
+  // The ceiling for the ris runs this test starts (they inherit it).
+  const auto run_under = [&](std::int64_t cap_mib, const fs::path& out) {
+    ::setenv("RIS_MAX_DISK_MB", std::to_string(cap_mib).c_str(), 1);
+    const test::RunResult r = test::run_ris(common + big + " --stream --out " + out.string());
+    ::unsetenv("RIS_MAX_DISK_MB");
+    return r;
   };
-  EXPECT_NE(run(2, dir / "two"), 0);
-  EXPECT_NE(test::read_file(log).find("not split over MPI ranks"), std::string::npos)
-      << test::read_file(log);
-  EXPECT_FALSE(fs::exists(dir / "two"));
-  EXPECT_EQ(run(1, dir / "one"), 0) << test::read_file(log);
-  EXPECT_TRUE(fs::exists(dir / "one" / "ppi_scope.png"));
+  const test::RunResult ok = run_under(bound / mib + 2, dir / "ok");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_LE(folder_bytes(dir / "ok"), bound);
+  const test::RunResult refused = run_under(bound / mib - 1, dir / "refused");
+  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_NE(refused.output.find("'scan.pixel': the products of a PPI run (720 rays x 400 range "
+                                "bins, a scope of 800 x 800 pixels)"),
+            std::string::npos)
+      << refused.output;
+  EXPECT_FALSE(fs::exists(dir / "refused"));
 }
 
 // Runs ris with the arguments; returns its peak resident set in MiB (-1 on

@@ -122,14 +122,26 @@ constexpr std::int64_t kProductBytesPerCell = 7;
 
 // The output folder, checked once every input is read and before any work:
 // no folder where a file is, no product over one of the run's inputs
-// (ris/io/safe_paths.h), room for the products (ris/util/resource_guard.h).
-void check_out_dir(const RunRequest& r, RadarMode mode, std::int64_t rows, std::int64_t cols) {
+// (ris/io/safe_paths.h), room for the products (ris/util/resource_guard.h;
+// a PPI's are sized by its rays, bins and scope, not by the scene).
+void check_out_dir(const RunRequest& r, const RadarParams& radar, std::int64_t rows,
+                   std::int64_t cols) {
   if (r.out_dir.empty()) return;
+  const RadarMode mode = radar.mode;
   std::vector<std::string> stems{"metadata"};
   for (std::string_view s : mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems()) {
     stems.emplace_back(s);
   }
   require_safe_output_folder(r.out_dir, stems, "--out");
+  if (mode == RadarMode::ppi) {  // the key of the larger part named
+    const PpiProductSize z = ppi_product_size(radar);
+    require_disk(z.bytes, r.out_dir, radar.source_file,
+                 z.scope_bytes >= z.bscope_bytes ? "scan.pixel" : "scan.ray_spacing",
+                 fmt::format("the products of a PPI run ({:.0f} rays x {:.0f} range bins, a "
+                             "scope of {:.0f} x {:.0f} pixels)",
+                             z.rays, z.bins, z.scope_pixels, z.scope_pixels));
+    return;
+  }
   const std::int64_t cells = checked_mul(rows, cols, r.scene_path, "");
   require_disk(checked_mul(cells, kProductBytesPerCell, r.scene_path, ""), r.out_dir, "", "--out",
                fmt::format("the products of a {} x {} cell scene", cols, rows));
@@ -154,14 +166,9 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   require_regular_input(r.scene_path, "--scene");
   {
     const SceneStreamReader probe(r.scene_path);  // the header only
-    check_out_dir(r, res.radar.mode, probe.grid().rows, probe.grid().cols);
+    check_out_dir(r, res.radar, probe.grid().rows, probe.grid().cols);
   }
   if (res.radar.mode == RadarMode::ppi) {  // rays in blocks (ris/sim/ppi_stream.h)
-    if (process_group().size() > 1) {
-      throw InputError("", "mpirun",
-                       "a streamed PPI run is not split over MPI ranks yet; run it as one "
-                       "process (without mpirun, or with -np 1)");
-    }
     PpiStreamOptions o;
     o.block_rays = r.block_lines;
     o.quiet = r.quiet;
@@ -310,7 +317,7 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   }
   res.has_targets = !options.targets.empty();
   res.targets_path = r.targets_path;
-  check_out_dir(r, radar.mode, res.scene->rows, res.scene->cols);
+  check_out_dir(r, radar, res.scene->rows, res.scene->cols);
 
   if (radar.mode == RadarMode::ppi) {
     res.kind = RunKind::ppi;

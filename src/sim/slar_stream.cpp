@@ -205,25 +205,6 @@ double process_cpu_seconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-// How an MPI run hands out pass 1's blocks (src/sim/block_schedule.h):
-// RIS_MPI_SCHEDULE=interleaved or dynamic (the default; docs/scale.md).
-detail::BlockSchedule block_schedule_from_environment() {
-  const char* v = std::getenv("RIS_MPI_SCHEDULE");
-  if (v == nullptr || std::string(v).empty() || std::string(v) == "dynamic")
-    return detail::BlockSchedule::dynamic;
-  if (std::string(v) == "interleaved") return detail::BlockSchedule::interleaved;
-  throw InputError("", "RIS_MPI_SCHEDULE",
-                   fmt::format("expected dynamic or interleaved, got '{}'", v));
-}
-
-// The failure tests' hooks: RIS_FAIL_BLOCK=b (RIS_FAIL_GEO_BLOCK=b) makes
-// pass 1's (pass 2b's) block b throw on the rank that computes it
-// (tests/mpi_cli_test.cpp); unset: -1, none.
-int failing_block_from_environment(const char* name) {
-  const char* v = std::getenv(name);
-  return v == nullptr ? -1 : std::atoi(v);
-}
-
 // A pixel counted by the auto greytone reference (ris/image/greytone.h).
 inline bool valid_power(float p, std::uint8_t mask) {
   return std::isfinite(p) && p > 0.0f && !(mask & pixel_flag::kNoData);
@@ -257,9 +238,9 @@ class StreamRun {
             const Sigma0Source& sigma0, const SlarRunInfo& info,
             const std::filesystem::path& out_dir, const SlarStreamOptions& options)
       : in_(scene_path),
-        schedule_(block_schedule_from_environment()),
-        fail_block_(failing_block_from_environment("RIS_FAIL_BLOCK")),
-        fail_geo_block_(failing_block_from_environment("RIS_FAIL_GEO_BLOCK")),
+        schedule_(detail::block_schedule_from_environment()),
+        fail_block_(detail::failing_block_from_environment("RIS_FAIL_BLOCK")),
+        fail_geo_block_(detail::failing_block_from_environment("RIS_FAIL_GEO_BLOCK")),
         options_(options),
         info_(info),
         out_dir_(out_dir) {

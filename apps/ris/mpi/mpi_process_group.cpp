@@ -1,19 +1,26 @@
 // The tool built with MPI (Debian's OpenMPI): the ranks of MPI_COMM_WORLD as
 // a ProcessGroup. MPI is started only when a launcher started this process
 // (its environment says so), so `ris` run by hand never initialises MPI.
+#include <fmt/format.h>
 #include <mpi.h>
+#include <pthread.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <limits>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
 #include "process_group_start.h"
+#include "ris/io/atomic_file.h"
 #include "ris/util/error.h"
 
 namespace ris::app {
@@ -27,6 +34,57 @@ bool started_by_mpi_launcher() {
     if (std::getenv(v) != nullptr) return true;
   }
   return false;
+}
+
+std::atomic<int> g_rank{-1}, g_size{0};  // for the message of stop_cleanly_on_signal
+
+// When a rank fails or is killed (the OOM killer, a test's SIGKILL),
+// OpenMPI's mpirun ends the others with SIGTERM, and SIGKILL a second later
+// (odls_base_sigkill_timeout); Ctrl-C on mpirun does the same. By default
+// that leaves rank 0's hidden staging folder behind. So SIGTERM and SIGINT
+// are blocked in every thread (before MPI and OpenMP start theirs) and one
+// thread waits for them: it removes the staging folders (every file staged
+// so far) and ends the process. Not a signal handler: removing folders is
+// not async-signal-safe, a thread may do it.
+void stop_cleanly_on_signal() {
+  sigset_t stop;
+  sigemptyset(&stop);
+  sigaddset(&stop, SIGTERM);
+  sigaddset(&stop, SIGINT);
+  pthread_sigmask(SIG_BLOCK, &stop, nullptr);
+  std::thread([stop] {
+    int sig = 0;
+    if (sigwait(&stop, &sig) != 0) return;
+    remove_staged_directories();
+    if (g_rank.load() == 0) {
+      std::fputs(fmt::format("ris (rank 0 of {}): error: stopped by signal {} ({}): the MPI "
+                             "launcher ends every rank when one fails or is killed (its message "
+                             "names the rank); no output written, the staging folder removed\n",
+                             g_size.load(), sig, sig == SIGTERM ? "SIGTERM" : "SIGINT")
+                     .c_str(),
+                 stderr);
+      std::fflush(stderr);
+    }
+    std::_Exit(128 + sig);
+  }).detach();
+}
+
+// An error in an MPI call (a peer's connection lost when its node dies,
+// before the launcher has stopped this rank): MPI_ERRORS_ARE_FATAL would
+// abort at once and leave the staging folder; this handler removes it
+// first, says so, then aborts every rank.
+void on_mpi_error(MPI_Comm*, int* code, ...) {
+  remove_staged_directories();
+  char text[MPI_MAX_ERROR_STRING] = {};
+  int length = 0;
+  MPI_Error_string(*code, text, &length);
+  std::fputs(fmt::format("ris (rank {} of {}): error: MPI: {}; no output written, the staging "
+                         "folder removed\n",
+                         g_rank.load(), g_size.load(), std::string(text, std::size_t(length)))
+                 .c_str(),
+             stderr);
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, 3);
 }
 
 int checked_count(std::size_t bytes) {
@@ -43,6 +101,11 @@ class MpiProcessGroup final : public ProcessGroup {
     MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    g_size = size_;
+    g_rank = rank_;
+    MPI_Errhandler on_error = MPI_ERRHANDLER_NULL;
+    MPI_Comm_create_errhandler(on_mpi_error, &on_error);
+    MPI_Comm_set_errhandler(MPI_COMM_WORLD, on_error);
     if (provided >= MPI_THREAD_SERIALIZED) progress_ = std::thread([this] { progress_loop(); });
   }
   ~MpiProcessGroup() override {
@@ -227,6 +290,7 @@ class MpiProcessGroup final : public ProcessGroup {
 
 std::unique_ptr<ProcessGroup> join_process_group(int& argc, char**& argv) {
   if (!started_by_mpi_launcher()) return nullptr;
+  stop_cleanly_on_signal();
   return std::make_unique<MpiProcessGroup>(argc, argv);
 }
 

@@ -54,9 +54,16 @@ class StagedDirectory {
   void commit();
 
  private:
+  void forget_staging() noexcept;
+
   std::filesystem::path final_;
   std::filesystem::path staging_;
   bool committed_ = false;
 };
+
+// Removes the staging folder of every StagedDirectory alive in this process
+// (from a thread that is ending the process on a signal, while another may
+// still write into them: an MPI rank stopped by mpirun, docs/scale.md).
+void remove_staged_directories() noexcept;
 
 }  // namespace ris

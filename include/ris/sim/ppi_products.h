@@ -50,6 +50,24 @@ PpiRasterSpecs ppi_raster_specs(const Scene& grid, const PpiSimulation& sim);
 // The product stems of a PPI run (ProductSelection; docs/outputs.md).
 const std::vector<std::string_view>& ppi_product_stems();
 
+// An upper bound on the disk a PPI run's products take at their largest
+// (the free-disk check before a run, ris/util/resource_guard.h), from the
+// radar alone: they are sized by its rays, range bins and scope, not by the
+// scene. Every file uncompressed (the speckled power barely compresses), in
+// whole 256-pixel tiles with a third more for overviews on large rasters:
+// the B-scope's scan rays x bins at 4 + 4 + 1 bytes (mean and speckled
+// power, mask) and bscope.png, the scope's size^2 pixels (at its largest,
+// the slant-range radius) at 4 + 1 (power, mask) and ppi_scope.png, the
+// streamed run's two temporary greytone rasters (1 byte a pixel) the PNGs
+// are made from, and 1 MiB for metadata.json and the files' headers.
+struct PpiProductSize {
+  double rays = 0, bins = 0;  // the B-scope (scan rays x range bins)
+  double scope_pixels = 0;    // the scope's side
+  double bscope_bytes = 0, scope_bytes = 0;
+  std::int64_t bytes = 0;  // the whole bound (B-scope, scope, 1 MiB)
+};
+PpiProductSize ppi_product_size(const RadarParams& radar);
+
 // Writes the products info.products selects (all by default) with
 // info.compression, concurrently.
 void write_ppi_products(const std::filesystem::path& out_dir, const Scene& scene,
