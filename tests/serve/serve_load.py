@@ -4,8 +4,10 @@ for a given time, each re-simulating (depression, film, seed) and fetching
 the image. Passes when no request failed (a 409 "superseded" is a correct
 answer, counted apart) and the server's resident memory at the end is within
 25% + 32 MiB of its size after the first seconds. Prints p50/p95 latency.
+--no-memory-bound drops the memory condition (the ASan build: its
+quarantine of freed blocks, 256 MiB by default, is what would be measured).
 
-Usage: serve_load.py RIS_EXE OUT_DIR [--clients 8] [--seconds 20]
+Usage: serve_load.py RIS_EXE OUT_DIR [--clients 8] [--seconds 20] [--no-memory-bound]
 """
 import argparse
 import os
@@ -44,6 +46,7 @@ def main():
     ap.add_argument("out_dir")
     ap.add_argument("--clients", type=int, default=8)
     ap.add_argument("--seconds", type=float, default=20.0)
+    ap.add_argument("--no-memory-bound", action="store_true")
     a = ap.parse_args()
     server = Server(a.ris_exe, a.out_dir)
     results = []
@@ -81,7 +84,7 @@ def main():
     if failed or any(h[0] != 200 for h in health):
         print(f"FAIL: failed requests, e.g. {failed[:3]}")
         ok = False
-    if rss_end > 1.25 * rss_warm + 32 * 1024:
+    if not a.no_memory_bound and rss_end > 1.25 * rss_warm + 32 * 1024:
         print("FAIL: server memory grew")
         ok = False
     if code != 0:
