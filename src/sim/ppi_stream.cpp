@@ -36,8 +36,15 @@
 #include "ris/util/progress.h"
 #include "ris/util/rank_select.h"
 #include "sim/block_schedule.h"
+#include "sim/texel_window.h"
 
 namespace ris {
+
+using detail::CellBox;
+using detail::read_texel_window;
+using detail::sample_cells;
+using detail::sample_from_window;
+using detail::TexelWindow;
 
 namespace {
 
@@ -75,72 +82,6 @@ std::vector<std::uint64_t> median_ranks(std::uint64_t n) {
 double median_value(const FloatRankSelect& sel, std::uint64_t n) {
   if (n % 2 != 0) return sel.value(0);
   return 0.5 * (double(sel.value(0)) + double(sel.value(1)));
-}
-
-// A rectangle of scene cells, [r0, r1] x [c0, c1] (inclusive; empty when r0 > r1).
-struct CellBox {
-  int r0 = 1, r1 = 0, c0 = 1, c1 = 0;
-  bool empty() const { return r0 > r1 || c0 > c1; }
-  std::int64_t cells() const { return empty() ? 0 : std::int64_t(r1 - r0 + 1) * (c1 - c0 + 1); }
-  CellBox united(const CellBox& o) const {
-    if (empty()) return o;
-    if (o.empty()) return *this;
-    return {std::min(r0, o.r0), std::max(r1, o.r1), std::min(c0, o.c0), std::max(c1, o.c1)};
-  }
-};
-
-// The cells sample j's interpolation touches (bilinear_cells on the whole
-// scene): its first corner and the next row and column.
-CellBox sample_cells(const Scene& grid, const GridLine& line, int j) {
-  const auto b = bilinear_cells<std::int64_t>(grid.rows, grid.cols, line.col(j), line.row(j));
-  const int r = static_cast<int>(b.cell00 / grid.cols), c = static_cast<int>(b.cell00 % grid.cols);
-  return {r, r + (b.step_row != 0 ? 1 : 0), c, c + (b.step_col != 0 ? 1 : 0)};
-}
-
-// A window of the scene with its texels (ris/geometry/terrain_line.h): the
-// texel of every cell that has its four neighbours in the window, or lies on
-// the scene's edge, is the whole scene's.
-struct TexelWindow {
-  int row0 = 0, col0 = 0, rows = 0, cols = 0;
-  TerrainTexels tex;
-};
-
-// Samples [j0, j1) of `line` (whole-scene grid coordinates, all inside the
-// scene, every cell they touch inside the window) into out[j - j0]: the
-// line sampler's arithmetic (kernels/gather/terrain_sampler_kernels.cpp,
-// weigh_texels: the corners' weighted texels summed in corner order, a
-// corner of weight 0 skipped) on the window's texels.
-void sample_from_window(const TexelWindow& w, const Scene& grid, const GridLine& line, int j0,
-                        int j1, const SampledTerrain& out) {
-  const auto* t = reinterpret_cast<const float*>(w.tex.texel.get());
-  const std::int64_t wcols = w.cols;
-  const auto local = [&](std::int64_t cell) {
-    const std::int64_t r = cell / grid.cols, c = cell % grid.cols;
-    return 4 * ((r - w.row0) * wcols + (c - w.col0));
-  };
-  for (int j = j0; j < j1; ++j) {
-    const auto b = bilinear_cells<std::int64_t>(grid.rows, grid.cols, line.col(j), line.row(j));
-    const std::int64_t first = local(b.cell00);
-    const std::int64_t d1 = b.step_col != 0 ? 4 : 0, d2 = b.step_row != 0 ? 4 * wcols : 0;
-    const std::int64_t corner[4] = {first, first + d1, first + d2, first + d2 + d1};
-    float acc[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (int k = 0; k < 4; ++k) {
-      const float wk = b.weight[k];
-      if (!(wk > 0.0f)) continue;
-      const float* p = t + corner[k];
-      for (int q = 0; q < 4; ++q) acc[q] += wk * p[q];
-    }
-    const float h = acc[0];
-    const bool no_data = h != h;
-    const auto o = sz(j - j0);
-    out.height_m[o] = h;
-    out.dz_dx[o] = acc[1];
-    out.dz_dy[o] = acc[2];
-    out.category[o] = no_data
-                          ? std::uint16_t{0}
-                          : static_cast<std::uint16_t>(static_cast<int>(t[local(b.nearest) + 3]));
-    out.flags[o] = no_data ? sample_flag::kNoData : std::uint8_t{0};
-  }
 }
 
 // A block's counts of pass 1 (summed over the blocks; r_min and r_max: the
@@ -504,23 +445,8 @@ class PpiStreamRun {
 
   // Rays [g0, g1) (block-relative), samples [a, b), from one window.
   void sample_group(int g0, int g1, int a, int b, const CellBox& cells) {
-    const CellBox w = padded(cells);
-    TexelWindow tw;
-    tw.row0 = w.r0;
-    tw.col0 = w.c0;
-    tw.rows = w.r1 - w.r0 + 1;
-    tw.cols = w.c1 - w.c0 + 1;
+    const TexelWindow tw = read_texel_window(in_, cells, ws_);
     const std::size_t nc = sz(tw.rows) * sz(tw.cols);
-    ws_.rows = tw.rows;
-    ws_.cols = tw.cols;
-    ws_.dx_m = grid().dx_m;
-    ws_.dy_m = grid().dy_m;
-    ws_.elevation_m.resize(nc);
-    ws_.category.resize(nc);
-    ws_.valid.resize(nc);
-    in_.read(tw.row0, tw.rows, tw.col0, tw.cols, ws_.elevation_m.data(), ws_.category.data(),
-             ws_.valid.data());
-    tw.tex = terrain_texels(ws_);
     ++block_counts_->windows;
     block_counts_->max_window_cells = std::max(block_counts_->max_window_cells, std::int64_t(nc));
     const int samples = pg().rays.samples;

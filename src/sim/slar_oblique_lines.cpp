@@ -10,7 +10,7 @@
 
 #include "kernels/gather/oblique_scatter_kernels.h"
 #include "ris/geometry/terrain_line.h"
-#include "sim/slar_line_engine.h"
+#include "sim/slar_oblique_lines.h"
 
 namespace ris::detail {
 
@@ -22,49 +22,6 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 // cache while its cells are written, and a block's cells form runs of about
 // kBlockLines / |line_dc| cells along each scene row.
 constexpr int kBlockLines = 16;
-
-// The t with lo <= a0 + t da <= hi, as a closed interval (empty: first >
-// second); da == 0: everything or nothing.
-std::pair<double, double> affine_range(double a0, double da, double lo, double hi) {
-  constexpr double kAll = 1e300;
-  if (da > 0.0) return {(lo - a0) / da, (hi - a0) / da};
-  if (da < 0.0) return {(hi - a0) / da, (lo - a0) / da};
-  return (a0 >= lo && a0 <= hi) ? std::pair{-kAll, kAll} : std::pair{kAll, -kAll};
-}
-
-// [floor(a) - 1, ceil(b) + 1] clamped to [0, n): a candidate range whose
-// cell of margin covers the rounding of the analytic bounds (~1e-12 cells);
-// each candidate is then checked exactly. Empty (first == second) when b is
-// well below a.
-std::pair<int, int> candidates(std::pair<double, double> ab, int n) {
-  const double a = std::clamp(std::floor(ab.first) - 1.0, 0.0, double(n));
-  const double b = std::clamp(std::ceil(ab.second) + 2.0, 0.0, double(n));
-  return {static_cast<int>(a), static_cast<int>(std::max(a, b))};
-}
-
-// Shrinks [c_begin, c_end) to the cells where `takes` holds, given that they
-// are one interval within it.
-template <typename Takes>
-void trim(int& c_begin, int& c_end, Takes takes) {
-  while (c_begin < c_end && !takes(c_begin)) ++c_begin;
-  while (c_end > c_begin && !takes(c_end - 1)) --c_end;
-}
-
-// The cells of scene row r that take a line and a sample (cell_sample): one
-// interval of columns, as both indices are monotone in the column; every
-// other cell of the row is outside the swath.
-std::pair<int, int> swath_cells(const Scene& scene, const CellSampleFrame& f, int r) {
-  const double lbase = f.line_row_base(r), sbase = f.sample_row_base(r);
-  const auto [l_lo, l_hi] = affine_range(lbase, f.line_dc, -0.5, f.lines - 0.5);
-  const auto [s_lo, s_hi] = affine_range(sbase, f.sample_dc, -0.5, f.samples - 0.5);
-  auto [c_begin, c_end] = candidates({std::max(l_lo, s_lo), std::min(l_hi, s_hi)}, scene.cols);
-  trim(c_begin, c_end, [&](int c) {
-    int line = 0, j = 0;
-    return nearest_index(f.line_f(lbase, c), f.lines, line) &&
-           nearest_index(f.sample_f(sbase, c), f.samples, j);
-  });
-  return {c_begin, c_end};
-}
 
 // Marks the cells of each row outside its swath_cells (the blocks write all
 // the others).
@@ -79,11 +36,8 @@ void fill_outside_swath(const Scene& scene, const CellSampleFrame& f, SceneGeome
     const auto [c_begin, c_end] = swath_cells(scene, f, r);
     const std::size_t row = scene.index(r, 0);
     const auto outside = [&](int c0, int c1) {
-      for (std::size_t i = row + static_cast<std::size_t>(c0);
-           i < row + static_cast<std::size_t>(c1); ++i) {
-        mask[i] = (valid[i] ? 0 : scene_flag::kNoData) | scene_flag::kOutsideSwath;
-        incidence[i] = kNaN;
-      }
+      mark_outside_swath(valid + row, mask + row, incidence + row, static_cast<std::size_t>(c0),
+                         static_cast<std::size_t>(c1));
     };
     outside(0, c_begin);
     outside(c_end, scene.cols);
@@ -210,17 +164,13 @@ struct ObliqueSource {
   ObliqueThreadState& t;
 
   LineSpan load(int line, LineScratch& s) {
-    const SlarGeometry& g = t.run.g;
     const SlarLineSpan& span = t.spans[static_cast<std::size_t>(line - t.b.line0)];
-    const int n = span.end - span.begin;
-    const auto first = static_cast<std::ptrdiff_t>(span.begin);
-    sample_terrain_line(
-        t.run.tex, span.grid, span.begin, span.end,
-        {s.height.data(), s.dz_dx.data(), s.dz_dy.data(), s.category.data(), s.flags.data()});
-    std::copy(t.u_all.begin() + first, t.u_all.begin() + first + n, s.u.begin());
-    t.span_layout.samples = n;
-    t.span_layout.first_sample_u_m = g.sample_u_m(span.begin);
-    return {span.begin, n, &t.span_layout};
+    return load_oblique_span(
+        t.run.g, span, t.u_all, t.span_layout, s, [&](const SlarLineSpan& sp, LineScratch& out) {
+          sample_terrain_line(t.run.tex, sp.grid, sp.begin, sp.end,
+                              {out.height.data(), out.dz_dx.data(), out.dz_dy.data(),
+                               out.category.data(), out.flags.data()});
+        });
   }
   void store_maps(int line, const LineSpan& span, const LineScratch& s) {
     t.b.set_span(line, span.first, span.first + span.n);
@@ -255,6 +205,46 @@ struct ObliqueThreadSource {
 
 }  // namespace
 
+std::pair<double, double> affine_range(double a0, double da, double lo, double hi) {
+  constexpr double kAll = 1e300;
+  if (da > 0.0) return {(lo - a0) / da, (hi - a0) / da};
+  if (da < 0.0) return {(hi - a0) / da, (lo - a0) / da};
+  return (a0 >= lo && a0 <= hi) ? std::pair{-kAll, kAll} : std::pair{kAll, -kAll};
+}
+
+std::pair<int, int> candidates(std::pair<double, double> ab, int n) {
+  const double a = std::clamp(std::floor(ab.first) - 1.0, 0.0, double(n));
+  const double b = std::clamp(std::ceil(ab.second) + 2.0, 0.0, double(n));
+  return {static_cast<int>(a), static_cast<int>(std::max(a, b))};
+}
+
+std::pair<int, int> swath_cells(const Scene& scene, const CellSampleFrame& f, int r) {
+  const double lbase = f.line_row_base(r), sbase = f.sample_row_base(r);
+  const auto [l_lo, l_hi] = affine_range(lbase, f.line_dc, -0.5, f.lines - 0.5);
+  const auto [s_lo, s_hi] = affine_range(sbase, f.sample_dc, -0.5, f.samples - 0.5);
+  auto [c_begin, c_end] = candidates({std::max(l_lo, s_lo), std::min(l_hi, s_hi)}, scene.cols);
+  trim(c_begin, c_end, [&](int c) {
+    int line = 0, j = 0;
+    return nearest_index(f.line_f(lbase, c), f.lines, line) &&
+           nearest_index(f.sample_f(sbase, c), f.samples, j);
+  });
+  return {c_begin, c_end};
+}
+
+SampleMapValue unseen_map_value(double near_m, double far_m) {
+  return scene_map_sample(sample_flag::kUnseen, kNaN, kNaN, near_m, far_m);
+}
+
+ObliqueStages::ObliqueStages(const SlarGeometry& g, const Sigma0Lut& lut,
+                             const SlarImagingParams& p, const std::string& radar_file, int bins,
+                             const LineKeep* keep)
+    : gain2_(p.elevation_gain, p.peak_gain, radar_file),
+      ctx_(element_context(p, gain2_, lut, bins)),
+      stages_{ctx_,
+              LineLookFrame{g.altitude_m, g.track.cross_x, g.track.cross_y,
+                            g.line_spacing_m * g.sample_step_m},
+              !gain2_.uniform() || (keep && keep->geometry), p.range_window_bins, keep} {}
+
 // The fused run for any other heading, through the line engine with the
 // oblique source. The stage path samples and scans the same spans
 // (slar_geometry.cpp fill_oblique_line) and assigns cells by the same rule
@@ -266,19 +256,15 @@ void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lu
                        const LineKeep* keep) {
   const TerrainTexels tex = terrain_texels(scene);
   const CellSampleFrame frame = cell_sample_frame(scene, g);
-  const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, radar_file);
-  const SlarElementContext ctx = element_context(p, gain2, lut, prof.bins);
-  const Track& t = g.track;
-  const LineStages stages{
-      ctx, LineLookFrame{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m},
-      !gain2.uniform() || (keep && keep->geometry), p.range_window_bins, keep};
+  const ObliqueStages os(g, lut, p, radar_file, prof.bins, keep);
+  const LineStages& stages = os.stages();
   const ObliqueRun run{scene, g, tex, frame, maps, p.range.near_m, p.range.far_m()};
   // Each row's cells outside the swath here, the others by the blocks
   // (each cell by one: not written twice).
   fill_outside_swath(scene, frame, maps);
   run_line_blocks(g, stages, 0, g.lines, kBlockLines, prof, counts, [&](LineScratch& s) {
     ObliqueThreadSource ts{{run, g, s.u, {}, std::vector<SlarLineSpan>(kBlockLines)}};
-    ts.t.b.unseen = scene_map_sample(sample_flag::kUnseen, kNaN, kNaN, run.near_m, run.far_m);
+    ts.t.b.unseen = unseen_map_value(run.near_m, run.far_m);
     return ts;
   });
 }

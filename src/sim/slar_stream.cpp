@@ -45,6 +45,7 @@
 #include "ris/util/rank_select.h"
 #include "ris/util/resource_guard.h"
 #include "sim/block_schedule.h"
+#include "sim/slar_stream_oblique.h"
 
 namespace ris {
 
@@ -350,15 +351,22 @@ class StreamRun {
     }
     sim().track = resolve_track(r.track, grid(), r.source_file);
     sim().geometry = slar_geometry_layout(grid(), sim().track, r.azimuth_line_spacing_m);
-    if (!fused_slar_applies(grid(), sim().geometry)) {
-      throw InputError(r.source_file, "track",
-                       "a streamed run needs a track along a grid axis (heading 0, 90, 180 or "
-                       "270 deg) with one azimuth line per cell row or column (azimuth line "
-                       "spacing = the cell size); oblique tracks need the scene in memory");
+    const SlarGeometry& g = sim().geometry;
+    if (g.direct_sampling && !fused_slar_applies(grid(), g)) {
+      throw InputError(r.source_file, "azimuth_line_spacing",
+                       "a streamed run of a track along a grid axis needs one azimuth line per "
+                       "cell row or column (azimuth line spacing = the cell size); other "
+                       "spacings need the scene in memory (run without --stream)");
     }
-    cross_cells_ = along_y_axis(sim().track) ? grid().cols : grid().rows;
+    // A track off the axes: its lines through slar_stream_oblique.h, ~30
+    // bytes a sample (the sampled terrain, map values and their copies).
+    oblique_ = !g.direct_sampling;
+    cross_cells_ = oblique_ ? static_cast<int>(std::max<std::int64_t>(
+                                  1, std::int64_t(grid().rows) * grid().cols / lines()))
+                            : (along_y_axis(sim().track) ? grid().cols : grid().rows);
     const std::int64_t per_line =
-        std::int64_t(cross_cells_) * 18 + std::int64_t(std::max(bins(), 1)) * 72;
+        (oblique_ ? std::int64_t(g.samples) * 30 : std::int64_t(cross_cells_) * 18) +
+        std::int64_t(std::max(bins(), 1)) * 72;
     const int n = lines();
     const int block_lines =
         options_.block_lines > 0
@@ -422,10 +430,16 @@ class StreamRun {
     k.mean = open_writer<float>("mean_power_slant.tif", bins(), lines());
     k.speckled = open_writer<float>("speckled_power_slant.tif", bins(), lines());
     k.mask = open_writer<std::uint8_t>("mask_slant.tif", bins(), lines());
-    k.scene_mask =
-        open_writer<std::uint8_t>("scene_mask.tif", grid().cols, grid().rows, line_order);
-    k.incidence =
-        open_writer<float>("local_incidence_deg.tif", grid().cols, grid().rows, line_order);
+    if (oblique_) {
+      // Off the axes, the blocks' per-sample map values (pass 1m's input).
+      k.scene_mask = open_spill<std::uint8_t>(kSpillMask);
+      k.incidence = open_spill<float>(kSpillIncidence);
+    } else {
+      k.scene_mask =
+          open_writer<std::uint8_t>("scene_mask.tif", grid().cols, grid().rows, line_order);
+      k.incidence =
+          open_writer<float>("local_incidence_deg.tif", grid().cols, grid().rows, line_order);
+    }
     k.shadow_text.open(dir_->path("shadowmap.txt"), std::ios::binary);
     if (!k.shadow_text) throw InputError(dir_->path("shadowmap.txt").string(), "", "cannot write");
     return k;
@@ -444,7 +458,13 @@ class StreamRun {
 
   void lines_pass() {
     const SlarGeometry& g = sim().geometry;
-    const SlarLineEngine engine(grid(), g, rs_.lut, rs_.imaging, radar().source_file);
+    std::optional<SlarLineEngine> engine;
+    std::optional<detail::ObliqueBlockLines> oblique;
+    if (oblique_) {
+      oblique.emplace(grid(), g, rs_.lut, rs_.imaging, radar().source_file, bins());
+    } else {
+      engine.emplace(grid(), g, rs_.lut, rs_.imaging, radar().source_file);
+    }
     const bool root = group_.rank() == 0;
     std::optional<SlarAzimuthIntegrator> az;
     std::optional<LineSinks> sinks;
@@ -456,7 +476,7 @@ class StreamRun {
     looks_.resize(sz(bins()));
     for (int k = 0; k < bins(); ++k)
       looks_[sz(k)] = independent_samples(radar(), rs_.imaging.range.centre_m(k));
-    const std::size_t win_cap = sz(block_lines() + 2) * sz(cross_cells_);
+    const std::size_t win_cap = oblique_ ? 0 : sz(block_lines() + 2) * sz(cross_cells_);
     z_.resize(win_cap);
     cat_.resize(win_cap);
     ok_.resize(win_cap);
@@ -476,7 +496,7 @@ class StreamRun {
         group_, blocks, schedule_,
         [&](int b) {
           const double t0 = process_cpu_seconds();
-          LineBlock k = compute_block(engine, b);
+          LineBlock k = oblique ? compute_oblique_block(*oblique, b) : compute_block(*engine, b);
           compute_cpu += process_cpu_seconds() - t0;
           ++computed;
           return k;
@@ -496,6 +516,7 @@ class StreamRun {
           if (spare_.size() < 2) spare_.push_back(std::move(k));
           consume_cpu += process_cpu_seconds() - t0;
         });
+    if (oblique_) oblique_maps_pass(sinks);
     // The median elevation's second pass: every rank refined its blocks.
     if (group_.size() > 1) {
       std::vector<std::uint64_t> low = ss_.elevation.counters();
@@ -508,8 +529,8 @@ class StreamRun {
     sinks->mean->close();
     sinks->speckled->close();
     sinks->mask->close();
-    sinks->scene_mask->close();
-    sinks->incidence->close();
+    if (sinks->scene_mask) sinks->scene_mask->close();  // pass 1m closed the spills
+    if (sinks->incidence) sinks->incidence->close();
     sinks->shadow_text.close();
     if (!sinks->shadow_text)
       throw InputError(dir_->path("shadowmap.txt").string(), "", "write failed");
@@ -526,6 +547,22 @@ class StreamRun {
   // formation and its own cells' maps; the median elevation's second pass
   // over its own cells.
   LineBlock compute_block(const SlarLineEngine& engine, int b) {
+    LineBlock k = start_block(b);
+    int row0 = 0, rows = 0, col0 = 0, cols = 0;
+    engine.window_for_lines(k.l0, k.l1, row0, rows, col0, cols);
+    in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
+    const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
+    const SceneMapsWindow maps{
+        row0, col0, rows, cols, window_mask_.data(), window_incidence_.data()};
+    k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
+    k.prof.samples_in_swath = 0;
+    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts);
+    keep_block_maps(engine, win, maps, k);
+    return k;
+  }
+
+  // Block b's lines and a block's buffers (a consumed block's, reused).
+  LineBlock start_block(int b) {
     LineBlock k;
     if (!spare_.empty()) {  // buffers reused
       k = std::move(spare_.back());
@@ -537,16 +574,20 @@ class StreamRun {
     k.l0 = b * block_lines();
     k.l1 = std::min(lines(), k.l0 + block_lines());
     k.counts = SlarLineCounts();
-    int row0 = 0, rows = 0, col0 = 0, cols = 0;
-    engine.window_for_lines(k.l0, k.l1, row0, rows, col0, cols);
-    in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
-    const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
-    const SceneMapsWindow maps{
-        row0, col0, rows, cols, window_mask_.data(), window_incidence_.data()};
+    return k;
+  }
+
+  // Block b of a track off the axes (slar_stream_oblique.h): its profile
+  // rows and counts, and its samples' map values as the block's maps (the
+  // spilled rasters' rows: lines x samples).
+  LineBlock compute_oblique_block(detail::ObliqueBlockLines& oblique, int b) {
+    LineBlock k = start_block(b);
     k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
     k.prof.samples_in_swath = 0;
-    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts);
-    keep_block_maps(engine, win, maps, k);
+    detail::ObliqueMapValues v{std::move(k.scene_mask), std::move(k.incidence)};
+    oblique.run(in_, k.l0, k.l1, k.prof, k.counts, v);
+    k.scene_mask = std::move(v.mask);
+    k.incidence = std::move(v.incidence_deg);
     return k;
   }
 
@@ -699,6 +740,116 @@ class StreamRun {
     g.nodata_cells = ss_.nodata_cells;
     sim().image.samples_in_swath = samples_in_swath;
     check_swath_hits_scene(samples_in_swath, rs_.imaging.range, counts, radar().source_file);
+  }
+
+  // ---- Pass 1m: a track off the axes' scene maps -----------------------
+  // Pass 1 spilled each sample's map values (lines x samples, uncompressed,
+  // in the staging folder); here blocks of scene rows take each cell's value
+  // from the sample nearest its centre (slar_stream_oblique.h), on every
+  // rank (the spills read from rank 0's staging folder, as pass 2b reads
+  // the slant products), written by rank 0 in row order; then the spills
+  // are removed. The median elevation's second pass over each block's rows.
+  template <typename T>
+  std::unique_ptr<GeoTiffBlockWriter<T>> open_spill(const char* file) {
+    GeoTiffCompression none;
+    none.method = "NONE";
+    none.overviews = false;
+    return std::make_unique<GeoTiffBlockWriter<T>>(dir_->path(file), sim().geometry.samples,
+                                                   lines(), std::vector<std::string>{file}, nullptr,
+                                                   std::nullopt, RasterMetadata{}, none);
+  }
+
+  // A block of scene rows' maps (any rank) for rank 0 to write.
+  struct MapBand {
+    int r0 = 0, rows = 0;
+    std::vector<std::uint8_t> mask;
+    std::vector<float> incidence;
+  };
+
+  void oblique_maps_pass(std::optional<LineSinks>& sinks) {
+    const bool root = group_.rank() == 0;
+    ByteWriter mask_out;
+    FloatWriter incidence_out;
+    if (root) {
+      sinks->scene_mask->close();
+      sinks->incidence->close();
+      sinks->scene_mask.reset();
+      sinks->incidence.reset();
+      mask_out = open_writer<std::uint8_t>("scene_mask.tif", grid().cols, grid().rows);
+      incidence_out = open_writer<float>("local_incidence_deg.tif", grid().cols, grid().rows);
+    }
+    const std::filesystem::path dir(
+        share_from_rank0(0.0, root ? dir_->path("").string() : std::string()).second);
+    const int fail = detail::failing_block_from_environment("RIS_FAIL_MAPS_BLOCK");
+    detail::ObliqueSceneMaps maps(grid(), sim().geometry, rs_.imaging.range.near_m,
+                                  rs_.imaging.range.far_m());
+    std::optional<GdalDataset> mask_ds, incidence_ds;  // at the first block (see geocoded_pass)
+    const detail::SpilledValuesReader read = [&](int l0, int nl, int j0, int nj, std::uint8_t* mask,
+                                                 float* incidence) {
+      read_window(handle(*mask_ds), l0, nl, j0, nj, mask, GDT_Byte, kSpillMask);
+      read_window(handle(*incidence_ds), l0, nl, j0, nj, incidence, GDT_Float32, kSpillIncidence);
+    };
+    const int block_rows = scene_block_rows_;
+    const std::size_t cap = sz(block_rows) * sz(grid().cols);
+    z_.resize(std::max(z_.size(), cap));
+    cat_.resize(z_.size());
+    ok_.resize(z_.size());
+    detail::run_blocks_in_order<MapBand>(
+        group_, (grid().rows + block_rows - 1) / block_rows, schedule_,
+        [&](int b) {
+          if (b == fail) {
+            throw std::runtime_error(
+                fmt::format("scene maps block {}: a failure injected by RIS_FAIL_MAPS_BLOCK", b));
+          }
+          if (!mask_ds) {
+            mask_ds.emplace(open_raster((dir / kSpillMask).string()));
+            incidence_ds.emplace(open_raster((dir / kSpillIncidence).string()));
+          }
+          MapBand k;
+          k.r0 = b * block_rows;
+          k.rows = std::min(block_rows, grid().rows - k.r0);
+          const std::size_t nc = sz(k.rows) * sz(grid().cols);
+          in_.read(k.r0, k.rows, 0, grid().cols, z_.data(), cat_.data(), ok_.data());
+          for (std::size_t i = 0; i < nc; ++i)
+            if (ok_[i] && std::isfinite(z_[i])) ss_.elevation.refine(z_[i]);
+          k.mask.resize(nc);
+          k.incidence.resize(nc);
+          maps.rows(k.r0, k.rows, ok_.data(), read, k.mask.data(), k.incidence.data());
+          return k;
+        },
+        [](const MapBand& k, std::vector<char>& out) {
+          const int head[2] = {k.r0, k.rows};
+          const char* h = reinterpret_cast<const char*>(head);
+          out.insert(out.end(), h, h + sizeof(head));
+          out.insert(out.end(), k.mask.begin(), k.mask.end());
+          const char* p = reinterpret_cast<const char*>(k.incidence.data());
+          out.insert(out.end(), p, p + k.incidence.size() * sizeof(float));
+        },
+        [&](const char* p, std::size_t n) {
+          MapBand k;
+          int head[2] = {};
+          RIS_CHECK(n >= sizeof(head));
+          std::memcpy(head, p, sizeof(head));
+          k.r0 = head[0];
+          k.rows = head[1];
+          const std::size_t nc = sz(k.rows) * sz(grid().cols);
+          RIS_CHECK(n == sizeof(head) + nc * (1 + sizeof(float)));
+          k.mask.assign(p + sizeof(head), p + sizeof(head) + nc);
+          k.incidence.resize(nc);
+          std::memcpy(k.incidence.data(), p + sizeof(head) + nc, nc * sizeof(float));
+          return k;
+        },
+        [&](int, MapBand& k) {
+          mask_out->write(k.mask.data(), k.rows);
+          incidence_out->write(k.incidence.data(), k.rows);
+        });
+    mask_ds.reset();
+    incidence_ds.reset();
+    if (!root) return;
+    mask_out->close();
+    incidence_out->close();
+    std::filesystem::remove(dir_->path(kSpillMask));
+    std::filesystem::remove(dir_->path(kSpillIncidence));
   }
 
   // ---- Pass 1b: the median mean power (auto greytone reference) ---------
@@ -1034,6 +1185,9 @@ class StreamRun {
   std::chrono::steady_clock::time_point mark_;
   double cpu_mark_ = 0.0;
   int cross_cells_ = 0;
+  bool oblique_ = false;  // a track off the grid axes (slar_stream_oblique.h)
+  static constexpr const char* kSpillMask = ".oblique_mask.tmp.tif";
+  static constexpr const char* kSpillIncidence = ".oblique_incidence.tmp.tif";
   int scene_block_rows_ = 0;
   SceneSummary ss_;
   std::uint64_t n_elev_ = 0;
