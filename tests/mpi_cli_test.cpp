@@ -70,14 +70,14 @@ void expect_same_files(const fs::path& ref, const fs::path& out, const std::stri
   EXPECT_GE(files, min_files) << tag;
 }
 
-// A small noise scene (300 x 200 cells of 10 m), run by one process and by
-// 1, 2 and 3 ranks in blocks of 16 lines (13 or 19 blocks).
-void expect_ranks_give_single_process_bytes(const std::string& radar, const std::string& tag) {
+// A small noise scene (300 x 200 cells of 10 m, or `size`), run by one
+// process and by 1, 2 and 3 ranks in blocks of 16 lines (13 or 19 blocks).
+void expect_ranks_give_single_process_bytes(const std::string& radar, const std::string& tag,
+                                            const std::string& size = "300x200") {
   test::TempDir dir;
   const std::string scene = (dir / "scene.tif").string();
-  const auto s = test::run_ris(
-      "scene fractal --generator noise --size 300x200 --cell-size 10 --relief 300 --base 50 -o " +
-      scene);
+  const auto s = test::run_ris("scene fractal --generator noise --size " + size +
+                               " --cell-size 10 --relief 300 --base 50 -o " + scene);
   ASSERT_EQ(s.exit_code, 0) << s.output;
   const std::string args = " simulate --quiet --threads 1 --block-lines 16 --scene " + scene +
                            " --radar " + radar + " --out ";
@@ -118,6 +118,17 @@ TEST(MpiCli, IncoherentSarGivesSingleProcessBytes) {
   expect_ranks_give_single_process_bytes(
       radar_with(dir, "r.toml", "sar-x-band-stripmap.toml", "coherent = true", "coherent = false"),
       "incoherent SAR");
+}
+
+// A track off the grid axes (ris/sim/slar_stream.h, slar_stream_oblique.h)
+// on 300 x 600 cells: 42 blocks of 16 lines, and the scene maps' pass (1m)
+// in 3 blocks of 256 rows, both split over the ranks.
+TEST(MpiCli, ObliqueSlarGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "seed-fig4-5.toml", "heading = \"0 deg\"", "heading = \"30 deg\""),
+      "SLAR heading 30", "300x600");
 }
 
 // A streamed PPI run (rays in blocks, ris/sim/ppi_stream.h) on a noise
@@ -263,6 +274,17 @@ TEST(MpiCli, AFailingRankFailsTheRunWithoutOutput) {
   EXPECT_NE(r.output.find("rank 1 of 2 failed"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("RIS_FAIL_GEO_BLOCK"), std::string::npos) << r.output;
   expect_nothing_written(dir, "a worker's geocoding block");
+  // A block of an oblique track's scene maps (pass 1m) on rank 1, after
+  // rank 0 has spilled the samples' map values into its staging folder.
+  const std::string oblique = radar_with(dir, "r30.toml", "seed-fig4-5.toml", "heading = \"0 deg\"",
+                                         "heading = \"30 deg\"");
+  r = run_shell(mpirun(2, "RIS_MPI_SCHEDULE=interleaved RIS_FAIL_MAPS_BLOCK=1") + test::ris_exe() +
+                " simulate --quiet --threads 1 --block-lines 64 --scene " + tall + " --radar " +
+                oblique + " --out " + (dir / "out").string());
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("rank 1 of 2 failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("RIS_FAIL_MAPS_BLOCK"), std::string::npos) << r.output;
+  expect_nothing_written(dir, "a worker's scene maps block");
   // The same block on rank 0 (dynamic; 1 rank).
   r = run_shell(mpirun(1, "RIS_FAIL_BLOCK=1") + args);
   EXPECT_NE(r.exit_code, 0) << r.output;
