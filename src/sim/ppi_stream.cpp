@@ -41,6 +41,7 @@
 namespace ris {
 
 using detail::CellBox;
+using detail::padded_box;
 using detail::read_texel_window;
 using detail::sample_cells;
 using detail::sample_from_window;
@@ -436,12 +437,8 @@ class PpiStreamRun {
         .united(sample_cells(grid(), lines_[sz(k)], je - 1));
   }
 
-  // A box grown by the one cell each side the slopes read, within the scene.
-  CellBox padded(const CellBox& c) const {
-    return {std::max(0, c.r0 - 1), std::min(grid().rows - 1, c.r1 + 1), std::max(0, c.c0 - 1),
-            std::min(grid().cols - 1, c.c1 + 1)};
-  }
-  std::int64_t padded_cells(const CellBox& c) const { return padded(c).cells(); }
+  // The cells of a box grown by the one cell each side the slopes read.
+  std::int64_t padded_cells(const CellBox& c) const { return padded_box(c, grid()).cells(); }
 
   // Rays [g0, g1) (block-relative), samples [a, b), from one window.
   void sample_group(int g0, int g1, int a, int b, const CellBox& cells) {

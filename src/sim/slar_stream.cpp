@@ -810,8 +810,9 @@ class StreamRun {
           k.rows = std::min(block_rows, grid().rows - k.r0);
           const std::size_t nc = sz(k.rows) * sz(grid().cols);
           in_.read(k.r0, k.rows, 0, grid().cols, z_.data(), cat_.data(), ok_.data());
-          for (std::size_t i = 0; i < nc; ++i)
-            if (ok_[i] && std::isfinite(z_[i])) ss_.elevation.refine(z_[i]);
+          for (std::size_t i = 0; i < nc; ++i) {
+            if (ok_[i] && std::isfinite(z_[i])) ss_.elevation.refine(z_[i]);  // the band's cells
+          }
           k.mask.resize(nc);
           k.incidence.resize(nc);
           maps.rows(k.r0, k.rows, ok_.data(), read, k.mask.data(), k.incidence.data());

@@ -14,13 +14,19 @@ CellBox sample_cells(const Scene& grid, const GridLine& line, int j) {
   return {r, r + (b.step_row != 0 ? 1 : 0), c, c + (b.step_col != 0 ? 1 : 0)};
 }
 
+CellBox padded_box(const CellBox& c, const Scene& grid) {
+  return {std::max(0, c.r0 - 1), std::min(grid.rows - 1, c.r1 + 1), std::max(0, c.c0 - 1),
+          std::min(grid.cols - 1, c.c1 + 1)};
+}
+
 TexelWindow read_texel_window(const SceneStreamReader& in, const CellBox& cells, Scene& ws) {
   const Scene& grid = in.grid();
+  const CellBox w = padded_box(cells, grid);
   TexelWindow tw;
-  tw.row0 = std::max(0, cells.r0 - 1);
-  tw.col0 = std::max(0, cells.c0 - 1);
-  tw.rows = std::min(grid.rows - 1, cells.r1 + 1) - tw.row0 + 1;
-  tw.cols = std::min(grid.cols - 1, cells.c1 + 1) - tw.col0 + 1;
+  tw.row0 = w.r0;
+  tw.col0 = w.c0;
+  tw.rows = w.r1 - w.r0 + 1;
+  tw.cols = w.c1 - w.c0 + 1;
   const std::size_t nc = static_cast<std::size_t>(tw.rows) * static_cast<std::size_t>(tw.cols);
   ws.rows = tw.rows;
   ws.cols = tw.cols;

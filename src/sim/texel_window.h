@@ -38,6 +38,9 @@ struct TexelWindow {
   TerrainTexels tex;
 };
 
+// `cells` grown by the one cell each side the slopes read, within the scene.
+CellBox padded_box(const CellBox& cells, const Scene& grid);
+
 // The window of `cells` grown by the one cell each side the slopes read
 // (within the scene), read from `in` into `scratch` (its buffers reused) and
 // its texels made.
