@@ -768,6 +768,8 @@ class StreamRun {
 
   void oblique_maps_pass(std::optional<LineSinks>& sinks) {
     const bool root = group_.rank() == 0;
+    if (root) stage_done();  // pass 1's lines; lines_pass ends this stage
+    stage("scene maps (pass 1m)");
     ByteWriter mask_out;
     FloatWriter incidence_out;
     if (root) {
