@@ -339,8 +339,9 @@ class StreamRun {
     summary_.stage_cpu_seconds.push_back(process_cpu_seconds() - cpu_mark_);
   }
 
-  // What the stream runs (SLAR and the incoherent SAR along a grid axis: the
-  // direct line engine) and the block sizes.
+  // What the stream runs (SLAR and the incoherent SAR: along a grid axis the
+  // direct line engine, off the axes slar_stream_oblique.h) and the block
+  // sizes.
   void plan() {
     const RadarParams& r = radar();
     if (!(r.mode == RadarMode::slar || (r.mode == RadarMode::sar && !r.sar.coherent))) {

@@ -24,6 +24,11 @@
 //      slar_azimuth_integrator.h); mean power, fading (keyed by seed, bin,
 //      line), masks, shadow map and the scene-grid maps written; the median
 //      elevation's second pass;
+//   1m (a track off the grid axes) the scene-grid maps, scene rows top
+//      down, from the samples' map values pass 1 spilled to temporary
+//      rasters (pass 1 then samples each block's lines from windows of the
+//      scene along them: src/sim/slar_stream_oblique.h); the median
+//      elevation's second pass;
 //   1b the mean power read back for the exact median (auto greytone
 //      reference), when the radar asks for it;
 //   2b the geocoded products, scene rows top down, reading back the
@@ -38,10 +43,11 @@
 // order (azimuth integration, fading, every write), and pass 1b and the
 // PNGs run on rank 0: the products are the single process's bytes.
 //
-// It runs SLAR tracks along a grid axis (heading 0, 90, 180 or 270 deg, one
-// azimuth line per cell row or column: fused_slar_applies); other tracks,
-// SAR, PPI and point targets need the in-memory path and are refused with
-// an InputError that says so.
+// It runs SLAR and incoherent SAR tracks at any heading (along a grid axis
+// with one azimuth line per cell row or column, fused_slar_applies; off the
+// axes with any line spacing); other line spacings along an axis, the
+// coherent SAR, PPI (ris/sim/ppi_stream.h) and point targets need the
+// in-memory path and are refused with an InputError that says so.
 //
 // Example:
 //   ris::SlarStreamOptions o;  o.block_lines = 512;
