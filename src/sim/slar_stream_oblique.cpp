@@ -161,9 +161,6 @@ void ObliqueBlockLines::sample_segment(const SceneStreamReader& in, int k0, int 
   }
   if (box.empty()) return;
   const TexelWindow tw = read_texel_window(in, box, window_);
-  const std::int64_t cells = std::int64_t(tw.rows) * tw.cols;
-  cells_read_ += cells;
-  max_window_cells_ = std::max(max_window_cells_, cells);
 #pragma omp parallel for schedule(dynamic, 4)
   for (int k = k0; k < k1; ++k) {
     const SlarLineSpan& s = spans_[sz(k)];

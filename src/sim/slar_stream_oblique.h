@@ -52,10 +52,6 @@ class ObliqueBlockLines {
   void run(const SceneStreamReader& in, int l0, int l1, SlarLineProfiles& prof,
            SlarLineCounts& counts, ObliqueMapValues& maps);
 
-  // Scene cells read per block so far, and the largest window (cells).
-  std::int64_t cells_read() const { return cells_read_; }
-  std::int64_t max_window_cells() const { return max_window_cells_; }
-
  private:
   void sample_block(const SceneStreamReader& in, int l0, int l1);
   void sample_segment(const SceneStreamReader& in, int k0, int k1, int a, int b);
@@ -72,7 +68,6 @@ class ObliqueBlockLines {
   std::vector<std::uint16_t> category_;
   std::vector<std::uint8_t> flags_;
   Scene window_;  // a segment's cells, its buffers reused
-  std::int64_t cells_read_ = 0, max_window_cells_ = 0;
 };
 
 // Reads lines [line0, line0 + lines) x samples [j0, j0 + n) of the spilled

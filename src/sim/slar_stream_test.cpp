@@ -172,13 +172,14 @@ TEST(SlarStream, ObliqueStreamedEqualsInMemoryByteForByte) {
   omp_set_num_threads(saved);
 }
 
-// The incoherent SAR streams too (range and azimuth windows, NESZ noise):
-// the same bytes as in memory, metadata included.
+// The incoherent SAR streams too (range and azimuth windows, NESZ noise),
+// along the axes and off them: the same bytes as in memory, metadata
+// included.
 TEST(SlarStream, StreamedSarEqualsInMemoryByteForByte) {
   const SceneFile f;
   const Scene read = read_scene(f.path);
   const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
-  for (double heading : {0.0, 270.0}) {
+  for (double heading : {0.0, 270.0, 30.0}) {  // 30: slar_stream_oblique.h
     RadarParams radar = test_radar(f.scene, heading, true);
     radar.mode = RadarMode::sar;
     radar.sar.range_resolution_m = 2.5 * radar.range_bin_m;
