@@ -124,8 +124,10 @@ constexpr std::int64_t kProductBytesPerCell = 7;
 // no folder where a file is, no product over one of the run's inputs
 // (ris/io/safe_paths.h), room for the products (ris/util/resource_guard.h;
 // a PPI's are sized by its rays, bins and scope, not by the scene).
+// temporary_bytes: what a streamed run also writes there for a while
+// (streamed_temporary_bytes).
 void check_out_dir(const RunRequest& r, const RadarParams& radar, std::int64_t rows,
-                   std::int64_t cols) {
+                   std::int64_t cols, std::int64_t temporary_bytes = 0) {
   if (r.out_dir.empty()) return;
   const RadarMode mode = radar.mode;
   std::vector<std::string> stems{"metadata"};
@@ -143,8 +145,14 @@ void check_out_dir(const RunRequest& r, const RadarParams& radar, std::int64_t r
     return;
   }
   const std::int64_t cells = checked_mul(rows, cols, r.scene_path, "");
-  require_disk(checked_mul(cells, kProductBytesPerCell, r.scene_path, ""), r.out_dir, "", "--out",
-               fmt::format("the products of a {} x {} cell scene", cols, rows));
+  const std::int64_t products = checked_mul(cells, kProductBytesPerCell, r.scene_path, "");
+  require_disk(checked_add(products, temporary_bytes, r.scene_path, ""), r.out_dir, "", "--out",
+               fmt::format("the products of a {} x {} cell scene{}", cols, rows,
+                           temporary_bytes > 0
+                               ? fmt::format(" and {:.0f} MiB of temporary files (a streamed "
+                                             "track off the grid axes)",
+                                             double(temporary_bytes) / double(1 << 20))
+                               : std::string()));
 }
 
 void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
@@ -166,7 +174,8 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   require_regular_input(r.scene_path, "--scene");
   {
     const SceneStreamReader probe(r.scene_path);  // the header only
-    check_out_dir(r, res.radar, probe.grid().rows, probe.grid().cols);
+    check_out_dir(r, res.radar, probe.grid().rows, probe.grid().cols,
+                  streamed_temporary_bytes(probe.grid(), res.radar));
   }
   if (res.radar.mode == RadarMode::ppi) {  // rays in blocks (ris/sim/ppi_stream.h)
     PpiStreamOptions o;

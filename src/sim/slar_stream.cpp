@@ -230,6 +230,19 @@ std::int64_t in_memory_run_bytes(std::int64_t rows, std::int64_t cols, const std
   return checked_mul(checked_mul(rows, cols, file, key), kInMemoryBytesPerCell, file, key);
 }
 
+// Pass 1m's input: a mask byte and a float a sample.
+constexpr std::int64_t kSpillBytesPerSample = 5;
+
+std::int64_t streamed_temporary_bytes(const Scene& grid, const RadarParams& radar) {
+  if (!(radar.mode == RadarMode::slar || (radar.mode == RadarMode::sar && !radar.sar.coherent)))
+    return 0;
+  const Track track = resolve_track(radar.track, grid, radar.source_file);
+  const SlarGeometry g = slar_geometry_layout(grid, track, radar.azimuth_line_spacing_m);
+  if (g.direct_sampling) return 0;
+  return checked_mul(checked_mul(g.lines, g.samples, radar.source_file, "azimuth_line_spacing"),
+                     kSpillBytesPerSample, radar.source_file, "azimuth_line_spacing");
+}
+
 namespace {
 
 // A streamed run's state and its passes, in the order run() calls them.

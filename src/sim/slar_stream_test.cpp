@@ -6,7 +6,9 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "ris/perf/bench_setup.h"
 #include "ris/scene/scene_io.h"
 #include "ris/sensor/radar_config.h"
+#include "ris/sim/run.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 #include "slar_fixtures.h"
@@ -170,6 +173,55 @@ TEST(SlarStream, ObliqueStreamedEqualsInMemoryByteForByte) {
     }
   }
   omp_set_num_threads(saved);
+}
+
+// The free-disk check of a streamed track off the grid axes counts the
+// temporaries pass 1 spills for pass 1m (lines x samples x 5 bytes; 0 along
+// an axis): a disk ceiling (RIS_MAX_DISK_MB) above the products and the
+// temporaries passes, one above the products alone but below both is
+// refused, naming them and writing nothing.
+TEST(SlarStream, DiskCheckCountsAnObliqueTracksTemporaries) {
+  const SceneFile f(oblique_test_scene());
+  const Scene grid = read_scene(f.path);
+  const RadarParams along = test_radar(f.scene, 0.0, true);
+  EXPECT_EQ(streamed_temporary_bytes(grid, along), 0);
+  const RadarParams oblique = test_radar(f.scene, 30.0, true);
+  const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
+  const SlarSimulation sim = simulate_slar(grid, oblique, src);
+  const std::int64_t temporaries = streamed_temporary_bytes(grid, oblique);
+  EXPECT_EQ(temporaries, std::int64_t(sim.geometry.lines) * sim.geometry.samples * 5);
+  const std::int64_t mib = std::int64_t(1) << 20;
+  const std::int64_t products = std::int64_t(grid.rows) * grid.cols * 7;
+  ASSERT_GT(temporaries, 2 * mib) << "the temporaries must outweigh the margin below";
+  const auto run_under = [&](std::int64_t cap_mib, const fs::path& out) {
+    RunRequest r;
+    r.scene_path = f.path;
+    r.radar = oblique;
+    r.sigma0 = std::make_shared<test::CosineSigma0Source>(src);
+    r.out_dir = out;
+    r.stream = true;
+    r.quiet = true;
+    ::setenv("RIS_MAX_DISK_MB", std::to_string(cap_mib).c_str(), 1);
+    try {
+      run_simulation(r, {});
+    } catch (...) {
+      ::unsetenv("RIS_MAX_DISK_MB");
+      throw;
+    }
+    ::unsetenv("RIS_MAX_DISK_MB");
+  };
+  EXPECT_NO_THROW(run_under((products + temporaries) / mib + 2, f.dir / "ok"));
+  EXPECT_TRUE(fs::exists(f.dir / "ok" / "scene_mask.tif"));
+  try {
+    run_under(products / mib + 1, f.dir / "refused");  // above the products alone
+    ADD_FAILURE() << "not refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("MiB of temporary files (a streamed track off the grid "
+                                         "axes)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(f.dir / "refused"));
 }
 
 // The incoherent SAR streams too (range and azimuth windows, NESZ noise),

@@ -117,4 +117,12 @@ bool scene_needs_streaming(std::int64_t rows, std::int64_t cols);
 std::int64_t in_memory_run_bytes(std::int64_t rows, std::int64_t cols, const std::string& file,
                                  const std::string& key);
 
+// The temporary files a streamed SLAR or incoherent SAR run writes into its
+// staging folder beside the products and removes before it ends: for a
+// track off the grid axes the samples' scene-map values (azimuth lines x
+// samples x 5 bytes, pass 1m's input); 0 along an axis and for other modes.
+// grid: the scene's grid (SceneStreamReader::grid). Throws InputError
+// naming the radar file for a track that cannot be placed (resolve_track).
+std::int64_t streamed_temporary_bytes(const Scene& grid, const RadarParams& radar);
+
 }  // namespace ris
