@@ -45,6 +45,7 @@
 #include "ris/util/rank_select.h"
 #include "ris/util/resource_guard.h"
 #include "sim/block_schedule.h"
+#include "sim/slar_stream_targets.h"
 
 namespace ris {
 
@@ -393,6 +394,9 @@ class StreamRun {
     img.bins = bins();
     img.range = rs_.imaging.range;
     img.line_spacing_m = sim().geometry.line_spacing_m;
+    // Point targets checked on the scene and placed on their lines.
+    if (!options_.targets.empty())
+      targets_.emplace(options_.targets, options_.targets_file, in_, sim().geometry, img);
   }
 
   template <typename T>
@@ -440,6 +444,7 @@ class StreamRun {
     SlarLineCounts counts;
     std::vector<std::uint8_t> scene_mask;
     std::vector<float> incidence;
+    detail::BlockTargets targets;  // its point targets, lit or not
   };
 
   void lines_pass() {
@@ -486,6 +491,7 @@ class StreamRun {
         [&](int, LineBlock& k) {
           const double t0 = process_cpu_seconds();
           counts.add(k.counts);
+          if (targets_) targets_->add(k.targets);
           samples_in_swath += k.prof.samples_in_swath;
           write_block_maps(k, *sinks);
           write_shadow_text(k.prof, k.l0, k.l1, sinks->shadow_text);
@@ -505,6 +511,10 @@ class StreamRun {
     if (!root) return;
     RIS_CHECK(az->lines_emitted() == lines());
     finish_counts(counts, samples_in_swath);
+    if (targets_) {
+      targets_->finish(sim());
+      summary_.irfs = targets_->measure(sim(), false);
+    }
     sinks->mean->close();
     sinks->speckled->close();
     sinks->mask->close();
@@ -545,7 +555,12 @@ class StreamRun {
         row0, col0, rows, cols, window_mask_.data(), window_incidence_.data()};
     k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
     k.prof.samples_in_swath = 0;
-    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts);
+    // The point targets on the block's lines, found lit or hidden there.
+    std::optional<detail::LinePointTargets> on_lines;
+    if (targets_) on_lines = targets_->candidates_on_lines(k.l0, k.l1);
+    const detail::LineKeep keep{nullptr, nullptr, on_lines ? &*on_lines : nullptr};
+    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts, on_lines ? &keep : nullptr);
+    k.targets = on_lines ? targets_->block_result(*on_lines) : detail::BlockTargets{};
     keep_block_maps(engine, win, maps, k);
     return k;
   }
@@ -568,6 +583,7 @@ class StreamRun {
     put(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
     put(k.scene_mask.data(), nm);
     put(k.incidence.data(), nm * sizeof(float));
+    detail::pack_block_targets(k.targets, out);
   }
 
   static LineBlock unpack_block(const char* p, std::size_t n) {
@@ -604,6 +620,7 @@ class StreamRun {
     k.incidence.resize(nm);
     get(k.scene_mask.data(), nm);
     get(k.incidence.data(), nm * sizeof(float));
+    k.targets = detail::unpack_block_targets(p, end);
     RIS_CHECK(p == end);
     return k;
   }
@@ -677,6 +694,9 @@ class StreamRun {
     mask_.resize(np);
     az.emit(n, block.mean_power_w.data(), block.area_m2.data(), mask_.data());
     finish_slar_image(sim(), block, rs_.terms);
+    // The point targets' measurement windows (of the mean power before
+    // NaN for no data, as measure_point_targets reads it).
+    if (targets_) targets_->observe(k0, n, block.mean_power_w.data());
     mean_.assign(block.mean_power_w.begin(), block.mean_power_w.end());
     for (std::size_t i = 0; i < np; ++i) {
       if (valid_power(mean_[i], mask_[i])) power_.count(mean_[i]);
@@ -1011,9 +1031,9 @@ class StreamRun {
     pic_meta.reference_greytone = map.reference_greytone();
     pic_meta.greytones_per_decade = map.greytones_per_decade();
     pic_meta.film_offset = map.film_offset();
-    write_text_file_atomic(
-        dir_->path("metadata.json"),
-        slar_metadata(grid(), ss_.h_min, ss_.h_max, sim(), pic_meta, info_).dump(2) + "\n");
+    nlohmann::json meta = slar_metadata(grid(), ss_.h_min, ss_.h_max, sim(), pic_meta, info_);
+    if (targets_) meta["point_targets"] = targets_->metadata(summary_.irfs, sim(), false);
+    write_text_file_atomic(dir_->path("metadata.json"), meta.dump(2) + "\n");
   }
 
   const SceneStreamReader in_;
@@ -1038,6 +1058,7 @@ class StreamRun {
   SceneSummary ss_;
   std::uint64_t n_elev_ = 0;
   RadiometrySetup rs_;
+  std::optional<detail::StreamTargets> targets_;  // with point targets
   std::vector<double> looks_;
   FloatRankSelect power_;  // the median mean power's two passes
   // Buffers reused across blocks and passes.

@@ -38,10 +38,11 @@
 // order (azimuth integration, fading, every write), and pass 1b and the
 // PNGs run on rank 0: the products are the single process's bytes.
 //
-// It runs SLAR tracks along a grid axis (heading 0, 90, 180 or 270 deg, one
-// azimuth line per cell row or column: fused_slar_applies); other tracks,
-// SAR, PPI and point targets need the in-memory path and are refused with
-// an InputError that says so.
+// It runs SLAR and SAR tracks along a grid axis (heading 0, 90, 180 or 270
+// deg, one azimuth line per cell row or column: fused_slar_applies), with
+// point targets (src/sim/slar_stream_targets.h); other tracks and the
+// coherent SAR need the in-memory path and are refused with an InputError
+// that says so (PPI streams through ris/sim/ppi_stream.h).
 //
 // Example:
 //   ris::SlarStreamOptions o;  o.block_lines = 512;
@@ -59,6 +60,8 @@
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/radar_params.h"
+#include "ris/sim/point_target.h"
+#include "ris/sim/point_target_irf.h"
 #include "ris/sim/slar_products.h"
 #include "ris/sim/slar_simulation.h"
 
@@ -73,6 +76,10 @@ struct SlarStreamOptions {
   std::optional<double> reference_height_m;
   // No progress bar (it shows only on a terminal anyway).
   bool quiet = false;
+  // Point scatterers added to the scene (ris/sim/point_target.h), as
+  // SlarOptions::targets; targets_file names them in metadata.json.
+  std::vector<PointTarget> targets;
+  std::string targets_file;
 };
 
 struct SlarStreamSummary {
@@ -88,6 +95,9 @@ struct SlarStreamSummary {
   // cost model of docs/scale.md.
   std::vector<double> stage_cpu_seconds;
   std::vector<std::pair<std::string, double>> cpu_parts;
+  // With point targets: their measurements, as measure_point_targets gives
+  // them (sim.point_returns and sim.hidden_targets are set too).
+  std::vector<PointTargetIrf> irfs;
 };
 
 // Runs the simulation and writes every product of write_slar_products into
