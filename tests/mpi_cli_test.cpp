@@ -1,6 +1,7 @@
 // `mpirun -np N ris simulate ... --stream` (docs/scale.md): every product the
 // same bytes as a single process, for SLAR along the grid (heading 0) and
-// across it (heading 90), SLAR with point targets, the incoherent SAR and PPI (both shipped radars,
+// across it (heading 90), SLAR with point targets, the incoherent and the
+// coherent SAR and PPI (both shipped radars,
 // a sector); a failing or killed rank fails the whole run and leaves no output. Skipped when ris
 // was built without MPI.
 #include <gtest/gtest.h>
@@ -145,6 +146,17 @@ TEST(MpiCli, PointTargetsGiveSingleProcessBytes) {
   expect_ranks_give_single_process_bytes(
       radar_with(dir, "r.toml", "seed-fig4-5.toml", "heading = \"0 deg\"", "heading = \"0 deg\""),
       "SLAR with point targets", "--targets " + write_targets(dir));
+}
+
+// The coherent SAR (the shipped radar: 4 looks, NESZ) with point targets:
+// each rank computes its blocks with their halo of lines and sends their
+// intensity; rank 0 finishes them in line order: the same bytes.
+TEST(MpiCli, CoherentSarGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "sar-x-band-stripmap.toml", "coherent = true", "coherent = true"),
+      "coherent SAR", "--targets " + write_targets(dir));
 }
 
 // A streamed PPI run (rays in blocks, ris/sim/ppi_stream.h) on a noise
