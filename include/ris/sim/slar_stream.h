@@ -12,7 +12,10 @@
 // local incidence: 12 bytes a cell), B x bins range profiles, the azimuth
 // running sums of B + 2 M lines (M: half the longest footprint, in lines)
 // and one strip of 256 tiles per output file; GDAL's block cache is capped
-// at 256 MiB (unless GDAL_CACHEMAX is set).
+// at 256 MiB (unless GDAL_CACHEMAX is set). The coherent SAR reads a halo of
+// H lines each side of a block (H: the azimuth response's half-length + 2;
+// src/sim/sar_coherent_stream.h) and keeps each of those lines' element
+// power and slant range (8 bytes a cell) and range-compressed lines.
 //
 // Passes (each reads the scene, or an image-sized product, once):
 //   0  scene statistics: cells with data, categories used (for the sigma0
