@@ -1,8 +1,9 @@
 // `mpirun -np N ris simulate ... --stream` (docs/scale.md): every product the
 // same bytes as a single process, for SLAR along the grid (heading 0) and
-// across it (heading 90), the incoherent SAR and PPI (both shipped radars, a
-// sector); a failing or killed rank fails the whole run and leaves no
-// output. Skipped when ris was built without MPI.
+// across it (heading 90), SLAR with point targets, the incoherent and the
+// coherent SAR and PPI (both shipped radars,
+// a sector); a failing or killed rank fails the whole run and leaves no output. Skipped when ris
+// was built without MPI.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -72,7 +73,9 @@ void expect_same_files(const fs::path& ref, const fs::path& out, const std::stri
 
 // A small noise scene (300 x 200 cells of 10 m, or `size`), run by one
 // process and by 1, 2 and 3 ranks in blocks of 16 lines (13 or 19 blocks).
+// extra_args: more options of `ris simulate` (--targets).
 void expect_ranks_give_single_process_bytes(const std::string& radar, const std::string& tag,
+                                            const std::string& extra_args = "",
                                             const std::string& size = "300x200") {
   test::TempDir dir;
   const std::string scene = (dir / "scene.tif").string();
@@ -80,7 +83,7 @@ void expect_ranks_give_single_process_bytes(const std::string& radar, const std:
                                " --cell-size 10 --relief 300 --base 50 -o " + scene);
   ASSERT_EQ(s.exit_code, 0) << s.output;
   const std::string args = " simulate --quiet --threads 1 --block-lines 16 --scene " + scene +
-                           " --radar " + radar + " --out ";
+                           " --radar " + radar + " " + extra_args + " --out ";
   const auto one = test::run_ris(args + (dir / "one").string());
   ASSERT_EQ(one.exit_code, 0) << tag << "\n" << one.output;
   for (int ranks : {1, 2, 3}) {
@@ -128,7 +131,43 @@ TEST(MpiCli, ObliqueSlarGivesSingleProcessBytes) {
   test::TempDir dir;
   expect_ranks_give_single_process_bytes(
       radar_with(dir, "r.toml", "seed-fig4-5.toml", "heading = \"0 deg\"", "heading = \"30 deg\""),
-      "SLAR heading 30", "300x600");
+      "SLAR heading 30", "", "300x600");
+}
+
+// Point targets over the 300 x 200-cell scene (3 x 2 km): in the open, near
+// its first line and its far corner, one high above the terrain.
+std::string write_targets(const test::TempDir& dir) {
+  const fs::path p = dir / "targets.toml";
+  test::write_file(p,
+                   "[[target]]\nname = \"a\"\nposition = [500.0, 1000.0]\nrcs = 10000.0\n"
+                   "[[target]]\nname = \"b\"\nposition = [1500.0, 300.0]\nheight = \"5 m\"\n"
+                   "rcs_db = 35\n"
+                   "[[target]]\nname = \"c\"\nposition = [2500.0, 1700.0]\nrcs = 5000.0\n"
+                   "[[target]]\nname = \"d\"\nposition = [2900.0, 15.0]\nrcs = 5000.0\n"
+                   "[[target]]\nname = \"e\"\nposition = [1200.0, 1990.0]\nheight = \"50 m\"\n"
+                   "rcs = 300.0\n");
+  return p.string();
+}
+
+// Point targets in a streamed SLAR run: each block finds the targets on its
+// lines lit or hidden, rank 0 measures them (metadata.json): the same bytes.
+TEST(MpiCli, PointTargetsGiveSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "seed-fig4-5.toml", "heading = \"0 deg\"", "heading = \"0 deg\""),
+      "SLAR with point targets", "--targets " + write_targets(dir));
+}
+
+// The coherent SAR (the shipped radar: 4 looks, NESZ) with point targets:
+// each rank computes its blocks with their halo of lines and sends their
+// intensity; rank 0 finishes them in line order: the same bytes.
+TEST(MpiCli, CoherentSarGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "sar-x-band-stripmap.toml", "coherent = true", "coherent = true"),
+      "coherent SAR", "--targets " + write_targets(dir));
 }
 
 // A streamed PPI run (rays in blocks, ris/sim/ppi_stream.h) on a noise

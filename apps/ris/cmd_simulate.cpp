@@ -64,6 +64,20 @@ void print_geometry_counts(const SlarGeometry& g) {
       100.0 * double(g.back_facing_samples) / samples, g.nodata_cells);
 }
 
+// The point targets' measurements and the names of those hidden (an
+// in-memory or streamed SLAR/SAR run).
+void print_point_targets(const std::vector<PointTargetIrf>& irfs,
+                         const std::vector<std::string>& hidden) {
+  for (const PointTargetIrf& t : irfs) {
+    fmt::print(
+        "  target at R {:.1f} m, s {:.1f} m: 3 dB width {:.2f} m (range) x {:.2f} m (azimuth), "
+        "PSLR {:.1f} dB, ISLR {:.1f} dB\n",
+        t.target.slant_range_m, t.target.along_m, t.irf.range.width_m, t.irf.azimuth.width_m,
+        t.irf.pslr_db, t.irf.islr_db);
+  }
+  for (const std::string& h : hidden) fmt::print("  target {} hidden\n", h);
+}
+
 void print_ppi(const RunRequest& r, const RunResult& res) {
   const PpiSimulation& ppi = *res.ppi;
   const SlarGeometry& g = ppi.geometry.rays;
@@ -91,14 +105,7 @@ void print_slar(const RunRequest& r, const RunResult& res) {
   fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
              sim.image.lines, sim.image.bins, sim.ground_grid.count);
   print_geometry_counts(sim.geometry);
-  for (const PointTargetIrf& t : res.irfs) {
-    fmt::print(
-        "  target at R {:.1f} m, s {:.1f} m: 3 dB width {:.2f} m (range) x {:.2f} m (azimuth), "
-        "PSLR {:.1f} dB, ISLR {:.1f} dB\n",
-        t.target.slant_range_m, t.target.along_m, t.irf.range.width_m, t.irf.azimuth.width_m,
-        t.irf.pslr_db, t.irf.islr_db);
-  }
-  for (const std::string& h : sim.hidden_targets) fmt::print("  target {} hidden\n", h);
+  print_point_targets(res.irfs, sim.hidden_targets);
 }
 
 void print_acquisition(const RunRequest& r, const RunResult& res) {
@@ -140,6 +147,7 @@ void print_streamed(const RunRequest& r, const RunResult& res) {
   fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
              s.sim.image.lines, s.sim.image.bins, s.sim.ground_grid.count);
   print_geometry_counts(s.sim.geometry);
+  print_point_targets(s.irfs, s.sim.hidden_targets);
   for (std::size_t i = 0; i < s.stage_seconds.size(); ++i) {
     const auto& [name, t] = s.stage_seconds[i];
     fmt::print("  {:.2f} s  {} ({:.2f} s CPU)\n", t, name,

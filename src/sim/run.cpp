@@ -156,11 +156,6 @@ void check_out_dir(const RunRequest& r, const RadarParams& radar, std::int64_t r
 }
 
 void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
-  if (!r.targets_path.empty() || (r.targets && !r.targets->empty())) {
-    throw InputError(r.targets_path, "--targets",
-                     "a streamed run does not take point targets; run the scene in memory "
-                     "(a smaller scene or window) to add them");
-  }
   if (!r.products.stems.empty() || r.compression != CompressionPreset::fast) {
     throw InputError(r.scene_path, r.products.stems.empty() ? "--compress" : "--products",
                      "a streamed run writes every product with the default compression; drop "
@@ -177,7 +172,13 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
     check_out_dir(r, res.radar, probe.grid().rows, probe.grid().cols,
                   streamed_temporary_bytes(probe.grid(), res.radar));
   }
+  const bool has_targets = !r.targets_path.empty() || (r.targets && !r.targets->empty());
   if (res.radar.mode == RadarMode::ppi) {  // rays in blocks (ris/sim/ppi_stream.h)
+    if (has_targets) {
+      throw InputError(r.targets_path, "--targets",
+                       "a streamed PPI run does not take point targets yet; drop --targets or "
+                       "run the PPI scene in memory (without --stream)");
+    }
     PpiStreamOptions o;
     o.block_rays = r.block_lines;
     o.quiet = r.quiet;
@@ -188,8 +189,17 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   SlarStreamOptions o;
   o.block_lines = r.block_lines;
   o.quiet = r.quiet;
+  if (r.targets) {
+    o.targets = *r.targets;
+  } else if (!r.targets_path.empty()) {
+    o.targets = load_point_targets(r.targets_path);
+  }
+  o.targets_file = r.targets_path;
+  res.has_targets = !o.targets.empty();
+  res.targets_path = r.targets_path;
   res.streamed =
       simulate_slar_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
+  res.irfs = res.streamed->irfs;
   // Once, by rank 0, in an MPI run (every rank sets up the same stages).
   if (process_group().rank() == 0)
     for (const std::string& w : res.streamed->sim.warnings) warn(cb, w);

@@ -72,9 +72,12 @@ std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScr
   const LineProfileRow out{prof.touch.data() + row, prof.mapped_count.data() + row,
                            prof.visible_count.data() + row, s.acc.acc.data(),
                            s.acc.acc_area.data()};
-  float* element_power = keep && keep->element_power_w
-                             ? keep->element_power_w + g->index(line, first_sample)
-                             : nullptr;
+  // The row of line in the kept arrays (from line keep->line0).
+  const std::size_t kept_at =
+      keep ? g->index(line, first_sample) - g->index(keep->line0, 0) : std::size_t{0};
+  float* element_power = keep && keep->element_power_w ? keep->element_power_w + kept_at : nullptr;
+  if (keep && keep->slant_range_m)
+    std::copy_n(s.range.data(), samples, keep->slant_range_m + kept_at);
   const LineElementTally t = form_line_profile(ctx, e, s.elements, out, element_power);
   counts.nodata += t.nodata;
   counts.shadow += t.shadow;

@@ -82,6 +82,12 @@ struct LineKeep {
   float* element_power_w = nullptr;
   // Point targets added to their lines' profiles.
   LinePointTargets* targets = nullptr;
+  // With element_power_w: each element's slant range too (null: not
+  // kept), in the same layout (the coherent SAR's range compression reads
+  // both; a streamed block keeps them, src/sim/sar_coherent_stream.h).
+  float* slant_range_m = nullptr;
+  // The line of the arrays' first row (a block's first line; 0: the run's).
+  int line0 = 0;
 };
 
 // The look geometry, element ends, cast shadow and layover of a line whose

@@ -45,7 +45,9 @@
 #include "ris/util/rank_select.h"
 #include "ris/util/resource_guard.h"
 #include "sim/block_schedule.h"
+#include "sim/sar_coherent_stream.h"
 #include "sim/slar_stream_oblique.h"
+#include "sim/slar_stream_targets.h"
 
 namespace ris {
 
@@ -303,7 +305,7 @@ class StreamRun {
     const double median = root ? median_mean_power() : 0.0;
     const auto [median_all, slant_dir] =
         share_from_rank0(median, root ? dir_->path("").string() : std::string());
-    const GreytoneMap map = make_greytone_map_for_median(radar(), median_all);
+    const GreytoneMap map = make_greytone_map_for_median(picture_radar(), median_all);
     set_ground_grid();
     stage("geocoded products (pass 2b)");
     geocoded_pass(map, slant_dir);
@@ -339,6 +341,13 @@ class StreamRun {
   int lines() const { return summary_.sim.geometry.lines; }
   int bins() const { return summary_.sim.derived.range_bins; }
   int block_lines() const { return summary_.block_lines; }
+  // The radar the pictures are made with (render_slar): the coherent SAR's
+  // speckle is in its intensity, so without fading.
+  RadarParams picture_radar() {
+    RadarParams r = radar();
+    if (r.mode == RadarMode::sar && r.sar.coherent) r.switches.fading = false;
+    return r;
+  }
 
   void stage(const std::string& name) {
     summary_.stage_seconds.emplace_back(name, 0.0);
@@ -357,11 +366,10 @@ class StreamRun {
   // sizes.
   void plan() {
     const RadarParams& r = radar();
-    if (!(r.mode == RadarMode::slar || (r.mode == RadarMode::sar && !r.sar.coherent))) {
+    if (!(r.mode == RadarMode::slar || r.mode == RadarMode::sar)) {
       throw InputError(r.source_file, "mode",
-                       "a streamed run simulates SLAR and the incoherent SAR; the coherent SAR "
-                       "and PPI need the scene in memory (run without --stream on a scene that "
-                       "fits)");
+                       "a streamed SLAR run simulates SLAR and SAR; PPI streams through "
+                       "simulate_ppi_streamed");
     }
     sim().track = resolve_track(r.track, grid(), r.source_file);
     sim().geometry = slar_geometry_layout(grid(), sim().track, r.azimuth_line_spacing_m);
@@ -375,12 +383,27 @@ class StreamRun {
     // A track off the axes: its lines through slar_stream_oblique.h, ~30
     // bytes a sample (the sampled terrain, map values and their copies).
     oblique_ = !g.direct_sampling;
+    // The coherent SAR also keeps each element's power and slant range,
+    // and per bin its range-compressed lines, z and intensity (twice: sent).
+    const bool coherent = r.mode == RadarMode::sar && r.sar.coherent;
+    if (oblique_ && coherent) {
+      throw InputError(r.source_file, "sar.coherent",
+                       "a streamed coherent SAR needs a track along a grid axis (heading 0, 90, "
+                       "180 or 270 deg); off the axes it needs the scene in memory (run without "
+                       "--stream)");
+    }
+    if (oblique_ && !options_.targets.empty()) {
+      throw InputError(options_.targets_file, "--targets",
+                       "a streamed run takes point targets on a track along a grid axis (heading "
+                       "0, 90, 180 or 270 deg); off the axes they need the scene in memory (run "
+                       "without --stream)");
+    }
     cross_cells_ = oblique_ ? static_cast<int>(std::max<std::int64_t>(
                                   1, std::int64_t(grid().rows) * grid().cols / lines()))
                             : (along_y_axis(sim().track) ? grid().cols : grid().rows);
-    const std::int64_t per_line =
-        (oblique_ ? std::int64_t(g.samples) * 30 : std::int64_t(cross_cells_) * 18) +
-        std::int64_t(std::max(bins(), 1)) * 72;
+    const std::int64_t per_line = (oblique_ ? std::int64_t(g.samples) * 30
+                                            : std::int64_t(cross_cells_) * (coherent ? 26 : 18)) +
+                                  std::int64_t(std::max(bins(), 1)) * (coherent ? 112 : 72);
     const int n = lines();
     const int block_lines =
         options_.block_lines > 0
@@ -415,6 +438,11 @@ class StreamRun {
     img.bins = bins();
     img.range = rs_.imaging.range;
     img.line_spacing_m = sim().geometry.line_spacing_m;
+    // Point targets checked on the scene and placed on their lines.
+    if (!options_.targets.empty())
+      targets_.emplace(options_.targets, options_.targets_file, in_, sim().geometry, img);
+    if (radar().mode == RadarMode::sar && radar().sar.coherent)
+      coherent_.emplace(sim(), info_.seed);
   }
 
   template <typename T>
@@ -468,6 +496,8 @@ class StreamRun {
     SlarLineCounts counts;
     std::vector<std::uint8_t> scene_mask;
     std::vector<float> incidence;
+    detail::BlockTargets targets;    // its point targets, lit or not
+    detail::CoherentBlock coherent;  // the coherent SAR's intensity
   };
 
   void lines_pass() {
@@ -489,8 +519,9 @@ class StreamRun {
     // N per range bin, as make_greytone_image.
     looks_.resize(sz(bins()));
     for (int k = 0; k < bins(); ++k)
-      looks_[sz(k)] = independent_samples(radar(), rs_.imaging.range.centre_m(k));
-    const std::size_t win_cap = oblique_ ? 0 : sz(block_lines() + 2) * sz(cross_cells_);
+      looks_[sz(k)] = independent_samples(picture_radar(), rs_.imaging.range.centre_m(k));
+    const int halo = coherent_ ? 2 * coherent_->halo_lines() : 0;  // the coherent SAR's
+    const std::size_t win_cap = oblique_ ? 0 : sz(block_lines() + halo + 2) * sz(cross_cells_);
     z_.resize(win_cap);
     cat_.resize(win_cap);
     ok_.resize(win_cap);
@@ -520,6 +551,8 @@ class StreamRun {
         [&](int, LineBlock& k) {
           const double t0 = process_cpu_seconds();
           counts.add(k.counts);
+          if (targets_) targets_->add(k.targets);
+          if (coherent_) coherent_->add(std::move(k.coherent));
           samples_in_swath += k.prof.samples_in_swath;
           write_block_maps(k, *sinks);
           write_shadow_text(k.prof, k.l0, k.l1, sinks->shadow_text);
@@ -540,6 +573,10 @@ class StreamRun {
     if (!root) return;
     RIS_CHECK(az->lines_emitted() == lines());
     finish_counts(counts, samples_in_swath);
+    if (targets_) {
+      targets_->finish(sim());
+      summary_.irfs = targets_->measure(sim(), coherent_.has_value());
+    }
     sinks->mean->close();
     sinks->speckled->close();
     sinks->mask->close();
@@ -563,14 +600,27 @@ class StreamRun {
   LineBlock compute_block(const SlarLineEngine& engine, int b) {
     LineBlock k = start_block(b);
     int row0 = 0, rows = 0, col0 = 0, cols = 0;
-    engine.window_for_lines(k.l0, k.l1, row0, rows, col0, cols);
+    // The coherent SAR reads its halo of lines too.
+    const auto [r0, r1] = coherent_ ? coherent_->lines_read(k.l0, k.l1) : std::pair{k.l0, k.l1};
+    engine.window_for_lines(r0, r1, row0, rows, col0, cols);
     in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
     const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
     const SceneMapsWindow maps{
         row0, col0, rows, cols, window_mask_.data(), window_incidence_.data()};
+    if (coherent_) {
+      coherent_->run_block(engine, win, maps, k.l0, k.l1, targets_ ? &*targets_ : nullptr, k.prof,
+                           k.counts, k.targets, k.coherent);
+      keep_block_maps(engine, win, maps, k);
+      return k;
+    }
     k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
     k.prof.samples_in_swath = 0;
-    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts);
+    // The point targets on the block's lines, found lit or hidden there.
+    std::optional<detail::LinePointTargets> on_lines;
+    if (targets_) on_lines = targets_->candidates_on_lines(k.l0, k.l1);
+    const detail::LineKeep keep{nullptr, nullptr, on_lines ? &*on_lines : nullptr};
+    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts, on_lines ? &keep : nullptr);
+    k.targets = on_lines ? targets_->block_result(*on_lines) : detail::BlockTargets{};
     keep_block_maps(engine, win, maps, k);
     return k;
   }
@@ -623,6 +673,8 @@ class StreamRun {
     put(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
     put(k.scene_mask.data(), nm);
     put(k.incidence.data(), nm * sizeof(float));
+    detail::pack_block_targets(k.targets, out);
+    detail::pack_coherent_block(k.coherent, out);
   }
 
   static LineBlock unpack_block(const char* p, std::size_t n) {
@@ -659,6 +711,8 @@ class StreamRun {
     k.incidence.resize(nm);
     get(k.scene_mask.data(), nm);
     get(k.incidence.data(), nm * sizeof(float));
+    k.targets = detail::unpack_block_targets(p, end);
+    k.coherent = detail::unpack_coherent_block(p, end);
     RIS_CHECK(p == end);
     return k;
   }
@@ -732,14 +786,23 @@ class StreamRun {
     mask_.resize(np);
     az.emit(n, block.mean_power_w.data(), block.area_m2.data(), mask_.data());
     finish_slar_image(sim(), block, rs_.terms);
+    // The point targets' measurement windows (of the mean power before
+    // NaN for no data, as measure_point_targets reads it).
+    if (targets_ && !coherent_) targets_->observe(k0, n, block.mean_power_w.data());
     mean_.assign(block.mean_power_w.begin(), block.mean_power_w.end());
     for (std::size_t i = 0; i < np; ++i) {
       if (valid_power(mean_[i], mask_[i])) power_.count(mean_[i]);
       if (mask_[i] & pixel_flag::kNoData) mean_[i] = kNaNf;
     }
-    speckled_ = mean_;
-    if (radar().switches.fading)
-      apply_fading(speckled_, n, bins(), looks_, radar().fading, info_.seed, k0);
+    if (coherent_) {  // the coherent intensity stands in for the faded mean
+      speckled_.resize(np);
+      coherent_->finish_lines(n, mask_.data(), block.area_m2.data(), speckled_.data());
+    } else {
+      speckled_ = mean_;
+      if (radar().switches.fading)
+        apply_fading(speckled_, n, bins(), looks_, radar().fading, info_.seed, k0);
+    }
+    if (targets_ && coherent_) targets_->observe(k0, n, speckled_.data());  // the intensity
     sinks.mean->write(mean_.data(), n);
     sinks.speckled->write(speckled_.data(), n);
     sinks.mask->write(mask_.data(), n);
@@ -1179,9 +1242,10 @@ class StreamRun {
     pic_meta.reference_greytone = map.reference_greytone();
     pic_meta.greytones_per_decade = map.greytones_per_decade();
     pic_meta.film_offset = map.film_offset();
-    write_text_file_atomic(
-        dir_->path("metadata.json"),
-        slar_metadata(grid(), ss_.h_min, ss_.h_max, sim(), pic_meta, info_).dump(2) + "\n");
+    nlohmann::json meta = slar_metadata(grid(), ss_.h_min, ss_.h_max, sim(), pic_meta, info_);
+    if (targets_)
+      meta["point_targets"] = targets_->metadata(summary_.irfs, sim(), coherent_.has_value());
+    write_text_file_atomic(dir_->path("metadata.json"), meta.dump(2) + "\n");
   }
 
   const SceneStreamReader in_;
@@ -1209,6 +1273,8 @@ class StreamRun {
   SceneSummary ss_;
   std::uint64_t n_elev_ = 0;
   RadiometrySetup rs_;
+  std::optional<detail::StreamTargets> targets_;    // with point targets
+  std::optional<detail::CoherentStream> coherent_;  // the coherent SAR
   std::vector<double> looks_;
   FloatRankSelect power_;  // the median mean power's two passes
   // Buffers reused across blocks and passes.

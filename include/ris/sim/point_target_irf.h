@@ -12,6 +12,8 @@
 //   metadata["point_targets"] = ris::point_target_irf_json(irfs, sim, "targets.toml", coherent);
 #pragma once
 
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,22 @@ struct PointTargetIrf {
 // One entry per seen target whose range falls in the swath.
 std::vector<PointTargetIrf> measure_point_targets(const SlarSimulation& sim,
                                                   const SlarPictures& pictures, bool coherent);
+
+// The pixels a target's measurement reads (its peak search and cuts),
+// clipped to the image: lines [line0, line0 + lines) x bins [bin0, bin0 +
+// bins). None when its range falls outside the swath (it is not measured).
+// A streamed run keeps these windows as the lines go by
+// (src/sim/slar_stream_targets.h).
+struct IrfWindow {
+  int line0 = 0, lines = 0, bin0 = 0, bins = 0;
+};
+std::optional<IrfWindow> point_target_irf_window(const SlarImage& img, const PointReturn& target);
+
+// The measurement of measure_point_targets from the window's pixels alone
+// (window_power: w.lines x w.bins, the image measured): the same numbers.
+PointTargetIrf measure_point_target_in_window(const SlarImage& img, const PointReturn& target,
+                                              const IrfWindow& w,
+                                              std::span<const float> window_power, bool coherent);
 
 nlohmann::json point_target_irf_json(const std::vector<PointTargetIrf>& irfs,
                                      const SlarSimulation& sim, const std::string& targets_file,

@@ -12,7 +12,10 @@
 // local incidence: 12 bytes a cell), B x bins range profiles, the azimuth
 // running sums of B + 2 M lines (M: half the longest footprint, in lines)
 // and one strip of 256 tiles per output file; GDAL's block cache is capped
-// at 256 MiB (unless GDAL_CACHEMAX is set).
+// at 256 MiB (unless GDAL_CACHEMAX is set). The coherent SAR reads a halo of
+// H lines each side of a block (H: the azimuth response's half-length + 2;
+// src/sim/sar_coherent_stream.h) and keeps each of those lines' element
+// power and slant range (8 bytes a cell) and range-compressed lines.
 //
 // Passes (each reads the scene, or an image-sized product, once):
 //   0  scene statistics: cells with data, categories used (for the sigma0
@@ -43,11 +46,14 @@
 // order (azimuth integration, fading, every write), and pass 1b and the
 // PNGs run on rank 0: the products are the single process's bytes.
 //
-// It runs SLAR and incoherent SAR tracks at any heading (along a grid axis
-// with one azimuth line per cell row or column, fused_slar_applies; off the
-// axes with any line spacing); other line spacings along an axis, the
-// coherent SAR, PPI (ris/sim/ppi_stream.h) and point targets need the
-// in-memory path and are refused with an InputError that says so.
+// It runs SLAR and SAR tracks at any heading (along a grid axis with one
+// azimuth line per cell row or column, fused_slar_applies; off the axes
+// with any line spacing, src/sim/slar_stream_oblique.h), with point targets
+// (src/sim/slar_stream_targets.h) and the coherent SAR
+// (src/sim/sar_coherent_stream.h) along a grid axis. Other line spacings
+// along an axis, and point targets or the coherent SAR off the axes, need
+// the in-memory path and are refused with an InputError that says so (PPI
+// streams through ris/sim/ppi_stream.h).
 //
 // Example:
 //   ris::SlarStreamOptions o;  o.block_lines = 512;
@@ -65,6 +71,8 @@
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/radar_params.h"
+#include "ris/sim/point_target.h"
+#include "ris/sim/point_target_irf.h"
 #include "ris/sim/slar_products.h"
 #include "ris/sim/slar_simulation.h"
 
@@ -79,6 +87,10 @@ struct SlarStreamOptions {
   std::optional<double> reference_height_m;
   // No progress bar (it shows only on a terminal anyway).
   bool quiet = false;
+  // Point scatterers added to the scene (ris/sim/point_target.h), as
+  // SlarOptions::targets; targets_file names them in metadata.json.
+  std::vector<PointTarget> targets;
+  std::string targets_file;
 };
 
 struct SlarStreamSummary {
@@ -94,6 +106,9 @@ struct SlarStreamSummary {
   // cost model of docs/scale.md.
   std::vector<double> stage_cpu_seconds;
   std::vector<std::pair<std::string, double>> cpu_parts;
+  // With point targets: their measurements, as measure_point_targets gives
+  // them (sim.point_returns and sim.hidden_targets are set too).
+  std::vector<PointTargetIrf> irfs;
 };
 
 // Runs the simulation and writes every product of write_slar_products into
