@@ -1,9 +1,8 @@
 // `mpirun -np N ris simulate ... --stream` (docs/scale.md): every product the
 // same bytes as a single process, for SLAR along the grid (heading 0) and
 // across it (heading 90), SLAR with point targets, the incoherent and the
-// coherent SAR and PPI (both shipped radars,
-// a sector); a failing or killed rank fails the whole run and leaves no output. Skipped when ris
-// was built without MPI.
+// coherent SAR and PPI (both shipped radars, a sector, point targets); a failing or killed rank
+// fails the whole run and leaves no output. Skipped when ris was built without MPI.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -175,10 +174,12 @@ TEST(MpiCli, CoherentSarGivesSingleProcessBytes) {
 // 2.1 km north of its south-west corner; 3 blocks of 256 rows, so pass 0's
 // rows are split over the ranks): one process, then 1, 2 and 3 ranks with
 // each schedule, in blocks of 16 rays (`block_args`) or the default (at
-// least 4 blocks a rank).
+// least 4 blocks a rank). extra_args: more options of `ris simulate`
+// (--targets).
 void expect_ppi_ranks_give_single_process_bytes(const std::string& radar,
                                                 const std::string& block_args,
-                                                const std::string& tag) {
+                                                const std::string& tag,
+                                                const std::string& extra_args = "") {
   test::TempDir dir;
   const std::string scene = (dir / "scene.tif").string();
   const auto s = test::run_ris(
@@ -187,7 +188,7 @@ void expect_ppi_ranks_give_single_process_bytes(const std::string& radar,
       scene);
   ASSERT_EQ(s.exit_code, 0) << s.output;
   const std::string args = " simulate --quiet --threads 1 --stream" + block_args + " --scene " +
-                           scene + " --radar " + radar + " --out ";
+                           scene + " --radar " + radar + " " + extra_args + " --out ";
   const auto one = test::run_ris(args + (dir / "one").string());
   ASSERT_EQ(one.exit_code, 0) << tag << "\n" << one.output;
   for (int ranks : {1, 2, 3}) {
@@ -224,6 +225,38 @@ TEST(MpiCli, PpiSectorGivesSingleProcessBytes) {
       radar_with(dir, "r.toml", "ppi-ground-mast-30m.toml", "[scan]\n",
                  "[scan]\nstart = \"30 deg\"\nwidth = \"100 deg\"\n"),
       " --block-lines 7", "PPI sector");
+}
+
+// Point targets around the PPI site (3 km east, 2.1 km north): in the open
+// within the 3 km range, one high above the terrain, one beyond the range.
+std::string write_ppi_targets(const test::TempDir& dir) {
+  const fs::path p = dir / "ppi-targets.toml";
+  test::write_file(p,
+                   "[[target]]\nname = \"a\"\nposition = [3800.0, 2600.0]\nrcs = 10000.0\n"
+                   "[[target]]\nname = \"b\"\nposition = [2000.0, 3900.0]\nheight = \"5 m\"\n"
+                   "rcs_db = 35\n"
+                   "[[target]]\nname = \"c\"\nposition = [4500.0, 900.0]\nrcs = 5000.0\n"
+                   "[[target]]\nname = \"d\"\nposition = [1500.0, 1200.0]\nheight = \"60 m\"\n"
+                   "rcs = 300.0\n"
+                   "[[target]]\nname = \"e\"\nposition = [3100.0, 9000.0]\nrcs = 300.0\n");
+  return p.string();
+}
+
+// Point targets in a streamed PPI run: each block of rays finds the targets
+// on its rays lit or hidden, rank 0 folds them in ray order (seen and
+// hidden in metadata.json): the same bytes as one process, blocks of 16
+// rays and the default, full circle and a sector.
+TEST(MpiCli, PpiPointTargetsGiveSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  const std::string targets = "--targets " + write_ppi_targets(dir);
+  const std::string radar = std::string(test::data_dir()) + "/radars/ppi-ground-mast-30m.toml";
+  expect_ppi_ranks_give_single_process_bytes(radar, " --block-lines 16", "PPI targets, 16 rays",
+                                             targets);
+  expect_ppi_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "ppi-ground-mast-30m.toml", "[scan]\n",
+                 "[scan]\nstart = \"30 deg\"\nwidth = \"100 deg\"\n"),
+      "", "PPI targets, sector, default blocks", targets);
 }
 
 // No folder beside `out` but the inputs: neither the output nor a staging

@@ -1,12 +1,13 @@
 // `ris simulate --stream --targets` end to end: point targets in a streamed
 // SLAR or SAR run (src/sim/slar_stream_targets.h), incoherent or coherent
 // (src/sim/sar_coherent_stream.h), give the in-memory run's files byte for
-// byte, measurements in metadata.json and the printed summary included; a
-// streamed PPI refuses them, naming --targets.
+// byte, measurements in metadata.json and the printed summary included; so
+// does a streamed PPI (seen and hidden targets).
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "build_paths.h"
 #include "test_util.h"
@@ -128,20 +129,47 @@ TEST(StreamTargetsCli, CoherentSarWithTargetsEqualsInMemory) {
   }
 }
 
-// A streamed PPI does not take point targets yet: an input error naming
-// --targets, and no output.
-TEST(StreamTargetsCli, StreamedPpiRefusesTargets) {
+// The line the PPI summary reports its targets on.
+std::string ppi_target_line(const std::string& output) {
+  const auto at = output.find("point targets:");
+  if (at == std::string::npos) return "";
+  return output.substr(at, output.find('\n', at) - at);
+}
+
+// A streamed PPI takes point targets (src/sim/ppi_ray_targets.h): the
+// in-memory run's files byte for byte (metadata.json's seen and hidden
+// included) and the same printed count, in blocks of 7 rays and the
+// default, on 1 and 2 threads.
+TEST(StreamTargetsCli, StreamedPpiTakesTargets) {
   test::TempDir dir;
   const std::string scene = standard_scene(dir);
-  const std::string out = (dir / "out").string();
-  const auto r =
-      test::run_ris("simulate --quiet --stream --scene " + scene + " --radar " +
-                    (fs::path(test::data_dir()) / "radars" / "ppi-ground-mast-30m.toml").string() +
-                    " --targets " + corner_reflectors() + " --out " + out);
-  EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("--targets"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("streamed PPI"), std::string::npos) << r.output;
-  EXPECT_FALSE(fs::exists(out));
+  const std::string args =
+      " --scene " + scene + " --radar " +
+      (fs::path(test::data_dir()) / "radars" / "ppi-ground-mast-30m.toml").string() +
+      " --targets " + corner_reflectors() + " --out ";
+  for (const char* threads : {"1", "2"}) {
+    const std::string run = std::string("simulate --quiet --threads ") + threads;
+    const fs::path mem_dir = dir / ("mem-" + std::string(threads));
+    const auto mem = test::run_ris(run + args + mem_dir.string());
+    ASSERT_EQ(mem.exit_code, 0) << mem.output;
+    const std::string counted = ppi_target_line(mem.output);
+    // CR far lies in the shadow of the terrain seen from the 30 m mast.
+    EXPECT_EQ(counted, "point targets: 2 seen, 1 hidden") << mem.output;
+    for (const auto& [blocks, name] : {std::pair{" --block-lines 7", "b7"}, {" --stream", "s"}}) {
+      const fs::path out = dir / ("stream-" + std::string(threads) + name);
+      const auto r = test::run_ris(run + blocks + args + out.string());
+      const std::string tag = std::string(threads) + " threads," + blocks;
+      ASSERT_EQ(r.exit_code, 0) << tag << "\n" << r.output;
+      EXPECT_EQ(ppi_target_line(r.output), counted) << tag << "\n" << r.output;
+      int files = 0;
+      for (const auto& e : fs::directory_iterator(mem_dir)) {
+        EXPECT_TRUE(test::read_file(e.path()) == test::read_file(out / e.path().filename()))
+            << tag << ": " << e.path().filename();
+        ++files;
+      }
+      EXPECT_EQ(files, 8) << tag;  // 7 products and metadata.json
+    }
+  }
 }
 
 }  // namespace

@@ -138,6 +138,10 @@ void print_streamed(const RunRequest& r, const RunResult& res) {
     fmt::print("  B-scope: {} rays x {} range bins; scope {} x {} pixels\n", p.sim.bscope.lines,
                p.sim.bscope.bins, p.sim.scope_grid.size, p.sim.scope_grid.size);
     print_geometry_counts(p.sim.geometry.rays);
+    if (res.has_targets) {
+      fmt::print("  point targets: {} seen, {} hidden\n", p.sim.point_returns.size(),
+                 p.sim.hidden_targets.size());
+    }
     for (const auto& [name, t] : p.stage_seconds) fmt::print("  {:.2f} s  {}\n", t, name);
     return;
   }

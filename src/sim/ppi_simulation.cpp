@@ -15,6 +15,7 @@
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
+#include "sim/ppi_ray_targets.h"
 #include "sim/slar_line_engine.h"
 
 namespace ris {
@@ -36,11 +37,6 @@ SlarImage crop_lines(const SlarImage& in, int first, int count) {
   cut(out.mapped_count, in.mapped_count);
   cut(out.visible_count, in.visible_count);
   return out;
-}
-
-// Angle difference wrapped to [-pi, pi).
-double wrap_pi(double a) {
-  return a - 2.0 * kPi * std::floor((a + kPi) / (2.0 * kPi));
 }
 
 // ---- The polar line source: one ray from the site per line ----------------
@@ -73,33 +69,6 @@ struct PolarThreadSource {
   std::variant<PolarSource> block(int, int) { return PolarSource{scene, tex, pg, ray}; }
 };
 
-// The targets on every (padded) ray whose sector holds their azimuth, in
-// front of the site (point_returns_on_rays's rule before the shadow test):
-// one candidate per target and ray, `target` the candidate's own index;
-// target_of[c] the target of candidate c.
-std::vector<PointCandidate> ray_candidates(const std::vector<PointTarget>& targets,
-                                           const Scene& scene, const PpiGeometry& pg,
-                                           std::vector<std::size_t>& target_of) {
-  std::vector<PointCandidate> out;
-  const SlarGeometry& g = pg.rays;
-  const double H = pg.altitude_m;
-  for (std::size_t t = 0; t < targets.size(); ++t) {
-    const PointTarget& pt = targets[t];
-    const double dx = pt.x_m - pg.site_x_m, dy = pt.y_m - pg.site_y_m;
-    const double u = std::hypot(dx, dy);
-    const double alpha = std::atan2(dx, dy);
-    const double h = terrain_height_at(scene, pt.x_m, pt.y_m) + pt.height_m;
-    for (int k = 0; k < g.lines; ++k) {
-      const double d = wrap_pi(alpha - pg.azimuth_rad(k));
-      if (!(d >= -0.5 * pg.ray_spacing_rad && d < 0.5 * pg.ray_spacing_rad)) continue;
-      if (!(u > 0.0)) continue;
-      out.push_back(point_candidate(out.size(), k, alpha, u, h, H, pt.rcs_m2));
-      target_of.push_back(t);
-    }
-  }
-  return out;
-}
-
 // The padded rays' image through the line engine (the polar source), the
 // rays' geometry kept (pg.rays allocated) and the targets added on their
 // rays: what compute_ppi_geometry + point_returns_on_rays + form_slar_image
@@ -109,8 +78,13 @@ SlarImage form_ppi_rays(const Scene& scene, PpiGeometry& pg, const Sigma0Lut& lu
                         const std::vector<PointTarget>& targets, PpiSimulation& sim) {
   SlarGeometry& g = pg.rays;
   g.allocate_samples();
+  std::vector<double> base(targets.size());
+  for (std::size_t t = 0; t < targets.size(); ++t)
+    base[t] = terrain_height_at(scene, targets[t].x_m, targets[t].y_m);
   std::vector<std::size_t> target_of;
-  detail::LinePointTargets on_rays(ray_candidates(targets, scene, pg, target_of));
+  const std::vector<PointCandidate> candidates =
+      detail::ray_candidates(targets, base, pg, target_of);
+  detail::LinePointTargets on_rays(candidates);
   const detail::LineKeep keep{&g, nullptr, &on_rays};
   const TerrainTexels tex = terrain_texels(scene);
   const TwoWayGainTable gain2(p.elevation_gain, p.peak_gain, radar_file);
@@ -126,27 +100,15 @@ SlarImage form_ppi_rays(const Scene& scene, PpiGeometry& pg, const Sigma0Lut& lu
   g.nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));
   check_swath_hits_scene(prof.samples_in_swath, p.range, counts, radar_file);
   SlarImage img = slar_image_from_profiles(prof, p, g.line_spacing_m);
-  // The returns seen, in target and ray order, with their power; a target
-  // seen on no ray is hidden.
-  std::vector<std::uint8_t> lit(target_of.size(), 0);
-  std::vector<double> power(target_of.size(), 0.0);
+  // Each candidate's result (by_line[k].target: the candidate's index).
+  std::vector<std::uint8_t> lit(candidates.size(), 0);
+  std::vector<double> power(candidates.size(), 0.0);
   for (std::size_t k = 0; k < on_rays.by_line.size(); ++k) {
     lit[on_rays.by_line[k].target] = on_rays.lit[k];
     power[on_rays.by_line[k].target] = on_rays.power_w[k];
   }
-  std::vector<std::uint8_t> seen(targets.size(), 0);
-  std::vector<PointCandidate> in_order = on_rays.by_line;
-  std::sort(in_order.begin(), in_order.end(),
-            [](const PointCandidate& a, const PointCandidate& b) { return a.target < b.target; });
-  for (const PointCandidate& c : in_order) {
-    if (!lit[c.target]) continue;
-    sim.point_returns.push_back(c.ret);
-    img.point_power_w.push_back(power[c.target]);
-    seen[target_of[c.target]] = 1;
-  }
-  for (std::size_t t = 0; t < targets.size(); ++t) {
-    if (!seen[t]) sim.hidden_targets.push_back(targets[t].name);
-  }
+  detail::fold_ray_targets(targets, candidates, target_of, lit, power, sim.point_returns,
+                           img.point_power_w, sim.hidden_targets);
   return img;
 }
 
@@ -166,8 +128,7 @@ std::vector<PointReturn> point_returns_on_rays(const std::vector<PointTarget>& t
     const double h = terrain_height_at(scene, t.x_m, t.y_m) + t.height_m;
     bool any = false;
     for (int k = 0; k < g.lines; ++k) {
-      const double d = wrap_pi(alpha - pg.azimuth_rad(k));
-      if (!(d >= -0.5 * pg.ray_spacing_rad && d < 0.5 * pg.ray_spacing_rad)) continue;
+      if (!detail::azimuth_on_ray(pg, k, alpha)) continue;
       if (!(u > 0.0) || !point_lit_on_line(g, k, u, h)) continue;
       PointReturn r;
       r.line = k;

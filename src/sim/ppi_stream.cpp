@@ -36,6 +36,9 @@
 #include "ris/util/progress.h"
 #include "ris/util/rank_select.h"
 #include "sim/block_schedule.h"
+#include "sim/ppi_ray_targets.h"
+#include "sim/slar_line_stages.h"
+#include "sim/slar_stream_targets.h"
 #include "sim/texel_window.h"
 
 namespace ris {
@@ -106,12 +109,13 @@ struct RayCounts {
 };
 
 // A block of rays as computed by any rank of an MPI run and consumed, in
-// ray order, by rank 0 (src/sim/block_schedule.h): its range profiles and
-// counts.
+// ray order, by rank 0 (src/sim/block_schedule.h): its range profiles,
+// counts and its point targets' results (src/sim/ppi_ray_targets.h).
 struct RayBlock {
   int k0 = 0, k1 = 0;
   SlarLineProfiles prof;
   RayCounts counts;
+  detail::BlockTargets targets;
 };
 
 void pack_ray_block(const RayBlock& k, std::vector<char>& out) {
@@ -128,6 +132,7 @@ void pack_ray_block(const RayBlock& k, std::vector<char>& out) {
   put(k.prof.touch.data(), np);
   put(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
   put(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
+  detail::pack_block_targets(k.targets, out);
 }
 
 RayBlock unpack_ray_block(const char* p, std::size_t n) {
@@ -150,6 +155,7 @@ RayBlock unpack_ray_block(const char* p, std::size_t n) {
   get(k.prof.touch.data(), np);
   get(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
   get(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
+  k.targets = detail::unpack_block_targets(p, end);
   RIS_CHECK(p == end);
   return k;
 }
@@ -339,6 +345,7 @@ class PpiStreamRun {
     sim().geometry = ppi_rays_layout(grid(), site_radar_, ground, h_min_);
     rs_ = prepare_radiometry(categories_, radar, sim().derived, sigma0, backscatter_file_);
     site_radar_.reference = radar.reference;
+    place_targets();
     sim().categories = rs_.categories;
     sim().category_names = rs_.category_names;
     sim().backscatter_description = rs_.backscatter_description;
@@ -372,6 +379,27 @@ class PpiStreamRun {
                               ? std::max(16, (all_rays() + 4 * ranks - 1) / (4 * ranks))
                               : all_rays();
     summary_.block_rays = std::max(1, std::min({block, all_rays(), for_ranks}));
+  }
+
+  // The targets checked on the scene (as check_point_targets_on_scene, on
+  // every rank) and placed on the padded rays (ray_candidates, their base
+  // heights read from the scene file: streamed_target_heights).
+  void place_targets() {
+    const std::vector<PointTarget>& targets = options_.targets;
+    if (targets.empty()) return;
+    const std::vector<double> base = detail::streamed_target_heights(targets, in_);
+    candidates_ = detail::ray_candidates(targets, base, pg(), target_of_);
+    lit_.assign(candidates_.size(), 0);
+    target_power_.assign(candidates_.size(), 0.0);
+  }
+
+  // The candidates on rays [k0, k1) for a block (none: nullopt).
+  std::optional<detail::LinePointTargets> candidates_on_rays(int k0, int k1) const {
+    std::vector<PointCandidate> on;
+    for (const PointCandidate& c : candidates_)
+      if (c.ret.line >= k0 && c.ret.line < k1) on.push_back(c);
+    if (on.empty()) return std::nullopt;
+    return detail::LinePointTargets(std::move(on));
   }
 
   template <typename T>
@@ -461,7 +489,8 @@ class PpiStreamRun {
 
   // Rays [k0, k1): geometry from the sampled terrain, then each ray's range
   // profile (form_slar_image's per-line step).
-  void block_profiles(int k0, int k1, SlarLineProfiles& prof, RayCounts& counts) {
+  void block_profiles(int k0, int k1, SlarLineProfiles& prof, RayCounts& counts,
+                      detail::LinePointTargets* targets) {
     const int n = k1 - k0, samples = pg().rays.samples;
     SlarGeometry& g = geom_;
     g = SlarGeometry{};
@@ -518,6 +547,10 @@ class PpiStreamRun {
                                          prof.visible_count.data() + row, scratch.acc.data(),
                                          scratch.acc_area.data()};
         in_swath += detail::form_line_profile(*ctx_, e, elements, out, nullptr).in_swath;
+        if (targets != nullptr) {  // as the in-memory engine adds them (accumulate_line)
+          detail::add_line_point_returns(*ctx_, pg().rays, k0 + k, 0, samples, g.flags.data() + i,
+                                         g.height_m.data() + i, scratch.acc.data(), *targets);
+        }
         if (rs_.imaging.range_window_bins > 0.0)
           scratch.apply_range_window(rs_.imaging.range_window_bins);
         for (int bb = 0; bb < bins(); ++bb) {
@@ -580,6 +613,7 @@ class PpiStreamRun {
         unpack_ray_block,
         [&](int, RayBlock& k) {
           counts.add(k.counts);
+          add_block_targets(k.targets);
           az->push(k.prof, k.k1 - k.k0);
           emit_ready(*az, *sinks);
           ++summary_.blocks;
@@ -605,9 +639,21 @@ class PpiStreamRun {
     g.layover_samples = counts.layover;
     g.nodata_cells = nodata_cells_;
     sim().bscope.samples_in_swath = counts.in_swath;
+    detail::fold_ray_targets(options_.targets, candidates_, target_of_, lit_, target_power_,
+                             sim().point_returns, sim().bscope.point_power_w, sim().hidden_targets);
     sinks->mean->close();
     sinks->speckled->close();
     sinks->mask->close();
+  }
+
+  // Rank 0: a block's candidates found lit or not, and their powers.
+  void add_block_targets(const detail::BlockTargets& t) {
+    for (std::size_t i = 0; i < t.candidate.size(); ++i) {
+      const auto c = static_cast<std::size_t>(t.candidate[i]);
+      RIS_CHECK(c < candidates_.size());
+      lit_[c] = t.lit[i];
+      target_power_[c] = t.power_w[i];
+    }
   }
 
   // Block b's rays on this rank: their terrain from windows of the scene
@@ -626,8 +672,18 @@ class PpiStreamRun {
     k.counts = RayCounts();
     block_counts_ = &k.counts;
     sample_block_terrain(k.k0, k.k1);
-    block_profiles(k.k0, k.k1, k.prof, k.counts);
+    std::optional<detail::LinePointTargets> on_rays = candidates_on_rays(k.k0, k.k1);
+    block_profiles(k.k0, k.k1, k.prof, k.counts, on_rays ? &*on_rays : nullptr);
     block_counts_ = nullptr;
+    // Each candidate's result (by_line[i].target: the candidate's index).
+    k.targets = detail::BlockTargets();
+    if (on_rays) {
+      for (std::size_t i = 0; i < on_rays->by_line.size(); ++i) {
+        k.targets.candidate.push_back(static_cast<std::int32_t>(on_rays->by_line[i].target));
+        k.targets.lit.push_back(on_rays->lit[i]);
+        k.targets.power_w.push_back(on_rays->power_w[i]);
+      }
+    }
     return k;
   }
 
@@ -857,6 +913,12 @@ class PpiStreamRun {
   std::optional<detail::SlarElementContext> ctx_;
   PpiRasterSpecs specs_;
   std::vector<double> looks_;
+  // Point targets: the candidates on the padded rays (in target and ray
+  // order), each one's target, and (rank 0) whether lit and its power.
+  std::vector<PointCandidate> candidates_;
+  std::vector<std::size_t> target_of_;
+  std::vector<std::uint8_t> lit_;
+  std::vector<double> target_power_;
   // Pass 1: per block.
   std::vector<GridLine> lines_;
   std::vector<std::pair<int, int>> span_;  // inside_samples per ray

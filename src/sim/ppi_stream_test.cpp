@@ -159,6 +159,114 @@ TEST(PpiStream, StreamedEqualsInMemoryByteForByte) {
   EXPECT_TRUE(even_median) << "no case tests the mean of the two middle values";
 }
 
+// Targets on the test scene (column, row): in front of the site, on and
+// behind the tower (low, hidden from the 30 m mast), near two corners; all
+// but the one behind the tower 150 m above the terrain (above the relief).
+std::vector<PointTarget> test_targets(const Scene& s) {
+  std::vector<PointTarget> out;
+  const std::pair<double, double> at[] = {
+      {120.5, 60.5}, {62.5, 92.5}, {48.3, 98.1}, {180.2, 20.7}, {30.5, 130.5}};
+  for (const auto& [c, r] : at) {
+    PointTarget t;
+    t.index = static_cast<int>(out.size());
+    t.name = fmt::format("t{}", t.index);
+    std::tie(t.x_m, t.y_m) = s.world_from_grid(c, r);
+    t.height_m = t.index == 2 ? 2.0 : 150.0;  // the others above the relief
+    t.rcs_m2 = 1000.0;
+    t.source_file = "targets.toml";
+    out.push_back(t);
+  }
+  return out;
+}
+
+// Point targets stream: the same files (metadata.json's seen and hidden
+// included), returns, powers and hidden names as in memory, for blocks of
+// 7, 16 and all rays and 1 and 2 threads; a full circle (a target hidden
+// behind the tower) and a sector (the targets outside it hidden).
+TEST(PpiStream, StreamedTargetsEqualInMemoryByteForByte) {
+  const Scene scene = test_scene();
+  test::TempDir dir;
+  const fs::path scene_path = dir / "scene.tif";
+  write_scene_geotiff(scene, scene_path);
+  const Scene read = read_scene(scene_path);
+  const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
+  SlarOptions mem_options;
+  mem_options.targets = test_targets(read);
+  const int saved = omp_get_max_threads();
+  std::size_t seen = 0;
+  for (double width : {0.0, 100.0}) {
+    RadarParams radar = shipped_radar(scene, "ppi-ground-mast-30m");
+    if (width > 0.0) {
+      radar.ppi.scan_start_rad = deg_to_rad(30.0);
+      radar.ppi.scan_width_rad = deg_to_rad(width);
+    }
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      const SlarRunInfo info{scene_path.string(), "r.toml", "test", 7, threads};
+      const fs::path mem = dir / "mem";
+      const PpiSimulation sim = simulate_ppi(read, radar, src, mem_options);
+      write_ppi_products(mem, read, sim, render_ppi(sim, info.seed), info);
+      if (width == 0.0) {
+        EXPECT_EQ(sim.hidden_targets, std::vector<std::string>{"t2"}) << "behind the tower";
+      } else {
+        EXPECT_FALSE(sim.hidden_targets.empty());
+      }
+      seen += sim.point_returns.size();
+      const int rays = sim.geometry.rays.lines;
+      for (int block : {7, 16, rays}) {
+        const std::string what = fmt::format("width {} threads {} block {}", width, threads, block);
+        PpiStreamOptions o;
+        o.block_rays = block;
+        o.quiet = true;
+        o.targets = mem_options.targets;
+        const fs::path out = dir / "stream";
+        const PpiStreamSummary sum = simulate_ppi_streamed(scene_path, radar, src, info, out, o);
+        EXPECT_EQ(sum.sim.hidden_targets, sim.hidden_targets) << what;
+        EXPECT_TRUE(test::same_bytes(sum.sim.bscope.point_power_w, sim.bscope.point_power_w))
+            << what;
+        ASSERT_EQ(sum.sim.point_returns.size(), sim.point_returns.size()) << what;
+        for (std::size_t k = 0; k < sim.point_returns.size(); ++k) {
+          EXPECT_EQ(sum.sim.point_returns[k].line, sim.point_returns[k].line) << what;
+          EXPECT_EQ(sum.sim.point_returns[k].along_m, sim.point_returns[k].along_m) << what;
+          EXPECT_EQ(sum.sim.point_returns[k].slant_range_m, sim.point_returns[k].slant_range_m)
+              << what;
+        }
+        expect_same_folders(mem, out, what);
+        fs::remove_all(out);
+      }
+      fs::remove_all(mem);
+    }
+  }
+  omp_set_num_threads(saved);
+  EXPECT_GT(seen, 0u);
+  // A target off the scene or on no data: simulate_ppi's InputError, no output.
+  for (const auto& [c, r] : {std::pair{-3.0, 10.0}, std::pair{125.5, 45.5}}) {
+    PpiStreamOptions o;
+    o.quiet = true;
+    o.targets = mem_options.targets;
+    std::tie(o.targets[1].x_m, o.targets[1].y_m) = scene.world_from_grid(c, r);
+    SlarOptions m;
+    m.targets = o.targets;
+    const RadarParams radar = shipped_radar(scene, "ppi-ground-mast-30m");
+    std::string in_memory;
+    try {
+      simulate_ppi(read, radar, src, m);
+    } catch (const InputError& e) {
+      in_memory = e.what();
+    }
+    EXPECT_FALSE(in_memory.empty());
+    try {
+      simulate_ppi_streamed(scene_path, radar, src, {scene_path.string(), "r.toml", "test", 7, 1},
+                            dir / "bad", o);
+      ADD_FAILURE() << "no error for a bad target";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), in_memory);
+      EXPECT_EQ(e.file(), "targets.toml");
+    }
+    EXPECT_FALSE(fs::exists(dir / "bad"));
+  }
+}
+
 // What simulate_ppi refuses, the stream refuses, and leaves no output.
 TEST(PpiStream, RefusesWhatTheInMemoryRunRefuses) {
   const Scene scene = test_scene();

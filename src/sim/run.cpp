@@ -172,16 +172,19 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
     check_out_dir(r, res.radar, probe.grid().rows, probe.grid().cols,
                   streamed_temporary_bytes(probe.grid(), res.radar));
   }
-  const bool has_targets = !r.targets_path.empty() || (r.targets && !r.targets->empty());
+  std::vector<PointTarget> targets;
+  if (r.targets) {
+    targets = *r.targets;
+  } else if (!r.targets_path.empty()) {
+    targets = load_point_targets(r.targets_path);
+  }
+  res.has_targets = !targets.empty();
+  res.targets_path = r.targets_path;
   if (res.radar.mode == RadarMode::ppi) {  // rays in blocks (ris/sim/ppi_stream.h)
-    if (has_targets) {
-      throw InputError(r.targets_path, "--targets",
-                       "a streamed PPI run does not take point targets yet; drop --targets or "
-                       "run the PPI scene in memory (without --stream)");
-    }
     PpiStreamOptions o;
     o.block_rays = r.block_lines;
     o.quiet = r.quiet;
+    o.targets = std::move(targets);
     res.ppi_streamed =
         simulate_ppi_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
     return;
@@ -189,14 +192,8 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   SlarStreamOptions o;
   o.block_lines = r.block_lines;
   o.quiet = r.quiet;
-  if (r.targets) {
-    o.targets = *r.targets;
-  } else if (!r.targets_path.empty()) {
-    o.targets = load_point_targets(r.targets_path);
-  }
+  o.targets = std::move(targets);
   o.targets_file = r.targets_path;
-  res.has_targets = !o.targets.empty();
-  res.targets_path = r.targets_path;
   res.streamed =
       simulate_slar_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
   res.irfs = res.streamed->irfs;

@@ -33,19 +33,15 @@ LinePointTargets::LinePointTargets(std::vector<PointCandidate> candidates)
       [](const PointCandidate& a, const PointCandidate& b) { return a.ret.line < b.ret.line; });
 }
 
-namespace {
-
-// The point targets on `line` that its terrain leaves lit, their power in
-// the bin of their range (as form_slar_image adds point returns).
 void add_line_point_returns(const SlarElementContext& ctx, const SlarGeometry& g, int line,
-                            int first, int n, LineScratch& s, LinePointTargets& t) {
+                            int first, int n, const std::uint8_t* flags, const float* height_m,
+                            double* acc, LinePointTargets& t) {
   const auto on_line =
       std::lower_bound(t.by_line.begin(), t.by_line.end(), line,
                        [](const PointCandidate& c, int l) { return c.ret.line < l; });
   for (auto it = on_line; it != t.by_line.end() && it->ret.line == line; ++it) {
     const std::size_t k = static_cast<std::size_t>(it - t.by_line.begin());
-    if (!point_lit_on_samples(g, first, n, s.flags.data(), s.height.data(), it->u_m, it->h_m))
-      continue;
+    if (!point_lit_on_samples(g, first, n, flags, height_m, it->u_m, it->h_m)) continue;
     const PointReturn& pr = it->ret;
     const double r2 = pr.slant_range_m * pr.slant_range_m;
     const double power = ctx.k_radar * ctx.gain2->at(pr.look_rad) * pr.rcs_m2 / (r2 * r2);
@@ -53,11 +49,9 @@ void add_line_point_returns(const SlarElementContext& ctx, const SlarGeometry& g
     t.power_w[k] = power;
     const double pos = (pr.slant_range_m - ctx.near_m) * ctx.inv_dr;
     if (!(pos >= 0.0 && pos < ctx.bins)) continue;
-    s.acc.acc[static_cast<std::size_t>(pos)] += power;
+    acc[static_cast<std::size_t>(pos)] += power;
   }
 }
-
-}  // namespace
 
 // Image formation's per-line step (as form_slar_image).
 std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
@@ -86,7 +80,8 @@ std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScr
   counts.r_min_m = std::min(counts.r_min_m, t.r_min_m);
   counts.r_max_m = std::max(counts.r_max_m, t.r_max_m);
   if (keep && keep->targets) {
-    add_line_point_returns(ctx, *g, line, first_sample, samples, s, *keep->targets);
+    add_line_point_returns(ctx, *g, line, first_sample, samples, s.flags.data(), s.height.data(),
+                           s.acc.acc.data(), *keep->targets);
   }
   if (range_window_bins > 0.0) s.acc.apply_range_window(range_window_bins);
   for (int b = 0; b < prof.bins; ++b) {

@@ -70,6 +70,14 @@ struct LinePointTargets {
   explicit LinePointTargets(std::vector<PointCandidate> candidates);
 };
 
+// The point targets on `line` that its terrain leaves lit (its samples
+// [first, first + n): flags and heights), their power added to the bin of
+// their range in acc (as form_slar_image adds point returns); each one's lit
+// flag and power set in t. g: the run's layout (sample positions, altitude).
+void add_line_point_returns(const SlarElementContext& ctx, const SlarGeometry& g, int line,
+                            int first, int n, const std::uint8_t* flags, const float* height_m,
+                            double* acc, LinePointTargets& t);
+
 // What a run keeps beyond the profiles and the scene maps (the kept-geometry
 // sink); a null member is not kept. Each line's part is written by the
 // thread that forms the line.

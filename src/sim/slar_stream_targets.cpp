@@ -72,10 +72,8 @@ double streamed_terrain_height(const SceneStreamReader& in, double x_m, double y
   return double(h);
 }
 
-StreamTargets::StreamTargets(const std::vector<PointTarget>& targets, std::string targets_file,
-                             const SceneStreamReader& in, const SlarGeometry& g,
-                             const SlarImage& img)
-    : targets_(targets), file_(std::move(targets_file)), bins_(img.bins) {
+std::vector<double> streamed_target_heights(const std::vector<PointTarget>& targets,
+                                            const SceneStreamReader& in) {
   // check_point_targets_on_scene's checks and messages.
   const Scene& scene = in.grid();
   const auto [x0, y1] = scene.world_from_grid(0.0, 0.0);
@@ -98,6 +96,14 @@ StreamTargets::StreamTargets(const std::vector<PointTarget>& targets, std::strin
                                    t.name, t.x_m, t.y_m));
     }
   }
+  return base;
+}
+
+StreamTargets::StreamTargets(const std::vector<PointTarget>& targets, std::string targets_file,
+                             const SceneStreamReader& in, const SlarGeometry& g,
+                             const SlarImage& img)
+    : targets_(targets), file_(std::move(targets_file)), bins_(img.bins) {
+  const std::vector<double> base = streamed_target_heights(targets, in);
   // point_candidates, with the heights read above.
   const double H = g.altitude_m;
   for (std::size_t k = 0; k < targets.size(); ++k) {

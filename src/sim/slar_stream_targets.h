@@ -57,6 +57,12 @@ BlockTargets unpack_block_targets(const char*& p, const char* end);
 // no data), from those cells read out of the scene file.
 double streamed_terrain_height(const SceneStreamReader& in, double x_m, double y_m);
 
+// The targets checked on the scene (InputError as
+// check_point_targets_on_scene: off the scene, on a no-data cell) and the
+// terrain height under each (streamed_terrain_height), in target order.
+std::vector<double> streamed_target_heights(const std::vector<PointTarget>& targets,
+                                            const SceneStreamReader& in);
+
 class StreamTargets {
  public:
   // Checks the targets on the scene (InputError as

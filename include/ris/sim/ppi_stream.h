@@ -35,7 +35,12 @@
 // 2 the B-scope's greytones (bscope.png); 2b the scope, a strip of rows at a
 // time (ppi_scope_power.tif, ppi_scope_mask.tif, ppi_scope.png).
 //
-// Point targets are not streamed (run_simulation refuses them with --stream).
+// Point targets (PpiStreamOptions::targets) are checked on the scene and
+// placed on the padded rays once (their base height read from the four
+// cells around each), each block's rays find theirs lit or hidden as the
+// in-memory engine does, and rank 0 folds the blocks' results in ray order
+// (src/sim/ppi_ray_targets.h): the same returns, hidden names and
+// metadata.json as simulate_ppi.
 //
 // Example:
 //   ris::PpiStreamOptions o;  o.block_rays = 64;
@@ -52,6 +57,7 @@
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/radar_params.h"
+#include "ris/sim/point_target.h"
 #include "ris/sim/ppi_simulation.h"
 #include "ris/sim/run_info.h"
 
@@ -69,6 +75,9 @@ struct PpiStreamOptions {
   std::int64_t memory_budget_bytes = std::int64_t(512) << 20;
   // No progress bar (it shows only on a terminal anyway).
   bool quiet = false;
+  // Point targets (ris/sim/point_target.h); InputError for one off the
+  // scene or on a no-data cell, as simulate_ppi.
+  std::vector<PointTarget> targets;
 };
 
 struct PpiStreamSummary {
@@ -83,8 +92,9 @@ struct PpiStreamSummary {
 };
 
 // Runs the simulation and writes every product of write_ppi_products into
-// out_dir. Throws InputError for bad input (an unreadable or non-north-up
-// scene, a DEM that needs importing, and everything simulate_ppi refuses).
+// out_dir (sim.point_returns and sim.hidden_targets set on rank 0). Throws
+// InputError for bad input (an unreadable or non-north-up scene, a DEM that
+// needs importing, and everything simulate_ppi refuses).
 PpiStreamSummary simulate_ppi_streamed(const std::filesystem::path& scene_path,
                                        const RadarParams& radar, const Sigma0Source& sigma0,
                                        const SlarRunInfo& info,
