@@ -175,7 +175,8 @@ TEST(MpiCli, CoherentSarGivesSingleProcessBytes) {
 // rows are split over the ranks): one process, then 1, 2 and 3 ranks with
 // each schedule, in blocks of 16 rays (`block_args`) or the default (at
 // least 4 blocks a rank). extra_args: more options of `ris simulate`
-// (--targets).
+// (--targets; the single process's files are then compared with an
+// in-memory run's too).
 void expect_ppi_ranks_give_single_process_bytes(const std::string& radar,
                                                 const std::string& block_args,
                                                 const std::string& tag,
@@ -191,6 +192,12 @@ void expect_ppi_ranks_give_single_process_bytes(const std::string& radar,
                            scene + " --radar " + radar + " " + extra_args + " --out ";
   const auto one = test::run_ris(args + (dir / "one").string());
   ASSERT_EQ(one.exit_code, 0) << tag << "\n" << one.output;
+  if (!extra_args.empty()) {  // with targets: the in-memory run's bytes too
+    const auto mem = test::run_ris(" simulate --quiet --threads 1 --scene " + scene + " --radar " +
+                                   radar + " " + extra_args + " --out " + (dir / "mem").string());
+    ASSERT_EQ(mem.exit_code, 0) << tag << "\n" << mem.output;
+    expect_same_files(dir / "mem", dir / "one", tag + ", in memory", 8);
+  }
   for (int ranks : {1, 2, 3}) {
     for (const char* schedule : {"dynamic", "interleaved"}) {
       if (ranks == 1 && std::string(schedule) == "interleaved") continue;

@@ -184,7 +184,8 @@ std::vector<PointTarget> test_targets(const Scene& s) {
 // 7, 16 and all rays and 1 and 2 threads; a full circle (a target hidden
 // behind the tower) and a sector (the targets outside it hidden).
 TEST(PpiStream, StreamedTargetsEqualInMemoryByteForByte) {
-  const Scene scene = test_scene();
+  Scene scene = test_scene();  // raised: the site's terrain well above the datum
+  for (float& z : scene.elevation_m) z += 300.0f;
   test::TempDir dir;
   const fs::path scene_path = dir / "scene.tif";
   write_scene_geotiff(scene, scene_path);
