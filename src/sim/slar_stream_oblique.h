@@ -48,9 +48,11 @@ class ObliqueBlockLines {
 
   // Lines [l0, l1): their terrain read from `in` window by window, then
   // through the line engine into prof (allocated for the lines) and counts;
-  // their samples' scene-map values into `maps` (resized).
+  // their samples' scene-map values into `maps` (resized). keep (optional):
+  // the point targets on the block's lines (LineKeep::targets), found lit or
+  // hidden and added to their lines as the in-memory oblique run does.
   void run(const SceneStreamReader& in, int l0, int l1, SlarLineProfiles& prof,
-           SlarLineCounts& counts, ObliqueMapValues& maps);
+           SlarLineCounts& counts, ObliqueMapValues& maps, const LineKeep* keep = nullptr);
 
  private:
   void sample_block(const SceneStreamReader& in, int l0, int l1);
