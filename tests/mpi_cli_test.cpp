@@ -158,6 +158,18 @@ TEST(MpiCli, PointTargetsGiveSingleProcessBytes) {
       "SLAR with point targets", "--targets " + write_targets(dir));
 }
 
+// Point targets on a track off the grid axes (heading 30 deg, the 300 x
+// 600-cell scene of ObliqueSlarGivesSingleProcessBytes): each oblique block
+// finds the targets on its lines lit or hidden, rank 0 measures them: the
+// same bytes.
+TEST(MpiCli, ObliquePointTargetsGiveSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ranks_give_single_process_bytes(
+      radar_with(dir, "r.toml", "seed-fig4-5.toml", "heading = \"0 deg\"", "heading = \"30 deg\""),
+      "SLAR heading 30 with point targets", "--targets " + write_targets(dir), "300x600");
+}
+
 // The coherent SAR (the shipped radar: 4 looks, NESZ) with point targets:
 // each rank computes its blocks with their halo of lines and sends their
 // intensity; rank 0 finishes them in line order: the same bytes.

@@ -392,12 +392,6 @@ class StreamRun {
                        "180 or 270 deg); off the axes it needs the scene in memory (run without "
                        "--stream)");
     }
-    if (oblique_ && !options_.targets.empty()) {
-      throw InputError(options_.targets_file, "--targets",
-                       "a streamed run takes point targets on a track along a grid axis (heading "
-                       "0, 90, 180 or 270 deg); off the axes they need the scene in memory (run "
-                       "without --stream)");
-    }
     cross_cells_ = oblique_ ? static_cast<int>(std::max<std::int64_t>(
                                   1, std::int64_t(grid().rows) * grid().cols / lines()))
                             : (along_y_axis(sim().track) ? grid().cols : grid().rows);
@@ -649,7 +643,13 @@ class StreamRun {
     k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
     k.prof.samples_in_swath = 0;
     detail::ObliqueMapValues v{std::move(k.scene_mask), std::move(k.incidence)};
-    oblique.run(in_, k.l0, k.l1, k.prof, k.counts, v);
+    // The point targets on the block's lines, found lit or hidden there (as
+    // compute_block).
+    std::optional<detail::LinePointTargets> on_lines;
+    if (targets_) on_lines = targets_->candidates_on_lines(k.l0, k.l1);
+    const detail::LineKeep keep{nullptr, nullptr, on_lines ? &*on_lines : nullptr};
+    oblique.run(in_, k.l0, k.l1, k.prof, k.counts, v, on_lines ? &keep : nullptr);
+    k.targets = on_lines ? targets_->block_result(*on_lines) : detail::BlockTargets{};
     k.scene_mask = std::move(v.mask);
     k.incidence = std::move(v.incidence_deg);
     return k;

@@ -99,7 +99,10 @@ ObliqueBlockLines::ObliqueBlockLines(const Scene& grid, const SlarGeometry& g, c
 }
 
 void ObliqueBlockLines::run(const SceneStreamReader& in, int l0, int l1, SlarLineProfiles& prof,
-                            SlarLineCounts& counts, ObliqueMapValues& maps) {
+                            SlarLineCounts& counts, ObliqueMapValues& maps, const LineKeep* keep) {
+  // Only point targets: the kept geometry and element powers are the
+  // in-memory and coherent runs' (need_incidence does not change).
+  RIS_CHECK(!keep || (!keep->geometry && !keep->element_power_w && !keep->slant_range_m));
   const std::size_t n = sz(l1 - l0) * sz(g_.samples);
   spans_.resize(sz(l1 - l0));
   for (int line = l0; line < l1; ++line) spans_[sz(line - l0)] = slar_line_span(grid_, g_, line);
@@ -125,7 +128,9 @@ void ObliqueBlockLines::run(const SceneStreamReader& in, int l0, int l1, SlarLin
                     maps,
                     near_m_,
                     far_m_};
-  run_line_blocks(g_, stages_.stages(), l0, l1, kEngineLines, prof, counts, [&](LineScratch&) {
+  LineStages stages = stages_.stages();
+  stages.keep = keep;
+  run_line_blocks(g_, stages, l0, l1, kEngineLines, prof, counts, [&](LineScratch&) {
     return StreamThreadSource{{v, g_, std::vector<std::int32_t>(sz(g_.samples))}};
   });
 }

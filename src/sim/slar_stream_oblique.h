@@ -8,8 +8,10 @@
 //    cell each side the slopes read) read and turned into texels
 //    (sim/texel_window.h), so a block reads only the rows and columns its
 //    lines cross, never the whole scene; then the line engine with the
-//    in-memory oblique run's stages (sim/slar_oblique_lines.h). Out: the
-//    block's profile rows and counts, and each sample's scene-map value
+//    in-memory oblique run's stages (sim/slar_oblique_lines.h), with the
+//    point targets on the block's lines (LineKeep::targets, from
+//    sim/slar_stream_targets.h), as the in-memory run passes its own. Out:
+//    the block's profile rows and counts, and each sample's scene-map value
 //    (lines x samples; unseen outside a line's span), which the stream spills
 //    to temporary rasters in its staging folder.
 //  - pass 1m, the scene maps (ObliqueSceneMaps): per block of scene rows,
@@ -48,9 +50,11 @@ class ObliqueBlockLines {
 
   // Lines [l0, l1): their terrain read from `in` window by window, then
   // through the line engine into prof (allocated for the lines) and counts;
-  // their samples' scene-map values into `maps` (resized).
+  // their samples' scene-map values into `maps` (resized). keep (optional):
+  // the point targets on the block's lines (LineKeep::targets), found lit or
+  // hidden and added to their lines as the in-memory oblique run does.
   void run(const SceneStreamReader& in, int l0, int l1, SlarLineProfiles& prof,
-           SlarLineCounts& counts, ObliqueMapValues& maps);
+           SlarLineCounts& counts, ObliqueMapValues& maps, const LineKeep* keep = nullptr);
 
  private:
   void sample_block(const SceneStreamReader& in, int l0, int l1);

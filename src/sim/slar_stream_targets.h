@@ -1,5 +1,7 @@
 // Internal: point targets (ris/sim/point_target.h) in a streamed SLAR or
-// incoherent SAR run (ris/sim/slar_stream.h), with the in-memory run's bytes.
+// incoherent SAR run (ris/sim/slar_stream.h), along a grid axis or off it
+// (the line engine's blocks or slar_stream_oblique.h's), with the in-memory
+// run's bytes.
 //
 // The in-memory run places each target on its line before the lines are
 // formed (point_candidates) and finds it lit or hidden as its line is formed

@@ -258,36 +258,90 @@ TEST(SlarStreamTargets, BadTargetFailsAsInMemory) {
   }
 }
 
-// Off the grid axes a streamed run refuses point targets and the coherent
-// SAR (their blocks would need the targets' lines and the coherent halo),
-// naming the key, before any output is made (the same track streams
-// without them: SlarStream.ObliqueStreamedEqualsInMemoryByteForByte; along
-// an axis both stream: CoherentSarStreamedEqualsInMemoryByteForByte).
-TEST(SlarStreamTargets, ObliqueTrackRefusesTargetsAndTheCoherentSar) {
+// Off the grid axes too (slar_stream_oblique.h: each block's engine run
+// gets the candidates on its lines, as compute_block's), streamed == in
+// memory byte for byte with point targets: SLAR at 30 and 200 deg, the
+// incoherent SAR at 45 deg; blocks of 7, 16 and all lines; 1 and 2
+// threads; the returns, hidden names (one at least) and measurements too.
+TEST(SlarStreamTargets, ObliqueStreamedEqualsInMemoryByteForByte) {
+  const SceneFile f;
+  const Scene read = read_scene(f.path);
+  const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
+  const std::vector<PointTarget> targets = scene_targets();
+  const int saved = omp_get_max_threads();
+  std::size_t hidden = 0;  // over the cases (behind the tower at 30 and 45 deg)
+  struct Case {
+    double heading;
+    bool sar;
+  };
+  for (const Case c : {Case{30.0, false}, Case{45.0, true}, Case{200.0, false}}) {
+    const RadarParams radar = targets_radar(f.scene, c.heading, c.sar);
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      const SlarRunInfo info{f.path.string(), "r.toml", "test", 5, threads};
+      const std::string tag =
+          fmt::format("heading {} sar {} threads {}", c.heading, c.sar, threads);
+      const fs::path mem = f.dir / "mem";
+      const SlarSimulation sim = write_in_memory(read, radar, src, info, targets, mem);
+      ASSERT_FALSE(sim.geometry.direct_sampling) << tag;
+      EXPECT_GE(sim.point_returns.size(), 3u) << tag;
+      hidden += sim.hidden_targets.size();
+      const std::size_t measured = measure_point_targets(sim, render_slar(sim, 5), false).size();
+      EXPECT_GE(measured, 1u) << tag;
+      for (int block : {7, 16, 1000}) {
+        SlarStreamOptions o;
+        o.block_lines = block;
+        o.quiet = true;
+        o.targets = targets;
+        o.targets_file = "targets.toml";
+        const fs::path out = f.dir / "stream";
+        const SlarStreamSummary sum = simulate_slar_streamed(f.path, radar, src, info, out, o);
+        const std::string what = tag + fmt::format(" block {}", block);
+        expect_same_folders(mem, out, what);
+        EXPECT_EQ(sum.sim.hidden_targets, sim.hidden_targets) << what;
+        ASSERT_EQ(sum.sim.point_returns.size(), sim.point_returns.size()) << what;
+        for (std::size_t k = 0; k < sim.point_returns.size(); ++k) {
+          EXPECT_EQ(sum.sim.point_returns[k].line, sim.point_returns[k].line) << what;
+          EXPECT_EQ(sum.sim.point_returns[k].slant_range_m, sim.point_returns[k].slant_range_m)
+              << what;
+        }
+        EXPECT_EQ(sum.sim.image.point_power_w, sim.image.point_power_w) << what;
+        EXPECT_EQ(sum.irfs.size(), measured) << what;
+        fs::remove_all(out);
+      }
+      fs::remove_all(mem);
+    }
+  }
+  omp_set_num_threads(saved);
+  EXPECT_GE(hidden, 1u);
+}
+
+// Off the grid axes a streamed run refuses the coherent SAR (its blocks
+// would need the coherent halo of an oblique block), naming the key, before
+// any output is made; point targets stream there
+// (ObliqueStreamedEqualsInMemoryByteForByte; along an axis the coherent SAR
+// streams: CoherentSarStreamedEqualsInMemoryByteForByte).
+TEST(SlarStreamTargets, ObliqueTrackRefusesTheCoherentSar) {
   const SceneFile f;
   const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
   const SlarRunInfo info{f.path.string(), "r.toml", "test", 5, 1};
-  const auto refusal = [&](const RadarParams& radar, const std::vector<PointTarget>& targets) {
+  for (const bool with_targets : {false, true}) {
+    RadarParams coherent = targets_radar(f.scene, 30.0, true);
+    coherent.sar.coherent = true;
     SlarStreamOptions o;
     o.quiet = true;
-    o.targets = targets;
+    if (with_targets) o.targets = scene_targets();
     o.targets_file = "targets.toml";
     std::string what;
     try {
-      simulate_slar_streamed(f.path, radar, src, info, f.dir / "out", o);
+      simulate_slar_streamed(f.path, coherent, src, info, f.dir / "out", o);
     } catch (const InputError& e) {
       what = e.what();
     }
     EXPECT_FALSE(fs::exists(f.dir / "out"));
-    return what;
-  };
-  const std::string targets = refusal(targets_radar(f.scene, 30.0, false), scene_targets());
-  EXPECT_NE(targets.find("--targets"), std::string::npos) << targets;
-  EXPECT_NE(targets.find("grid axis"), std::string::npos) << targets;
-  RadarParams coherent = targets_radar(f.scene, 30.0, true);
-  coherent.sar.coherent = true;
-  const std::string sar = refusal(coherent, {});
-  EXPECT_NE(sar.find("sar.coherent"), std::string::npos) << sar;
+    EXPECT_NE(what.find("sar.coherent"), std::string::npos) << what;
+    EXPECT_NE(what.find("grid axis"), std::string::npos) << what;
+  }
 }
 
 }  // namespace

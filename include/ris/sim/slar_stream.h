@@ -49,9 +49,9 @@
 // It runs SLAR and SAR tracks at any heading (along a grid axis with one
 // azimuth line per cell row or column, fused_slar_applies; off the axes
 // with any line spacing, src/sim/slar_stream_oblique.h), with point targets
-// (src/sim/slar_stream_targets.h) and the coherent SAR
+// (src/sim/slar_stream_targets.h) at any heading, and the coherent SAR
 // (src/sim/sar_coherent_stream.h) along a grid axis. Other line spacings
-// along an axis, and point targets or the coherent SAR off the axes, need
+// along an axis, and the coherent SAR off the axes, need
 // the in-memory path and are refused with an InputError that says so (PPI
 // streams through ris/sim/ppi_stream.h).
 //
