@@ -65,24 +65,27 @@ double terrain_height_at(const Scene& scene, double x_m, double y_m) {
   return ts.valid ? double(ts.height_m) : std::numeric_limits<double>::quiet_NaN();
 }
 
-void check_point_targets_on_scene(const std::vector<PointTarget>& targets, const Scene& scene) {
-  const auto [x0, y1] = scene.world_from_grid(0.0, 0.0);
-  const auto [x1, y0] = scene.world_from_grid(scene.cols, scene.rows);
-  for (const PointTarget& t : targets) {
-    const std::string key = fmt::format("target[{}].position", t.index);
-    if (!(t.x_m >= x0 && t.x_m <= x1 && t.y_m >= y0 && t.y_m <= y1)) {
-      throw InputError(t.source_file, key,
-                       fmt::format("target \"{}\" at ({:.1f}, {:.1f}) m is off the scene, which "
-                                   "spans x {:.1f} to {:.1f} m and y {:.1f} to {:.1f} m",
-                                   t.name, t.x_m, t.y_m, x0, x1, y0, y1));
-    }
-    if (!std::isfinite(terrain_height_at(scene, t.x_m, t.y_m))) {
-      throw InputError(t.source_file, key,
-                       fmt::format("target \"{}\" at ({:.1f}, {:.1f}) m stands on a no-data cell "
-                                   "of the scene",
-                                   t.name, t.x_m, t.y_m));
-    }
+void check_point_target_on_scene(const PointTarget& t, const Scene& grid, double terrain_height_m) {
+  const auto [x0, y1] = grid.world_from_grid(0.0, 0.0);
+  const auto [x1, y0] = grid.world_from_grid(grid.cols, grid.rows);
+  const std::string key = fmt::format("target[{}].position", t.index);
+  if (!(t.x_m >= x0 && t.x_m <= x1 && t.y_m >= y0 && t.y_m <= y1)) {
+    throw InputError(t.source_file, key,
+                     fmt::format("target \"{}\" at ({:.1f}, {:.1f}) m is off the scene, which "
+                                 "spans x {:.1f} to {:.1f} m and y {:.1f} to {:.1f} m",
+                                 t.name, t.x_m, t.y_m, x0, x1, y0, y1));
   }
+  if (!std::isfinite(terrain_height_m)) {
+    throw InputError(t.source_file, key,
+                     fmt::format("target \"{}\" at ({:.1f}, {:.1f}) m stands on a no-data cell "
+                                 "of the scene",
+                                 t.name, t.x_m, t.y_m));
+  }
+}
+
+void check_point_targets_on_scene(const std::vector<PointTarget>& targets, const Scene& scene) {
+  for (const PointTarget& t : targets)
+    check_point_target_on_scene(t, scene, terrain_height_at(scene, t.x_m, t.y_m));
 }
 
 bool point_lit_on_samples(const SlarGeometry& g, int first, int n, const std::uint8_t* flags,

@@ -74,27 +74,12 @@ double streamed_terrain_height(const SceneStreamReader& in, double x_m, double y
 
 std::vector<double> streamed_target_heights(const std::vector<PointTarget>& targets,
                                             const SceneStreamReader& in) {
-  // check_point_targets_on_scene's checks and messages.
-  const Scene& scene = in.grid();
-  const auto [x0, y1] = scene.world_from_grid(0.0, 0.0);
-  const auto [x1, y0] = scene.world_from_grid(scene.cols, scene.rows);
+  // check_point_targets_on_scene's checks and messages (the height read
+  // off the scene is NaN, without a read).
   std::vector<double> base(targets.size());
   for (std::size_t k = 0; k < targets.size(); ++k) {
-    const PointTarget& t = targets[k];
-    const std::string key = fmt::format("target[{}].position", t.index);
-    if (!(t.x_m >= x0 && t.x_m <= x1 && t.y_m >= y0 && t.y_m <= y1)) {
-      throw InputError(t.source_file, key,
-                       fmt::format("target \"{}\" at ({:.1f}, {:.1f}) m is off the scene, which "
-                                   "spans x {:.1f} to {:.1f} m and y {:.1f} to {:.1f} m",
-                                   t.name, t.x_m, t.y_m, x0, x1, y0, y1));
-    }
-    base[k] = streamed_terrain_height(in, t.x_m, t.y_m);
-    if (!std::isfinite(base[k])) {
-      throw InputError(t.source_file, key,
-                       fmt::format("target \"{}\" at ({:.1f}, {:.1f}) m stands on a no-data cell "
-                                   "of the scene",
-                                   t.name, t.x_m, t.y_m));
-    }
+    base[k] = streamed_terrain_height(in, targets[k].x_m, targets[k].y_m);
+    check_point_target_on_scene(targets[k], in.grid(), base[k]);
   }
   return base;
 }

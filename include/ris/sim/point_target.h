@@ -49,6 +49,11 @@ std::vector<PointTarget> point_targets_from_toml(const toml::table& doc,
 // scene or on a no-data cell.
 void check_point_targets_on_scene(const std::vector<PointTarget>& targets, const Scene& scene);
 
+// The same checks and messages for one target, given the scene's grid and
+// its terrain height there (NaN on no data), however it was read (in
+// memory, or from the file by a streamed run).
+void check_point_target_on_scene(const PointTarget& t, const Scene& grid, double terrain_height_m);
+
 // The target's base: terrain height at (x, y) (bilinear), NaN off the scene.
 double terrain_height_at(const Scene& scene, double x_m, double y_m);
 
