@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,28 @@ SlarSimulation write_in_memory(const Scene& scene, const RadarParams& radar,
   return sim;
 }
 
+// Streams the scene with `targets` in blocks of 7, 16 and all lines and
+// checks each run's folder against `mem` byte for byte; check(summary,
+// what) adds the test's own expectations.
+void expect_streamed_blocks_equal(
+    const SceneFile& f, const RadarParams& radar, const Sigma0Source& src, const SlarRunInfo& info,
+    const std::vector<PointTarget>& targets, const fs::path& mem, const std::string& tag,
+    const std::function<void(const SlarStreamSummary&, const std::string&)>& check) {
+  for (int block : {7, 16, 1000}) {
+    SlarStreamOptions o;
+    o.block_lines = block;
+    o.quiet = true;
+    o.targets = targets;
+    o.targets_file = "targets.toml";
+    const fs::path out = f.dir / "stream";
+    const SlarStreamSummary sum = simulate_slar_streamed(f.path, radar, src, info, out, o);
+    const std::string what = tag + fmt::format(" block {}", block);
+    expect_same_folders(mem, out, what);
+    check(sum, what);
+    fs::remove_all(out);
+  }
+}
+
 // Streamed == in memory, byte for byte, with point targets: SLAR along and
 // across the grid, the incoherent SAR; blocks of 7, 16 and all lines; 1 and
 // 2 threads. The targets' returns, hidden names and measurements too.
@@ -135,22 +158,15 @@ TEST(SlarStreamTargets, StreamedEqualsInMemoryByteForByte) {
       const SlarSimulation sim = write_in_memory(read, radar, src, info, targets, mem);
       EXPECT_GE(sim.point_returns.size(), 3u) << tag;
       EXPECT_GE(sim.hidden_targets.size(), 1u) << tag;
-      for (int block : {7, 16, 1000}) {
-        SlarStreamOptions o;
-        o.block_lines = block;
-        o.quiet = true;
-        o.targets = targets;
-        o.targets_file = "targets.toml";
-        const fs::path out = f.dir / "stream";
-        const SlarStreamSummary sum = simulate_slar_streamed(f.path, radar, src, info, out, o);
-        const std::string what = tag + fmt::format(" block {}", block);
-        expect_same_folders(mem, out, what);
-        EXPECT_EQ(sum.sim.hidden_targets, sim.hidden_targets) << what;
-        ASSERT_EQ(sum.sim.point_returns.size(), sim.point_returns.size()) << what;
-        EXPECT_EQ(sum.irfs.size(), measure_point_targets(sim, render_slar(sim, 5), false).size())
-            << what;
-        fs::remove_all(out);
-      }
+      expect_streamed_blocks_equal(
+          f, radar, src, info, targets, mem, tag,
+          [&](const SlarStreamSummary& sum, const std::string& what) {
+            EXPECT_EQ(sum.sim.hidden_targets, sim.hidden_targets) << what;
+            ASSERT_EQ(sum.sim.point_returns.size(), sim.point_returns.size()) << what;
+            EXPECT_EQ(sum.irfs.size(),
+                      measure_point_targets(sim, render_slar(sim, 5), false).size())
+                << what;
+          });
       fs::remove_all(mem);
     }
   }
@@ -185,19 +201,10 @@ TEST(SlarStreamTargets, CoherentSarStreamedEqualsInMemoryByteForByte) {
       write_slar_products(
           mem, read, sim, pic, info,
           {{"point_targets", point_target_irf_json(irfs, sim, "targets.toml", true)}});
-      for (int block : {7, 16, 1000}) {
-        SlarStreamOptions o;
-        o.block_lines = block;
-        o.quiet = true;
-        o.targets = targets;
-        o.targets_file = "targets.toml";
-        const fs::path out = f.dir / "stream";
-        const SlarStreamSummary sum = simulate_slar_streamed(f.path, radar, src, info, out, o);
-        const std::string what = tag + fmt::format(" block {}", block);
-        expect_same_folders(mem, out, what);
-        EXPECT_EQ(sum.irfs.size(), irfs.size()) << what;
-        fs::remove_all(out);
-      }
+      expect_streamed_blocks_equal(f, radar, src, info, targets, mem, tag,
+                                   [&](const SlarStreamSummary& sum, const std::string& what) {
+                                     EXPECT_EQ(sum.irfs.size(), irfs.size()) << what;
+                                   });
       fs::remove_all(mem);
     }
   }
@@ -288,27 +295,19 @@ TEST(SlarStreamTargets, ObliqueStreamedEqualsInMemoryByteForByte) {
       hidden += sim.hidden_targets.size();
       const std::size_t measured = measure_point_targets(sim, render_slar(sim, 5), false).size();
       EXPECT_GE(measured, 1u) << tag;
-      for (int block : {7, 16, 1000}) {
-        SlarStreamOptions o;
-        o.block_lines = block;
-        o.quiet = true;
-        o.targets = targets;
-        o.targets_file = "targets.toml";
-        const fs::path out = f.dir / "stream";
-        const SlarStreamSummary sum = simulate_slar_streamed(f.path, radar, src, info, out, o);
-        const std::string what = tag + fmt::format(" block {}", block);
-        expect_same_folders(mem, out, what);
-        EXPECT_EQ(sum.sim.hidden_targets, sim.hidden_targets) << what;
-        ASSERT_EQ(sum.sim.point_returns.size(), sim.point_returns.size()) << what;
-        for (std::size_t k = 0; k < sim.point_returns.size(); ++k) {
-          EXPECT_EQ(sum.sim.point_returns[k].line, sim.point_returns[k].line) << what;
-          EXPECT_EQ(sum.sim.point_returns[k].slant_range_m, sim.point_returns[k].slant_range_m)
-              << what;
-        }
-        EXPECT_EQ(sum.sim.image.point_power_w, sim.image.point_power_w) << what;
-        EXPECT_EQ(sum.irfs.size(), measured) << what;
-        fs::remove_all(out);
-      }
+      expect_streamed_blocks_equal(
+          f, radar, src, info, targets, mem, tag,
+          [&](const SlarStreamSummary& sum, const std::string& what) {
+            EXPECT_EQ(sum.sim.hidden_targets, sim.hidden_targets) << what;
+            ASSERT_EQ(sum.sim.point_returns.size(), sim.point_returns.size()) << what;
+            for (std::size_t k = 0; k < sim.point_returns.size(); ++k) {
+              EXPECT_EQ(sum.sim.point_returns[k].line, sim.point_returns[k].line) << what;
+              EXPECT_EQ(sum.sim.point_returns[k].slant_range_m, sim.point_returns[k].slant_range_m)
+                  << what;
+            }
+            EXPECT_EQ(sum.sim.image.point_power_w, sim.image.point_power_w) << what;
+            EXPECT_EQ(sum.irfs.size(), measured) << what;
+          });
       fs::remove_all(mem);
     }
   }
