@@ -208,6 +208,34 @@ double process_cpu_seconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
+// A band of scene rows [r0, r0 + rows) as a rank sends it to rank 0: a
+// float and a byte per cell (pass 1m's incidence and mask, pass 2b's power
+// and greytone).
+void pack_row_band(int r0, int rows, const std::vector<float>& values,
+                   const std::vector<std::uint8_t>& bytes, std::vector<char>& out) {
+  const int head[2] = {r0, rows};
+  const char* h = reinterpret_cast<const char*>(head);
+  out.insert(out.end(), h, h + sizeof(head));
+  const char* v = reinterpret_cast<const char*>(values.data());
+  out.insert(out.end(), v, v + values.size() * sizeof(float));
+  out.insert(out.end(), bytes.begin(), bytes.end());
+}
+
+// pack_row_band's inverse, for rows of `cols` cells.
+void unpack_row_band(const char* p, std::size_t n, int cols, int& r0, int& rows,
+                     std::vector<float>& values, std::vector<std::uint8_t>& bytes) {
+  int head[2] = {};
+  RIS_CHECK(n >= sizeof(head));
+  std::memcpy(head, p, sizeof(head));
+  r0 = head[0];
+  rows = head[1];
+  const std::size_t nc = std::size_t(rows) * std::size_t(cols);
+  RIS_CHECK(n == sizeof(head) + nc * (sizeof(float) + 1));
+  values.resize(nc);
+  std::memcpy(values.data(), p + sizeof(head), nc * sizeof(float));
+  bytes.assign(p + sizeof(head) + nc * sizeof(float), p + n);
+}
+
 // A pixel counted by the auto greytone reference (ris/image/greytone.h).
 inline bool valid_power(float p, std::uint8_t mask) {
   return std::isfinite(p) && p > 0.0f && !(mask & pixel_flag::kNoData);
@@ -898,25 +926,11 @@ class StreamRun {
           return k;
         },
         [](const MapBand& k, std::vector<char>& out) {
-          const int head[2] = {k.r0, k.rows};
-          const char* h = reinterpret_cast<const char*>(head);
-          out.insert(out.end(), h, h + sizeof(head));
-          out.insert(out.end(), k.mask.begin(), k.mask.end());
-          const char* p = reinterpret_cast<const char*>(k.incidence.data());
-          out.insert(out.end(), p, p + k.incidence.size() * sizeof(float));
+          pack_row_band(k.r0, k.rows, k.incidence, k.mask, out);
         },
         [&](const char* p, std::size_t n) {
           MapBand k;
-          int head[2] = {};
-          RIS_CHECK(n >= sizeof(head));
-          std::memcpy(head, p, sizeof(head));
-          k.r0 = head[0];
-          k.rows = head[1];
-          const std::size_t nc = sz(k.rows) * sz(grid().cols);
-          RIS_CHECK(n == sizeof(head) + nc * (1 + sizeof(float)));
-          k.mask.assign(p + sizeof(head), p + sizeof(head) + nc);
-          k.incidence.resize(nc);
-          std::memcpy(k.incidence.data(), p + sizeof(head) + nc, nc * sizeof(float));
+          unpack_row_band(p, n, grid().cols, k.r0, k.rows, k.incidence, k.mask);
           return k;
         },
         [&](int, MapBand& k) {
@@ -1154,27 +1168,11 @@ class StreamRun {
           return k;
         },
         [](const GeoBlock& k, std::vector<char>& out) {
-          const int head[2] = {k.r0, k.rows};
-          const char* h = reinterpret_cast<const char*>(head);
-          out.insert(out.end(), h, h + sizeof(head));
-          const char* p = reinterpret_cast<const char*>(k.power.data());
-          out.insert(out.end(), p, p + k.power.size() * sizeof(float));
-          const char* g = reinterpret_cast<const char*>(k.grey.data());
-          out.insert(out.end(), g, g + k.grey.size());
+          pack_row_band(k.r0, k.rows, k.power, k.grey, out);
         },
         [&](const char* p, std::size_t n) {
           GeoBlock k;
-          int head[2] = {};
-          RIS_CHECK(n >= sizeof(head));
-          std::memcpy(head, p, sizeof(head));
-          k.r0 = head[0];
-          k.rows = head[1];
-          const std::size_t nc = sz(k.rows) * sz(grid().cols);
-          RIS_CHECK(n == sizeof(head) + nc * (sizeof(float) + 1));
-          k.power.resize(nc);
-          k.grey.resize(nc);
-          std::memcpy(k.power.data(), p + sizeof(head), nc * sizeof(float));
-          std::memcpy(k.grey.data(), p + sizeof(head) + nc * sizeof(float), nc);
+          unpack_row_band(p, n, grid().cols, k.r0, k.rows, k.power, k.grey);
           return k;
         },
         [&](int, GeoBlock& k) {
