@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "acquisition_paths.h"
 #include "build_paths.h"
 #include "test_util.h"
 
@@ -394,6 +395,25 @@ TEST(MpiCli, AFailingRankFailsTheRunWithoutOutput) {
   EXPECT_NE(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("--stream"), std::string::npos) << r.output;
   expect_nothing_written(dir, "no --stream");
+}
+
+// An acquisition run is held in memory on one process (issue 19: not
+// streamed yet): over 2 ranks it is refused naming --acquisition and
+// pointing at a single-process run (not "add --stream", which
+// run_acquisition refuses in its turn), with or without --stream, and
+// nothing is written.
+TEST(MpiCli, AcquisitionRunOverRanksIsRefused) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  for (const std::string extra : {"", " --stream"}) {
+    const auto r = run_shell(mpirun(2) + test::ris_exe() + " simulate --quiet -a " +
+                             test::winnipeg_h5() + " --dem " + test::test_dem("winnipeg_dem.tif") +
+                             extra + " --out " + (dir / "out").string());
+    EXPECT_NE(r.exit_code, 0) << extra << "\n" << r.output;
+    EXPECT_NE(r.output.find("--acquisition"), std::string::npos) << extra << "\n" << r.output;
+    EXPECT_NE(r.output.find("without mpirun"), std::string::npos) << extra << "\n" << r.output;
+    expect_nothing_written(dir, "an acquisition over ranks" + extra);
+  }
 }
 
 }  // namespace

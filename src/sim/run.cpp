@@ -276,6 +276,15 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   }
   const Clock::time_point t0 = Clock::now();
   RunResult res;
+  if (process_group().size() > 1 && !r.acquisition_path.empty()) {
+    // An acquisition run is not streamed yet: "add --stream" would only be
+    // refused in its turn (run_acquisition).
+    throw InputError(r.acquisition_path, "--acquisition",
+                     fmt::format("an acquisition run is held in memory on one process (a window "
+                                 "of at most 50 M pixels), not spread over {} MPI ranks yet; run "
+                                 "it without mpirun",
+                                 process_group().size()));
+  }
   if (process_group().size() > 1 && !(r.stream || r.block_lines > 0)) {
     // Else every rank would run the whole simulation and write the same folder.
     throw InputError(r.scene_path, "--stream",
