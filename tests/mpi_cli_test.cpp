@@ -1,8 +1,9 @@
 // `mpirun -np N ris simulate ... --stream` (docs/scale.md): every product the
 // same bytes as a single process, for SLAR along the grid (heading 0) and
 // across it (heading 90), SLAR with point targets, the incoherent and the
-// coherent SAR and PPI (both shipped radars, a sector, point targets); a failing or killed rank
-// fails the whole run and leaves no output. Skipped when ris was built without MPI.
+// coherent SAR (along the grid and off it) and PPI (both shipped radars, a sector, point targets);
+// a failing or killed rank fails the whole run and leaves no output. Skipped when ris was built
+// without MPI.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -180,6 +181,21 @@ TEST(MpiCli, CoherentSarGivesSingleProcessBytes) {
   expect_ranks_give_single_process_bytes(
       radar_with(dir, "r.toml", "sar-x-band-stripmap.toml", "coherent = true", "coherent = true"),
       "coherent SAR", "--targets " + write_targets(dir));
+}
+
+// The coherent SAR on a track off the grid axes (heading 30 deg, the 300 x
+// 600-cell scene of ObliqueSlarGivesSingleProcessBytes) with point targets:
+// each rank computes its oblique blocks with their halo of lines (the
+// halo's map values and counts dropped) and sends their intensity and
+// per-sample map values; rank 0 finishes them in line order and builds the
+// scene maps (pass 1m): the same bytes.
+TEST(MpiCli, ObliqueCoherentSarGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  expect_ranks_give_single_process_bytes(radar_with(dir, "r.toml", "sar-x-band-stripmap.toml",
+                                                    "heading = \"0 deg\"", "heading = \"30 deg\""),
+                                         "coherent SAR heading 30",
+                                         "--targets " + write_targets(dir), "300x600");
 }
 
 // A streamed PPI run (rays in blocks, ris/sim/ppi_stream.h) on a noise

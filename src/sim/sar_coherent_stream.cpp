@@ -45,16 +45,9 @@ std::pair<int, int> CoherentStream::lines_read(int l0, int l1) const {
   return {std::max(0, l0 - halo_lines()), std::min(lines_, l1 + halo_lines())};
 }
 
-void CoherentStream::run_lines(const SlarLineEngine& engine, const SceneWindow& win,
-                               const SceneMapsWindow& maps, int a, int b, const LineKeep& keep,
-                               SlarLineCounts& counts) {
-  if (a < b) engine.run(a, b, win, read_prof_, maps, counts, &keep);
-}
-
-void CoherentStream::run_block(const SlarLineEngine& engine, const SceneWindow& win,
-                               const SceneMapsWindow& maps, int l0, int l1,
-                               const StreamTargets* targets, SlarLineProfiles& prof,
-                               SlarLineCounts& counts, BlockTargets& bt, CoherentBlock& out) {
+void CoherentStream::run_block(const RunLines& run, int l0, int l1, const StreamTargets* targets,
+                               SlarLineProfiles& prof, SlarLineCounts& counts, BlockTargets& bt,
+                               CoherentBlock& out) {
   const auto [h0, h1] = lines_read(l0, l1);
   const std::size_t n_read = std::size_t(h1 - h0) * std::size_t(samples_);
   element_power_.assign(n_read, 0.0f);
@@ -70,11 +63,11 @@ void CoherentStream::run_block(const SlarLineEngine& engine, const SceneWindow& 
   // samples in the swath are the neighbouring blocks' (dropped here).
   read_prof_.allocate(h1 - h0, bins_, h0);
   SlarLineCounts halo_counts;
-  run_lines(engine, win, SceneMapsWindow{}, h0, l0, keep, halo_counts);
+  if (h0 < l0) run(h0, l0, false, read_prof_, halo_counts, keep);
   read_prof_.samples_in_swath = 0;
-  run_lines(engine, win, maps, l0, l1, keep, counts);
+  run(l0, l1, true, read_prof_, counts, keep);
   const std::int64_t own_in_swath = read_prof_.samples_in_swath;
-  run_lines(engine, win, SceneMapsWindow{}, l1, h1, keep, halo_counts);
+  if (l1 < h1) run(l1, h1, false, read_prof_, halo_counts, keep);
   // Its own lines' profiles, for the azimuth integration on rank 0.
   prof.allocate(l1 - l0, bins_, l0);
   prof.samples_in_swath = own_in_swath;

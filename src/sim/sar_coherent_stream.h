@@ -7,16 +7,17 @@
 // targets whose response reaches it (their lines within S + 1 of k). So a
 // block of lines [l0, l1) is computed over its lines plus a halo of
 // halo_lines() = S + 2 lines each side (clipped to the image), read from
-// the scene and run through the line engine like its own lines, keeping
-// each element's power and slant range (LineKeep with line0: the block's
-// arrays). Its own lines' profiles, counts, scene maps and targets go on
-// as in the incoherent stream; the halo's are dropped (the neighbouring
-// blocks own them). Then per look, as coherent_sar_intensity does and with
-// the same code (src/sim/sar_coherent_parts.h): range compression of every
-// line read, azimuth compression and thermal noise of its own lines, the
-// lit point targets in target order, and the looks' mean intensity (double)
-// of its own lines: the block's result (8 bytes a line x bin, sent to rank
-// 0 under MPI).
+// the scene and run through the line engine like its own lines (along a
+// grid axis over the block's window, off the axes by
+// src/sim/slar_stream_oblique.h: the caller's RunLines), keeping each
+// element's power and slant range (LineKeep with line0: the block's
+// arrays). Its own lines' profiles, counts, scene maps (or per-sample map
+// values off the axes) and targets go on as in the incoherent stream; the
+// halo's are dropped (the neighbouring blocks own them). Then per look, as coherent_sar_intensity
+// does and with the same code (src/sim/sar_coherent_parts.h): range compression of every line read,
+// azimuth compression and thermal noise of its own lines, the lit point targets in target order,
+// and the looks' mean intensity (double) of its own lines: the block's result (8 bytes a line x
+// bin, sent to rank 0 under MPI).
 //
 // Rank 0 keeps the blocks' intensities in line order (add) and, as the
 // azimuth integrator emits the mean image's lines (their mask and area),
@@ -28,6 +29,7 @@
 
 #include <complex>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -58,14 +60,22 @@ class CoherentStream {
   // The lines a block of lines [l0, l1) reads and runs: with its halo.
   std::pair<int, int> lines_read(int l0, int l1) const;
 
-  // Block [l0, l1) on this rank: the engine over lines_read (win holds
-  // them; maps: the window's scene maps, of which its own lines' cells are
-  // written), its own lines' profiles into prof (allocated here) and counts
-  // into counts; targets (optional): its own lines' targets into bt; its
-  // intensity into out.
-  void run_block(const SlarLineEngine& engine, const SceneWindow& win, const SceneMapsWindow& maps,
-                 int l0, int l1, const StreamTargets* targets, SlarLineProfiles& prof,
-                 SlarLineCounts& counts, BlockTargets& bt, CoherentBlock& out);
+  // Runs lines [a, b) through the line engine into prof's rows (prof:
+  // the lines read, allocated), counts into counts, with keep (the block's
+  // element power, slant range and targets). own: the block's own lines,
+  // whose scene maps are kept (the halo's are dropped: the neighbouring
+  // blocks own them). Along a grid axis SlarLineEngine::run over the
+  // block's window, off the axes ObliqueBlockLines::run.
+  using RunLines = std::function<void(int a, int b, bool own, SlarLineProfiles& prof,
+                                      SlarLineCounts& counts, const LineKeep& keep)>;
+
+  // Block [l0, l1) on this rank: run over lines_read (its own lines and the
+  // halo, each a call), its own lines' profiles into prof (allocated here)
+  // and counts into counts; targets (optional): its own lines' targets into
+  // bt; its intensity into out.
+  void run_block(const RunLines& run, int l0, int l1, const StreamTargets* targets,
+                 SlarLineProfiles& prof, SlarLineCounts& counts, BlockTargets& bt,
+                 CoherentBlock& out);
 
   // Rank 0, blocks in line order: their intensities kept until finished.
   void add(CoherentBlock&& b);
@@ -75,9 +85,6 @@ class CoherentStream {
   void finish_lines(int n, const std::uint8_t* mask, const float* area_m2, float* out);
 
  private:
-  // The engine over lines [a, b) (of the block's [h0, h1)).
-  void run_lines(const SlarLineEngine& engine, const SceneWindow& win, const SceneMapsWindow& maps,
-                 int a, int b, const LineKeep& keep, SlarLineCounts& counts);
   // Per look: range and azimuth compression, targets, the looks' mean.
   void compress(int l0, int l1, int h0, int h1, const LinePointTargets* on_lines,
                 CoherentBlock& out);

@@ -264,8 +264,7 @@ std::int64_t in_memory_run_bytes(std::int64_t rows, std::int64_t cols, const std
 constexpr std::int64_t kSpillBytesPerSample = 5;
 
 std::int64_t streamed_temporary_bytes(const Scene& grid, const RadarParams& radar) {
-  if (!(radar.mode == RadarMode::slar || (radar.mode == RadarMode::sar && !radar.sar.coherent)))
-    return 0;
+  if (!(radar.mode == RadarMode::slar || radar.mode == RadarMode::sar)) return 0;
   const Track track = resolve_track(radar.track, grid, radar.source_file);
   const SlarGeometry g = slar_geometry_layout(grid, track, radar.azimuth_line_spacing_m);
   if (g.direct_sampling) return 0;
@@ -389,9 +388,9 @@ class StreamRun {
     summary_.stage_cpu_seconds.push_back(process_cpu_seconds() - cpu_mark_);
   }
 
-  // What the stream runs (SLAR and the incoherent SAR: along a grid axis the
-  // direct line engine, off the axes slar_stream_oblique.h) and the block
-  // sizes.
+  // What the stream runs (SLAR and SAR: along a grid axis the direct line
+  // engine, off the axes slar_stream_oblique.h; the coherent SAR's blocks
+  // with their halo, sar_coherent_stream.h) and the block sizes.
   void plan() {
     const RadarParams& r = radar();
     if (!(r.mode == RadarMode::slar || r.mode == RadarMode::sar)) {
@@ -411,19 +410,14 @@ class StreamRun {
     // A track off the axes: its lines through slar_stream_oblique.h, ~30
     // bytes a sample (the sampled terrain, map values and their copies).
     oblique_ = !g.direct_sampling;
-    // The coherent SAR also keeps each element's power and slant range,
-    // and per bin its range-compressed lines, z and intensity (twice: sent).
+    // The coherent SAR also keeps each element's power and slant range (8
+    // bytes a sample), and per bin its range-compressed lines, z and
+    // intensity (twice: sent).
     const bool coherent = r.mode == RadarMode::sar && r.sar.coherent;
-    if (oblique_ && coherent) {
-      throw InputError(r.source_file, "sar.coherent",
-                       "a streamed coherent SAR needs a track along a grid axis (heading 0, 90, "
-                       "180 or 270 deg); off the axes it needs the scene in memory (run without "
-                       "--stream)");
-    }
     cross_cells_ = oblique_ ? static_cast<int>(std::max<std::int64_t>(
                                   1, std::int64_t(grid().rows) * grid().cols / lines()))
                             : (along_y_axis(sim().track) ? grid().cols : grid().rows);
-    const std::int64_t per_line = (oblique_ ? std::int64_t(g.samples) * 30
+    const std::int64_t per_line = (oblique_ ? std::int64_t(g.samples) * (coherent ? 38 : 30)
                                             : std::int64_t(cross_cells_) * (coherent ? 26 : 18)) +
                                   std::int64_t(std::max(bins(), 1)) * (coherent ? 112 : 72);
     const int n = lines();
@@ -630,8 +624,12 @@ class StreamRun {
     const SceneMapsWindow maps{
         row0, col0, rows, cols, window_mask_.data(), window_incidence_.data()};
     if (coherent_) {
-      coherent_->run_block(engine, win, maps, k.l0, k.l1, targets_ ? &*targets_ : nullptr, k.prof,
-                           k.counts, k.targets, k.coherent);
+      const auto run = [&](int a, int e, bool own, SlarLineProfiles& prof, SlarLineCounts& counts,
+                           const detail::LineKeep& keep) {
+        engine.run(a, e, win, prof, own ? maps : SceneMapsWindow{}, counts, &keep);
+      };
+      coherent_->run_block(run, k.l0, k.l1, targets_ ? &*targets_ : nullptr, k.prof, k.counts,
+                           k.targets, k.coherent);
       keep_block_maps(engine, win, maps, k);
       return k;
     }
@@ -665,12 +663,25 @@ class StreamRun {
 
   // Block b of a track off the axes (slar_stream_oblique.h): its profile
   // rows and counts, and its samples' map values as the block's maps (the
-  // spilled rasters' rows: lines x samples).
+  // spilled rasters' rows: lines x samples). The coherent SAR runs its halo
+  // of lines too (sar_coherent_stream.h), their map values dropped.
   LineBlock compute_oblique_block(detail::ObliqueBlockLines& oblique, int b) {
     LineBlock k = start_block(b);
+    detail::ObliqueMapValues v{std::move(k.scene_mask), std::move(k.incidence)};
+    if (coherent_) {
+      detail::ObliqueMapValues halo;
+      const auto run = [&](int a, int e, bool own, SlarLineProfiles& prof, SlarLineCounts& counts,
+                           const detail::LineKeep& keep) {
+        oblique.run(in_, a, e, prof, counts, own ? v : halo, &keep);
+      };
+      coherent_->run_block(run, k.l0, k.l1, targets_ ? &*targets_ : nullptr, k.prof, k.counts,
+                           k.targets, k.coherent);
+      k.scene_mask = std::move(v.mask);
+      k.incidence = std::move(v.incidence_deg);
+      return k;
+    }
     k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
     k.prof.samples_in_swath = 0;
-    detail::ObliqueMapValues v{std::move(k.scene_mask), std::move(k.incidence)};
     // The point targets on the block's lines, found lit or hidden there (as
     // compute_block).
     std::optional<detail::LinePointTargets> on_lines;

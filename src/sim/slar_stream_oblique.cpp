@@ -100,9 +100,10 @@ ObliqueBlockLines::ObliqueBlockLines(const Scene& grid, const SlarGeometry& g, c
 
 void ObliqueBlockLines::run(const SceneStreamReader& in, int l0, int l1, SlarLineProfiles& prof,
                             SlarLineCounts& counts, ObliqueMapValues& maps, const LineKeep* keep) {
-  // Only point targets: the kept geometry and element powers are the
-  // in-memory and coherent runs' (need_incidence does not change).
-  RIS_CHECK(!keep || (!keep->geometry && !keep->element_power_w && !keep->slant_range_m));
+  // Point targets, and the coherent SAR's element power and slant range;
+  // not the kept geometry (the in-memory run's: it would change
+  // need_incidence, which the stages were made without).
+  RIS_CHECK(!keep || !keep->geometry);
   const std::size_t n = sz(l1 - l0) * sz(g_.samples);
   spans_.resize(sz(l1 - l0));
   for (int line = l0; line < l1; ++line) spans_[sz(line - l0)] = slar_line_span(grid_, g_, line);

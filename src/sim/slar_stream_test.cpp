@@ -190,6 +190,10 @@ TEST(SlarStream, DiskCheckCountsAnObliqueTracksTemporaries) {
   const SlarSimulation sim = simulate_slar(grid, oblique, src);
   const std::int64_t temporaries = streamed_temporary_bytes(grid, oblique);
   EXPECT_EQ(temporaries, std::int64_t(sim.geometry.lines) * sim.geometry.samples * 5);
+  RadarParams coherent = oblique;  // the coherent SAR streams there too, with the same spills
+  coherent.mode = RadarMode::sar;
+  coherent.sar.coherent = true;
+  EXPECT_EQ(streamed_temporary_bytes(grid, coherent), temporaries);
   const std::int64_t mib = std::int64_t(1) << 20;
   const std::int64_t products = std::int64_t(grid.rows) * grid.cols * 7;
   ASSERT_GT(temporaries, 2 * mib) << "the temporaries must outweigh the margin below";

@@ -15,7 +15,8 @@
 // at 256 MiB (unless GDAL_CACHEMAX is set). The coherent SAR reads a halo of
 // H lines each side of a block (H: the azimuth response's half-length + 2;
 // src/sim/sar_coherent_stream.h) and keeps each of those lines' element
-// power and slant range (8 bytes a cell) and range-compressed lines.
+// power and slant range (8 bytes a cell, a sample off the axes) and
+// range-compressed lines.
 //
 // Passes (each reads the scene, or an image-sized product, once):
 //   0  scene statistics: cells with data, categories used (for the sigma0
@@ -49,11 +50,10 @@
 // It runs SLAR and SAR tracks at any heading (along a grid axis with one
 // azimuth line per cell row or column, fused_slar_applies; off the axes
 // with any line spacing, src/sim/slar_stream_oblique.h), with point targets
-// (src/sim/slar_stream_targets.h) at any heading, and the coherent SAR
-// (src/sim/sar_coherent_stream.h) along a grid axis. Other line spacings
-// along an axis, and the coherent SAR off the axes, need
-// the in-memory path and are refused with an InputError that says so (PPI
-// streams through ris/sim/ppi_stream.h).
+// (src/sim/slar_stream_targets.h) and the coherent SAR
+// (src/sim/sar_coherent_stream.h) at any heading. Other line spacings
+// along an axis need the in-memory path and are refused with an InputError
+// that says so (PPI streams through ris/sim/ppi_stream.h).
 //
 // Example:
 //   ris::SlarStreamOptions o;  o.block_lines = 512;
@@ -132,7 +132,7 @@ bool scene_needs_streaming(std::int64_t rows, std::int64_t cols);
 std::int64_t in_memory_run_bytes(std::int64_t rows, std::int64_t cols, const std::string& file,
                                  const std::string& key);
 
-// The temporary files a streamed SLAR or incoherent SAR run writes into its
+// The temporary files a streamed SLAR or SAR run writes into its
 // staging folder beside the products and removes before it ends: for a
 // track off the grid axes the samples' scene-map values (azimuth lines x
 // samples x 5 bytes, pass 1m's input); 0 along an axis and for other modes.
