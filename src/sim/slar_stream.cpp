@@ -268,7 +268,7 @@ std::int64_t streamed_temporary_bytes(const Scene& grid, const RadarParams& rada
     return 0;
   const Track track = resolve_track(radar.track, grid, radar.source_file);
   const SlarGeometry g = slar_geometry_layout(grid, track, radar.azimuth_line_spacing_m);
-  if (g.direct_sampling) return 0;
+  if (fused_slar_applies(grid, g)) return 0;
   return checked_mul(checked_mul(g.lines, g.samples, radar.source_file, "azimuth_line_spacing"),
                      kSpillBytesPerSample, radar.source_file, "azimuth_line_spacing");
 }
@@ -402,18 +402,22 @@ class StreamRun {
     sim().track = resolve_track(r.track, grid(), r.source_file);
     sim().geometry = slar_geometry_layout(grid(), sim().track, r.azimuth_line_spacing_m);
     const SlarGeometry& g = sim().geometry;
-    if (g.direct_sampling && !fused_slar_applies(grid(), g)) {
-      throw InputError(r.source_file, "azimuth_line_spacing",
-                       "a streamed run of a track along a grid axis needs one azimuth line per "
-                       "cell row or column (azimuth line spacing = the cell size); other "
-                       "spacings need the scene in memory (run without --stream)");
-    }
     // A track off the axes: its lines through slar_stream_oblique.h, ~30
     // bytes a sample (the sampled terrain, map values and their copies).
     oblique_ = !g.direct_sampling;
     // The coherent SAR also keeps each element's power and slant range,
     // and per bin its range-compressed lines, z and intensity (twice: sent).
     const bool coherent = r.mode == RadarMode::sar && r.sar.coherent;
+    // Lines not one per cell row or column (off the axes, or along one at
+    // a spacing other than the cell size): each sample's map values are
+    // spilled and pass 1m takes each cell's (as scene_geometry_maps).
+    spill_maps_ = !fused_slar_applies(grid(), g);
+    if (!oblique_ && spill_maps_ && coherent) {
+      throw InputError(r.source_file, "azimuth_line_spacing",
+                       "a streamed coherent SAR of a track along a grid axis needs one azimuth "
+                       "line per cell row or column (azimuth line spacing = the cell size); "
+                       "other spacings need the scene in memory (run without --stream)");
+    }
     if (oblique_ && coherent) {
       throw InputError(r.source_file, "sar.coherent",
                        "a streamed coherent SAR needs a track along a grid axis (heading 0, 90, "
@@ -423,9 +427,17 @@ class StreamRun {
     cross_cells_ = oblique_ ? static_cast<int>(std::max<std::int64_t>(
                                   1, std::int64_t(grid().rows) * grid().cols / lines()))
                             : (along_y_axis(sim().track) ? grid().cols : grid().rows);
-    const std::int64_t per_line = (oblique_ ? std::int64_t(g.samples) * 30
-                                            : std::int64_t(cross_cells_) * (coherent ? 26 : 18)) +
-                                  std::int64_t(std::max(bins(), 1)) * (coherent ? 112 : 72);
+    // Along an axis a line reads spacing / cell rows or columns (at least
+    // one) and, spilled, keeps 5 bytes a sample.
+    const double cells_per_line =
+        oblique_ ? 1.0
+                 : std::max(1.0, g.line_spacing_m /
+                                     (along_y_axis(sim().track) ? grid().dy_m : grid().dx_m));
+    const std::int64_t per_line =
+        (oblique_ ? std::int64_t(g.samples) * 30
+                  : std::int64_t(std::ceil(cross_cells_ * cells_per_line)) * (coherent ? 26 : 18) +
+                        (spill_maps_ ? std::int64_t(g.samples) * 5 : 0)) +
+        std::int64_t(std::max(bins(), 1)) * (coherent ? 112 : 72);
     const int n = lines();
     const int block_lines =
         options_.block_lines > 0
@@ -494,8 +506,9 @@ class StreamRun {
     k.mean = open_writer<float>("mean_power_slant.tif", bins(), lines());
     k.speckled = open_writer<float>("speckled_power_slant.tif", bins(), lines());
     k.mask = open_writer<std::uint8_t>("mask_slant.tif", bins(), lines());
-    if (oblique_) {
-      // Off the axes, the blocks' per-sample map values (pass 1m's input).
+    if (spill_maps_) {
+      // Off the axes (or lines not one per cell), the blocks' per-sample
+      // map values (pass 1m's input).
       k.scene_mask = open_spill<std::uint8_t>(kSpillMask);
       k.incidence = open_spill<float>(kSpillIncidence);
     } else {
@@ -585,7 +598,7 @@ class StreamRun {
           if (spare_.size() < 2) spare_.push_back(std::move(k));
           consume_cpu += process_cpu_seconds() - t0;
         });
-    if (oblique_) oblique_maps_pass(sinks);
+    if (spill_maps_) oblique_maps_pass(sinks);
     // The median elevation's second pass: every rank refined its blocks.
     if (group_.size() > 1) {
       std::vector<std::uint64_t> low = ss_.elevation.counters();
@@ -625,6 +638,14 @@ class StreamRun {
     // The coherent SAR reads its halo of lines too.
     const auto [r0, r1] = coherent_ ? coherent_->lines_read(k.l0, k.l1) : std::pair{k.l0, k.l1};
     engine.window_for_lines(r0, r1, row0, rows, col0, cols);
+    const std::size_t cells = sz(rows) * sz(cols);
+    if (cells > z_.size()) {  // lines spaced wider than a cell
+      z_.resize(cells);
+      cat_.resize(cells);
+      ok_.resize(cells);
+      window_incidence_.resize(cells);
+      window_mask_.resize(cells);
+    }
     in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
     const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
     const SceneMapsWindow maps{
@@ -641,9 +662,19 @@ class StreamRun {
     std::optional<detail::LinePointTargets> on_lines;
     if (targets_) on_lines = targets_->candidates_on_lines(k.l0, k.l1);
     const detail::LineKeep keep{nullptr, nullptr, on_lines ? &*on_lines : nullptr};
-    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts, on_lines ? &keep : nullptr);
+    if (spill_maps_) {
+      // Lines not one per cell: each sample's map values, spilled for pass
+      // 1m (which also refines the median elevation over the cells).
+      k.scene_mask.resize(sz(k.l1 - k.l0) * sz(sim().geometry.samples));
+      k.incidence.resize(k.scene_mask.size());
+      const SampleMapRows values{k.l0, k.scene_mask.data(), k.incidence.data()};
+      engine.run(k.l0, k.l1, win, k.prof, SceneMapsWindow{}, k.counts, on_lines ? &keep : nullptr,
+                 &values);
+    } else {
+      engine.run(k.l0, k.l1, win, k.prof, maps, k.counts, on_lines ? &keep : nullptr);
+      keep_block_maps(engine, win, maps, k);
+    }
     k.targets = on_lines ? targets_->block_result(*on_lines) : detail::BlockTargets{};
-    keep_block_maps(engine, win, maps, k);
     return k;
   }
 
@@ -1264,7 +1295,8 @@ class StreamRun {
   std::chrono::steady_clock::time_point mark_;
   double cpu_mark_ = 0.0;
   int cross_cells_ = 0;
-  bool oblique_ = false;  // a track off the grid axes (slar_stream_oblique.h)
+  bool oblique_ = false;     // a track off the grid axes (slar_stream_oblique.h)
+  bool spill_maps_ = false;  // scene maps through pass 1m (lines not one per cell)
   static constexpr const char* kSpillMask = ".oblique_mask.tmp.tif";
   static constexpr const char* kSpillIncidence = ".oblique_incidence.tmp.tif";
   int scene_block_rows_ = 0;
