@@ -32,6 +32,7 @@
 #include "ris/image/speckle.h"
 #include "ris/image/thermal_noise.h"
 #include "ris/io/atomic_file.h"
+#include "ris/io/compression_preset.h"
 #include "ris/io/gdal_util.h"
 #include "ris/io/geotiff_block_writer.h"
 #include "ris/scene/scene_stream.h"
@@ -336,7 +337,9 @@ class StreamRun {
     const GreytoneMap map = make_greytone_map_for_median(picture_radar(), median_all);
     set_ground_grid();
     stage("geocoded products (pass 2b)");
-    geocoded_pass(map, slant_dir);
+    // Passes 2b and 2 only for the products selected (--products).
+    const ProductSelection& want = info_.products;
+    if (want.wants("geocoded_power") || want.wants("geocoded_grey")) geocoded_pass(map, slant_dir);
     stage_done();
     if (root) {
       summary_.cpu_parts.emplace_back(
@@ -347,13 +350,14 @@ class StreamRun {
                                       geo_.consume_cpu);
     }
     stage("greytones, ground range, PNGs (pass 2)");
-    pictures_pass(map, slant_dir);
+    if (want.wants("slant_range") || want.wants("ground_range")) pictures_pass(map, slant_dir);
     stage_done();
     if (!root) {
       summary_.sim.warnings.clear();  // rank 0 reports them
       return std::move(summary_);
     }
     write_metadata(map);
+    remove_unselected_products(dir_->path(""), info_.products);
     bar_->finish();
     dir_->commit();
     return std::move(summary_);
@@ -1029,11 +1033,13 @@ class StreamRun {
       return file.ends_with(".png") ? dir_->path("." + file + ".tmp.tif") : dir_->path(file);
     };
     const auto open_picture = [&](const std::string& file, int cols) {
-      const SlarRasterSpec spec =
-          file.ends_with(".png") ? SlarRasterSpec{} : slar_raster_spec(file, sim().image);
+      const bool png = file.ends_with(".png");
+      const SlarRasterSpec spec = png ? SlarRasterSpec{} : slar_raster_spec(file, sim().image);
+      // A GeoTIFF picture with the run's compression (write_slar_products).
       return std::make_unique<GeoTiffBlockWriter<std::uint8_t>>(
           picture_path(file), cols, lines(), std::vector<std::string>{spec.band}, nullptr,
-          spec.nodata, spec.metadata);
+          spec.nodata, spec.metadata,
+          png ? GeoTiffCompression{} : product_tiff_settings(info_, false));
     };
     {
       ByteWriter slant_grey_out = open_picture(slant_file, bins());
@@ -1044,7 +1050,8 @@ class StreamRun {
     }
     for (const std::string& file : {slant_file, ground_file}) {
       if (!file.ends_with(".png")) continue;
-      write_png_gray_from_raster(dir_->path(file), picture_path(file));
+      write_png_gray_from_raster(dir_->path(file), picture_path(file),
+                                 png_compression_level(info_.compression));
       std::filesystem::remove(picture_path(file));
     }
   }
