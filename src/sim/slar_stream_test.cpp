@@ -178,7 +178,7 @@ TEST(SlarStream, ObliqueStreamedEqualsInMemoryByteForByte) {
 
 // The free-disk check of a streamed track off the grid axes counts the
 // temporaries pass 1 spills for pass 1m (lines x samples x 5 bytes; 0 along
-// an axis): a disk ceiling (RIS_MAX_DISK_MB) above the products and the
+// an axis at one line per cell): a disk ceiling (RIS_MAX_DISK_MB) above the products and the
 // temporaries passes, one above the products alone but below both is
 // refused, naming them and writing nothing.
 TEST(SlarStream, DiskCheckCountsAnObliqueTracksTemporaries) {
@@ -186,6 +186,13 @@ TEST(SlarStream, DiskCheckCountsAnObliqueTracksTemporaries) {
   const Scene grid = read_scene(f.path);
   const RadarParams along = test_radar(f.scene, 0.0, true);
   EXPECT_EQ(streamed_temporary_bytes(grid, along), 0);
+  // Along an axis at another line spacing the samples' values are spilled.
+  RadarParams spaced = along;
+  spaced.azimuth_line_spacing_m = 0.5 * grid.dy_m;
+  const SlarGeometry spaced_layout = slar_geometry_layout(
+      grid, resolve_track(spaced.track, grid, spaced.source_file), spaced.azimuth_line_spacing_m);
+  EXPECT_EQ(streamed_temporary_bytes(grid, spaced),
+            std::int64_t(spaced_layout.lines) * spaced_layout.samples * 5);
   const RadarParams oblique = test_radar(f.scene, 30.0, true);
   const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
   const SlarSimulation sim = simulate_slar(grid, oblique, src);
