@@ -266,10 +266,11 @@ TEST(SlarStream, StreamedSarEqualsInMemoryByteForByte) {
 // A track along a grid axis whose lines are not one per cell row or column
 // (spacing half and two and a half cells) streams too, its scene maps
 // through pass 1m from each sample's spilled values, with the in-memory
-// run's bytes (maps from the kept geometry): SLAR and incoherent SAR,
-// headings 0 and 90 deg, blocks of 7, 16 and all lines, 1 and 2 threads.
+// run's bytes (maps from the kept geometry, written top down): SLAR and
+// incoherent SAR, headings 0 and 90 deg, blocks of 7, 16 and all lines, 1
+// and 2 threads, on a scene of several 256-cell tiles each way.
 TEST(SlarStream, SpacedGridAxisStreamedEqualsInMemoryByteForByte) {
-  const SceneFile f;
+  const SceneFile f(oblique_test_scene());
   const Scene read = read_scene(f.path);
   const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
   const int saved = omp_get_max_threads();
