@@ -135,6 +135,20 @@ TEST(MpiCli, ObliqueSlarGivesSingleProcessBytes) {
       "SLAR heading 30", "", "300x600");
 }
 
+// A track along the grid at 2.5 cells a line (heading 90 deg, 25 m lines
+// on 10 m cells: 8 blocks of 16 lines, each window 40 columns wide): each
+// sample's map values spilled, the scene maps from pass 1m, over the ranks.
+TEST(MpiCli, SpacedGridAxisSlarGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  const std::string radar =
+      radar_with(dir, "r0.toml", "seed-fig4-5.toml", "heading = \"0 deg\"", "heading = \"90 deg\"");
+  std::string text = test::read_file(radar);
+  text.insert(0, "azimuth_line_spacing = \"25 m\"\n");
+  test::write_file(dir / "r.toml", text);
+  expect_ranks_give_single_process_bytes((dir / "r.toml").string(), "SLAR heading 90, 25 m lines");
+}
+
 // Point targets over the 300 x 200-cell scene (3 x 2 km): in the open, near
 // its first line and its far corner, one high above the terrain.
 std::string write_targets(const test::TempDir& dir) {

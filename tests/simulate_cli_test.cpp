@@ -226,7 +226,8 @@ TEST(SimulateCli, ProductsAndCompressOptions) {
   for (const auto& [extra, text] :
        {std::pair<std::string, std::string>{"--products slant_range,bscope", "\"bscope\""},
         std::pair<std::string, std::string>{"--compress tiny", "\"fast\", \"small\" or \"none\""},
-        std::pair<std::string, std::string>{"--stream --compress small", "streamed run"}}) {
+        std::pair<std::string, std::string>{"--stream --products slant_range,bscope",
+                                            "\"bscope\""}}) {
     const auto bad = run_ris(in.args(work / "bad", extra));
     EXPECT_EQ(bad.exit_code, 1) << extra << bad.output;
     EXPECT_NE(bad.output.find(text), std::string::npos) << extra << bad.output;

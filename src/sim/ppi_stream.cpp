@@ -197,13 +197,17 @@ class PpiStreamRun {
     stage_done();
     if (!root) return std::move(summary_);
     const GreytoneMap map = make_greytone_map_for_median(sim().radar, median_mean_power());
+    // Passes 2 and 2b only for the products selected (--products).
+    const ProductSelection& want = info_.products;
     stage("B-scope greytones (pass 2)");
-    bscope_picture(map);
+    if (want.wants("bscope")) bscope_picture(map);
     stage_done();
     stage("scope (pass 2b)");
-    scope_pass(map);
+    if (want.wants("ppi_scope") || want.wants("ppi_scope_power") || want.wants("ppi_scope_mask"))
+      scope_pass(map);
     stage_done();
     write_metadata(map);
+    remove_unselected_products(dir_->path(""), info_.products);
     bar_->finish();
     dir_->commit();
     return std::move(summary_);

@@ -156,14 +156,14 @@ void check_out_dir(const RunRequest& r, const RadarParams& radar, std::int64_t r
 }
 
 void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
-  if (!r.products.stems.empty() || r.compression != CompressionPreset::fast) {
-    throw InputError(r.scene_path, r.products.stems.empty() ? "--compress" : "--products",
-                     "a streamed run writes every product with the default compression; drop "
-                     "the option or run the scene in memory");
-  }
   res.kind = RunKind::streamed;
   res.radar = load_radar_of(r);
   check_scene_earth(r, res.radar);
+  // As the in-memory run (the streams honour the selection and res.info's
+  // compression).
+  check_product_selection(
+      r.products, res.radar.mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems(),
+      "--products");
   const LoadedSigma0 sigma0 = load_sigma0(r);
   res.info = run_info(r, sigma0.path);
   require_regular_input(r.scene_path, "--scene");

@@ -20,6 +20,18 @@ void check_product_selection(const ProductSelection& selection,
   }
 }
 
+void remove_unselected_products(const std::filesystem::path& folder,
+                                const ProductSelection& selection) {
+  if (selection.stems.empty()) return;
+  std::vector<std::filesystem::path> drop;
+  for (const auto& e : std::filesystem::directory_iterator(folder)) {
+    const std::string name = e.path().filename().string();
+    if (name == "metadata.json" || name.starts_with(".") || !e.is_regular_file()) continue;
+    if (!selection.wants(e.path().stem().string())) drop.push_back(e.path());
+  }
+  for (const std::filesystem::path& p : drop) std::filesystem::remove(p);
+}
+
 GeoTiffCompression product_tiff_settings(const SlarRunInfo& info, bool floating_point) {
   GeoTiffCompression c = geotiff_compression(info.compression, floating_point);
   c.overviews = info.overviews;

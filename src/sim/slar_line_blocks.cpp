@@ -281,11 +281,26 @@ struct DirectRun {
   bool cross_is_x;
   bool u_grows_with_index;
   double near_m, far_m;
+  const SampleMapRows* sample_maps;
 
   int cell(int line) const { return line_cell(scene, g, cross_is_x, line); }
   // Whether the sources write the scene maps (a run whose lines are not
   // one per row or column makes them from the kept geometry instead).
   bool writes_maps() const { return maps.mask != nullptr; }
+  // Every sample's map value of the line (SampleMapRows), from the scratch
+  // as keep_line_geometry keeps it for scene_geometry_maps.
+  void store_sample_maps(int line, const detail::LineScratch& s) const {
+    if (sample_maps == nullptr) return;
+    const std::size_t row =
+        static_cast<std::size_t>(line - sample_maps->line0) * static_cast<std::size_t>(g.samples);
+    for (int j = 0; j < g.samples; ++j) {
+      const std::size_t jj = static_cast<std::size_t>(j);
+      const SampleMapValue v =
+          scene_map_sample(s.flags[jj], s.range[jj], s.local_incidence[jj], near_m, far_m);
+      sample_maps->mask[row + jj] = v.mask;
+      sample_maps->local_incidence_deg[row + jj] = v.local_incidence_deg;
+    }
+  }
   LineSpan whole() const { return {0, g.samples, &g}; }
   // Sample j of the line over row or column lc: its cell.
   void cell_of(int lc, int j, int& r, int& c) const {
@@ -353,7 +368,8 @@ struct CellSource {
     return run.whole();
   }
   // The scene-grid maps (scene_geometry_maps: each cell is its own sample).
-  void store_maps(int, const LineSpan&, const detail::LineScratch& s) const {
+  void store_maps(int line, const LineSpan&, const detail::LineScratch& s) const {
+    run.store_sample_maps(line, s);
     if (lc < 0 || !run.writes_maps()) return;
     for (int j = 0; j < run.g.samples; ++j) {
       const std::size_t jj = static_cast<std::size_t>(j);
@@ -384,7 +400,8 @@ struct RowSource {
     }
     return run.whole();
   }
-  void store_maps(int, const LineSpan&, const detail::LineScratch& s) const {
+  void store_maps(int line, const LineSpan&, const detail::LineScratch& s) const {
+    run.store_sample_maps(line, s);
     if (lc < 0 || !run.writes_maps()) return;
     kernels::map_row(run.g.samples, !run.u_grows_with_index, run.near_m, run.far_m, s.flags.data(),
                      s.range.data(), s.local_incidence.data(), run.in.valid + run.in.index(lc, 0),
@@ -410,7 +427,8 @@ struct TileSource {
     std::swap(s.dz_dx, s.dz_dy);
     return run.whole();
   }
-  void store_maps(int, const LineSpan&, const detail::LineScratch& s) const {
+  void store_maps(int line, const LineSpan&, const detail::LineScratch& s) const {
+    run.store_sample_maps(line, s);
     const std::size_t at = tile.offset(lc);
     kernels::map_row(run.g.samples, run.u_grows_with_index, run.near_m, run.far_m, s.flags.data(),
                      s.range.data(), s.local_incidence.data(), tile.valid.data() + at,
@@ -449,7 +467,7 @@ struct DirectThreadSource {
 
 void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLineProfiles& prof,
                          const SceneMapsWindow& maps, SlarLineCounts& counts,
-                         const detail::LineKeep* keep) const {
+                         const detail::LineKeep* keep, const SampleMapRows* sample_maps) const {
   const SlarGeometry& g = g_;
   const Track& t = g.track;
   const int samples = g.samples;
@@ -464,7 +482,8 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
                       cross_is_x_,
                       u_grows_with_index_,
                       params_.range.near_m,
-                      params_.range.far_m()};
+                      params_.range.far_m(),
+                      sample_maps};
   const bool no_maps = maps.mask == nullptr;
   const bool rows = cross_is_x_ && in.col0 == 0 && in.cols == samples &&
                     (no_maps || (maps.col0 == 0 && maps.cols == samples));

@@ -17,6 +17,7 @@
 #include "ris/sensor/radar_json.h"
 #include "ris/sim/run_metadata.h"
 #include "ris/sim/sar_coherent.h"
+#include "ris/sim/slar_line_blocks.h"
 #include "ris/util/concurrent_tasks.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
@@ -135,6 +136,10 @@ BlockOrder scene_line_order(const Track& t) {
   if (std::abs(std::abs(t.along_x) - 1.0) < 1e-9)
     return t.along_x > 0.0 ? BlockOrder::left_right : BlockOrder::right_left;
   return BlockOrder::top_down;
+}
+
+BlockOrder scene_maps_order(const Scene& grid, const SlarGeometry& layout) {
+  return fused_slar_applies(grid, layout) ? scene_line_order(layout.track) : BlockOrder::top_down;
 }
 
 json slar_image_json(const SlarSimulation& sim) {
@@ -299,7 +304,7 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
           scene.cols, scene.rows);
   });
   // Scene-grid maps in the order a streamed run computes them (line by line).
-  const BlockOrder line_order = scene_line_order(sim.track);
+  const BlockOrder line_order = scene_maps_order(scene, sim.geometry);
   task("local_incidence_deg", [&] {
     write("local_incidence_deg.tif", sim.scene_maps.local_incidence_deg.data(), scene.cols,
           scene.rows, line_order);

@@ -32,6 +32,7 @@
 #include "ris/image/speckle.h"
 #include "ris/image/thermal_noise.h"
 #include "ris/io/atomic_file.h"
+#include "ris/io/compression_preset.h"
 #include "ris/io/gdal_util.h"
 #include "ris/io/geotiff_block_writer.h"
 #include "ris/scene/scene_stream.h"
@@ -267,7 +268,7 @@ std::int64_t streamed_temporary_bytes(const Scene& grid, const RadarParams& rada
   if (!(radar.mode == RadarMode::slar || radar.mode == RadarMode::sar)) return 0;
   const Track track = resolve_track(radar.track, grid, radar.source_file);
   const SlarGeometry g = slar_geometry_layout(grid, track, radar.azimuth_line_spacing_m);
-  if (g.direct_sampling) return 0;
+  if (fused_slar_applies(grid, g)) return 0;
   return checked_mul(checked_mul(g.lines, g.samples, radar.source_file, "azimuth_line_spacing"),
                      kSpillBytesPerSample, radar.source_file, "azimuth_line_spacing");
 }
@@ -335,7 +336,9 @@ class StreamRun {
     const GreytoneMap map = make_greytone_map_for_median(picture_radar(), median_all);
     set_ground_grid();
     stage("geocoded products (pass 2b)");
-    geocoded_pass(map, slant_dir);
+    // Passes 2b and 2 only for the products selected (--products).
+    const ProductSelection& want = info_.products;
+    if (want.wants("geocoded_power") || want.wants("geocoded_grey")) geocoded_pass(map, slant_dir);
     stage_done();
     if (root) {
       summary_.cpu_parts.emplace_back(
@@ -346,13 +349,14 @@ class StreamRun {
                                       geo_.consume_cpu);
     }
     stage("greytones, ground range, PNGs (pass 2)");
-    pictures_pass(map, slant_dir);
+    if (want.wants("slant_range") || want.wants("ground_range")) pictures_pass(map, slant_dir);
     stage_done();
     if (!root) {
       summary_.sim.warnings.clear();  // rank 0 reports them
       return std::move(summary_);
     }
     write_metadata(map);
+    remove_unselected_products(dir_->path(""), info_.products);
     bar_->finish();
     dir_->commit();
     return std::move(summary_);
@@ -401,12 +405,6 @@ class StreamRun {
     sim().track = resolve_track(r.track, grid(), r.source_file);
     sim().geometry = slar_geometry_layout(grid(), sim().track, r.azimuth_line_spacing_m);
     const SlarGeometry& g = sim().geometry;
-    if (g.direct_sampling && !fused_slar_applies(grid(), g)) {
-      throw InputError(r.source_file, "azimuth_line_spacing",
-                       "a streamed run of a track along a grid axis needs one azimuth line per "
-                       "cell row or column (azimuth line spacing = the cell size); other "
-                       "spacings need the scene in memory (run without --stream)");
-    }
     // A track off the axes: its lines through slar_stream_oblique.h, ~30
     // bytes a sample (the sampled terrain, map values and their copies).
     oblique_ = !g.direct_sampling;
@@ -414,12 +412,24 @@ class StreamRun {
     // bytes a sample), and per bin its range-compressed lines, z and
     // intensity (twice: sent).
     const bool coherent = r.mode == RadarMode::sar && r.sar.coherent;
+    // Lines not one per cell row or column (off the axes, or along one at
+    // a spacing other than the cell size): each sample's map values are
+    // spilled and pass 1m takes each cell's (as scene_geometry_maps).
+    spill_maps_ = !fused_slar_applies(grid(), g);
     cross_cells_ = oblique_ ? static_cast<int>(std::max<std::int64_t>(
                                   1, std::int64_t(grid().rows) * grid().cols / lines()))
                             : (along_y_axis(sim().track) ? grid().cols : grid().rows);
-    const std::int64_t per_line = (oblique_ ? std::int64_t(g.samples) * (coherent ? 38 : 30)
-                                            : std::int64_t(cross_cells_) * (coherent ? 26 : 18)) +
-                                  std::int64_t(std::max(bins(), 1)) * (coherent ? 112 : 72);
+    // Along an axis a line reads spacing / cell rows or columns (at least
+    // one) and, spilled, keeps 5 bytes a sample.
+    const double cells_per_line =
+        oblique_ ? 1.0
+                 : std::max(1.0, g.line_spacing_m /
+                                     (along_y_axis(sim().track) ? grid().dy_m : grid().dx_m));
+    const std::int64_t per_line =
+        (oblique_ ? std::int64_t(g.samples) * (coherent ? 38 : 30)
+                  : std::int64_t(std::ceil(cross_cells_ * cells_per_line)) * (coherent ? 26 : 18) +
+                        (spill_maps_ ? std::int64_t(g.samples) * 5 : 0)) +
+        std::int64_t(std::max(bins(), 1)) * (coherent ? 112 : 72);
     const int n = lines();
     const int block_lines =
         options_.block_lines > 0
@@ -488,8 +498,9 @@ class StreamRun {
     k.mean = open_writer<float>("mean_power_slant.tif", bins(), lines());
     k.speckled = open_writer<float>("speckled_power_slant.tif", bins(), lines());
     k.mask = open_writer<std::uint8_t>("mask_slant.tif", bins(), lines());
-    if (oblique_) {
-      // Off the axes, the blocks' per-sample map values (pass 1m's input).
+    if (spill_maps_) {
+      // Off the axes (or lines not one per cell), the blocks' per-sample
+      // map values (pass 1m's input).
       k.scene_mask = open_spill<std::uint8_t>(kSpillMask);
       k.incidence = open_spill<float>(kSpillIncidence);
     } else {
@@ -579,7 +590,7 @@ class StreamRun {
           if (spare_.size() < 2) spare_.push_back(std::move(k));
           consume_cpu += process_cpu_seconds() - t0;
         });
-    if (oblique_) oblique_maps_pass(sinks);
+    if (spill_maps_) oblique_maps_pass(sinks);
     // The median elevation's second pass: every rank refined its blocks.
     if (group_.size() > 1) {
       std::vector<std::uint64_t> low = ss_.elevation.counters();
@@ -619,18 +630,39 @@ class StreamRun {
     // The coherent SAR reads its halo of lines too.
     const auto [r0, r1] = coherent_ ? coherent_->lines_read(k.l0, k.l1) : std::pair{k.l0, k.l1};
     engine.window_for_lines(r0, r1, row0, rows, col0, cols);
+    const std::size_t cells = sz(rows) * sz(cols);
+    if (cells > z_.size()) {  // lines spaced wider than a cell
+      z_.resize(cells);
+      cat_.resize(cells);
+      ok_.resize(cells);
+      window_incidence_.resize(cells);
+      window_mask_.resize(cells);
+    }
     in_.read(row0, rows, col0, cols, z_.data(), cat_.data(), ok_.data());
     const SceneWindow win{row0, col0, rows, cols, z_.data(), cat_.data(), ok_.data()};
     const SceneMapsWindow maps{
         row0, col0, rows, cols, window_mask_.data(), window_incidence_.data()};
+    // Lines not one per cell: each sample's map values, spilled for pass
+    // 1m (which also refines the median elevation over the cells); only
+    // the block's own lines (a coherent halo's belong to its neighbours).
+    SampleMapRows values{k.l0, nullptr, nullptr};
+    if (spill_maps_) {
+      k.scene_mask.resize(sz(k.l1 - k.l0) * sz(sim().geometry.samples));
+      k.incidence.resize(k.scene_mask.size());
+      values = SampleMapRows{k.l0, k.scene_mask.data(), k.incidence.data()};
+    }
     if (coherent_) {
       const auto run = [&](int a, int e, bool own, SlarLineProfiles& prof, SlarLineCounts& counts,
                            const detail::LineKeep& keep) {
-        engine.run(a, e, win, prof, own ? maps : SceneMapsWindow{}, counts, &keep);
+        if (spill_maps_) {
+          engine.run(a, e, win, prof, SceneMapsWindow{}, counts, &keep, own ? &values : nullptr);
+        } else {
+          engine.run(a, e, win, prof, own ? maps : SceneMapsWindow{}, counts, &keep);
+        }
       };
       coherent_->run_block(run, k.l0, k.l1, targets_ ? &*targets_ : nullptr, k.prof, k.counts,
                            k.targets, k.coherent);
-      keep_block_maps(engine, win, maps, k);
+      if (!spill_maps_) keep_block_maps(engine, win, maps, k);
       return k;
     }
     k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
@@ -639,9 +671,14 @@ class StreamRun {
     std::optional<detail::LinePointTargets> on_lines;
     if (targets_) on_lines = targets_->candidates_on_lines(k.l0, k.l1);
     const detail::LineKeep keep{nullptr, nullptr, on_lines ? &*on_lines : nullptr};
-    engine.run(k.l0, k.l1, win, k.prof, maps, k.counts, on_lines ? &keep : nullptr);
+    if (spill_maps_) {
+      engine.run(k.l0, k.l1, win, k.prof, SceneMapsWindow{}, k.counts, on_lines ? &keep : nullptr,
+                 &values);
+    } else {
+      engine.run(k.l0, k.l1, win, k.prof, maps, k.counts, on_lines ? &keep : nullptr);
+      keep_block_maps(engine, win, maps, k);
+    }
     k.targets = on_lines ? targets_->block_result(*on_lines) : detail::BlockTargets{};
-    keep_block_maps(engine, win, maps, k);
     return k;
   }
 
@@ -1009,11 +1046,13 @@ class StreamRun {
       return file.ends_with(".png") ? dir_->path("." + file + ".tmp.tif") : dir_->path(file);
     };
     const auto open_picture = [&](const std::string& file, int cols) {
-      const SlarRasterSpec spec =
-          file.ends_with(".png") ? SlarRasterSpec{} : slar_raster_spec(file, sim().image);
+      const bool png = file.ends_with(".png");
+      const SlarRasterSpec spec = png ? SlarRasterSpec{} : slar_raster_spec(file, sim().image);
+      // A GeoTIFF picture with the run's compression (write_slar_products).
       return std::make_unique<GeoTiffBlockWriter<std::uint8_t>>(
           picture_path(file), cols, lines(), std::vector<std::string>{spec.band}, nullptr,
-          spec.nodata, spec.metadata);
+          spec.nodata, spec.metadata,
+          png ? GeoTiffCompression{} : product_tiff_settings(info_, false));
     };
     {
       ByteWriter slant_grey_out = open_picture(slant_file, bins());
@@ -1024,7 +1063,8 @@ class StreamRun {
     }
     for (const std::string& file : {slant_file, ground_file}) {
       if (!file.ends_with(".png")) continue;
-      write_png_gray_from_raster(dir_->path(file), picture_path(file));
+      write_png_gray_from_raster(dir_->path(file), picture_path(file),
+                                 png_compression_level(info_.compression));
       std::filesystem::remove(picture_path(file));
     }
   }
@@ -1275,7 +1315,8 @@ class StreamRun {
   std::chrono::steady_clock::time_point mark_;
   double cpu_mark_ = 0.0;
   int cross_cells_ = 0;
-  bool oblique_ = false;  // a track off the grid axes (slar_stream_oblique.h)
+  bool oblique_ = false;     // a track off the grid axes (slar_stream_oblique.h)
+  bool spill_maps_ = false;  // scene maps through pass 1m (lines not one per cell)
   static constexpr const char* kSpillMask = ".oblique_mask.tmp.tif";
   static constexpr const char* kSpillIncidence = ".oblique_incidence.tmp.tif";
   int scene_block_rows_ = 0;

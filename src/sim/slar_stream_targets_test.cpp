@@ -177,7 +177,8 @@ TEST(SlarStreamTargets, StreamedEqualsInMemoryByteForByte) {
 // heading, in memory, then streamed in blocks of 7, 16 and all lines, with
 // 1 and 2 threads: the same bytes, hidden targets and measurements. Returns
 // the hidden targets over the headings.
-std::size_t expect_coherent_streamed_equal(const std::vector<double>& headings, bool along_axis) {
+std::size_t expect_coherent_streamed_equal(const std::vector<double>& headings, bool along_axis,
+                                           double cells_a_line = 1.0) {
   const SceneFile f;
   const Scene read = read_scene(f.path);
   const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
@@ -188,10 +189,12 @@ std::size_t expect_coherent_streamed_equal(const std::vector<double>& headings, 
     RadarParams radar = targets_radar(f.scene, heading, true);
     radar.sar.coherent = true;
     radar.sar.range_looks = 2;
+    if (cells_a_line != 1.0) radar.azimuth_line_spacing_m = cells_a_line * f.scene.dy_m;
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
       const SlarRunInfo info{f.path.string(), "r.toml", "test", 9, threads};
-      const std::string tag = fmt::format("coherent heading {} threads {}", heading, threads);
+      const std::string tag = fmt::format("coherent heading {} cells a line {} threads {}", heading,
+                                          cells_a_line, threads);
       const fs::path mem = f.dir / "mem";
       SlarOptions mo;
       mo.targets = targets;
@@ -328,6 +331,49 @@ TEST(SlarStreamTargets, ObliqueStreamedEqualsInMemoryByteForByte) {
   EXPECT_GE(hidden, 1u);
 }
 
+// Along a grid axis at a line spacing other than the cell size (half and
+// two and a half cells), streamed == in memory byte for byte with point
+// targets: SLAR and the incoherent SAR, headings 0 and 90 deg; blocks of 7,
+// 16 and all lines; 1 and 2 threads; the returns and measurements too.
+TEST(SlarStreamTargets, SpacedGridAxisStreamedEqualsInMemoryByteForByte) {
+  const SceneFile f;
+  const Scene read = read_scene(f.path);
+  const test::CosineSigma0Source src({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
+  const std::vector<PointTarget> targets = scene_targets();
+  const int saved = omp_get_max_threads();
+  struct Case {
+    double heading;
+    bool sar;
+    double cells;
+  };
+  for (const Case c : {Case{0.0, false, 0.5}, Case{90.0, true, 2.5}, Case{90.0, false, 0.5},
+                       Case{0.0, true, 2.5}}) {
+    RadarParams radar = targets_radar(f.scene, c.heading, c.sar);
+    radar.azimuth_line_spacing_m = c.cells * f.scene.dy_m;
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      const SlarRunInfo info{f.path.string(), "r.toml", "test", 5, threads};
+      const std::string tag = fmt::format("heading {} sar {} spacing {} cells threads {}",
+                                          c.heading, c.sar, c.cells, threads);
+      const fs::path mem = f.dir / "mem";
+      const SlarSimulation sim = write_in_memory(read, radar, src, info, targets, mem);
+      ASSERT_TRUE(sim.geometry.direct_sampling) << tag;
+      EXPECT_GE(sim.point_returns.size(), 3u) << tag;
+      const std::size_t measured = measure_point_targets(sim, render_slar(sim, 5), false).size();
+      expect_streamed_blocks_equal(
+          f, radar, src, info, targets, mem, tag,
+          [&](const SlarStreamSummary& sum, const std::string& what) {
+            EXPECT_EQ(sum.sim.hidden_targets, sim.hidden_targets) << what;
+            ASSERT_EQ(sum.sim.point_returns.size(), sim.point_returns.size()) << what;
+            EXPECT_EQ(sum.sim.image.point_power_w, sim.image.point_power_w) << what;
+            EXPECT_EQ(sum.irfs.size(), measured) << what;
+          });
+      fs::remove_all(mem);
+    }
+  }
+  omp_set_num_threads(saved);
+}
+
 // Off the grid axes too, the coherent SAR streams: each oblique block runs
 // its halo of lines (slar_stream_oblique.h through sar_coherent_stream.h),
 // their counts and map values dropped, so the same bytes as in memory at
@@ -335,6 +381,14 @@ TEST(SlarStreamTargets, ObliqueStreamedEqualsInMemoryByteForByte) {
 // 7, 16 and all lines, 1 and 2 threads.
 TEST(SlarStreamTargets, ObliqueCoherentSarStreamedEqualsInMemoryByteForByte) {
   EXPECT_GE(expect_coherent_streamed_equal({30.0, 45.0, 200.0}, false), 1u);
+}
+
+// Along a grid axis at 2.5 and 0.5 cells a line, the coherent SAR streams
+// too: its own lines' per-sample map values are spilled for pass 1m, its
+// halo's dropped; the in-memory bytes with point targets.
+TEST(SlarStreamTargets, SpacedGridAxisCoherentSarStreamedEqualsInMemoryByteForByte) {
+  expect_coherent_streamed_equal({0.0}, true, 2.5);
+  expect_coherent_streamed_equal({90.0}, true, 0.5);
 }
 
 }  // namespace

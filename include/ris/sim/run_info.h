@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,13 @@ struct ProductSelection {
 // naming `key` and listing the allowed stems.
 void check_product_selection(const ProductSelection& selection,
                              const std::vector<std::string_view>& allowed, const std::string& key);
+
+// Removes from `folder` the products `selection` does not want (files whose
+// stem it does not list; metadata.json and hidden files kept): a streamed
+// run writes the products later passes read back, then drops those not
+// selected before its staged folder commits.
+void remove_unselected_products(const std::filesystem::path& folder,
+                                const ProductSelection& selection);
 
 // Where the inputs came from, for metadata.json, and how the products are
 // written.

@@ -73,9 +73,12 @@ class SlarLineEngine {
   // (none when maps.mask is null); adds to counts. `in` must hold
   // window_for_lines(line0, line1). keep (optional): what the run keeps
   // beyond the profiles (form_slar_image_fused's SlarEngineKeep).
+  // sample_maps (optional): every sample's scene-map value of the lines,
+  // as the kept geometry gives them to scene_geometry_maps.
   void run(int line0, int line1, const SceneWindow& in, SlarLineProfiles& prof,
            const SceneMapsWindow& maps, SlarLineCounts& counts,
-           const detail::LineKeep* keep = nullptr) const;
+           const detail::LineKeep* keep = nullptr,
+           const SampleMapRows* sample_maps = nullptr) const;
 
  private:
   const Scene& scene_;

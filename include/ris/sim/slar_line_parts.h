@@ -42,6 +42,16 @@ struct SceneMapsWindow {
   }
 };
 
+// Each sample's scene-map value (scene_map_sample) of a block of lines,
+// row k for line line0 + k, samples wide: what a streamed run of lines not
+// one per cell row or column spills, its maps then taken per cell as
+// scene_geometry_maps takes them from the kept geometry.
+struct SampleMapRows {
+  int line0 = 0;
+  std::uint8_t* mask = nullptr;
+  float* local_incidence_deg = nullptr;
+};
+
 // Per-sample counts of SlarGeometry, plus the slant-range extent of the
 // samples with data (for the "swath misses the scene" message).
 struct SlarLineCounts {

@@ -78,6 +78,11 @@ SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img);
 // down otherwise.
 BlockOrder scene_line_order(const Track& track);
 
+// The order a run writes its scene-grid maps in: scene_line_order for lines
+// one per cell row or column (fused_slar_applies), top down otherwise (a
+// streamed run makes those maps top down, in pass 1m).
+BlockOrder scene_maps_order(const Scene& grid, const SlarGeometry& layout);
+
 // The product stems of a SLAR or SAR run (ProductSelection; docs/outputs.md).
 const std::vector<std::string_view>& slar_product_stems();
 

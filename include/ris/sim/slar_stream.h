@@ -28,7 +28,8 @@
 //      slar_azimuth_integrator.h); mean power, fading (keyed by seed, bin,
 //      line), masks, shadow map and the scene-grid maps written; the median
 //      elevation's second pass;
-//   1m (a track off the grid axes) the scene-grid maps, scene rows top
+//   1m (a track off the grid axes, or along one with lines not one per
+//      cell row or column) the scene-grid maps, scene rows top
 //      down, from the samples' map values pass 1 spilled to temporary
 //      rasters (pass 1 then samples each block's lines from windows of the
 //      scene along them: src/sim/slar_stream_oblique.h); the median
@@ -49,11 +50,12 @@
 //
 // It runs SLAR and SAR tracks at any heading (along a grid axis with one
 // azimuth line per cell row or column, fused_slar_applies; off the axes
-// with any line spacing, src/sim/slar_stream_oblique.h), with point targets
+// with any line spacing, src/sim/slar_stream_oblique.h; along an axis at
+// another spacing, the line engine's per-sample map values spilled for the
+// oblique run's pass 1m), with point targets
 // (src/sim/slar_stream_targets.h) and the coherent SAR
-// (src/sim/sar_coherent_stream.h) at any heading. Other line spacings
-// along an axis need the in-memory path and are refused with an InputError
-// that says so (PPI streams through ris/sim/ppi_stream.h).
+// (src/sim/sar_coherent_stream.h) at any heading and line spacing (PPI
+// streams through ris/sim/ppi_stream.h).
 //
 // Example:
 //   ris::SlarStreamOptions o;  o.block_lines = 512;
@@ -134,8 +136,9 @@ std::int64_t in_memory_run_bytes(std::int64_t rows, std::int64_t cols, const std
 
 // The temporary files a streamed SLAR or SAR run writes into its
 // staging folder beside the products and removes before it ends: for a
-// track off the grid axes the samples' scene-map values (azimuth lines x
-// samples x 5 bytes, pass 1m's input); 0 along an axis and for other modes.
+// track off the grid axes, or along one with lines not one per cell row or
+// column, the samples' scene-map values (azimuth lines x samples x 5 bytes,
+// pass 1m's input); 0 along an axis at one line per cell and other modes.
 // grid: the scene's grid (SceneStreamReader::grid). Throws InputError
 // naming the radar file for a track that cannot be placed (resolve_track).
 std::int64_t streamed_temporary_bytes(const Scene& grid, const RadarParams& radar);
