@@ -212,6 +212,21 @@ TEST(MpiCli, ObliqueCoherentSarGivesSingleProcessBytes) {
                                          "--targets " + write_targets(dir), "300x600");
 }
 
+// The coherent SAR along the grid at 25 m lines on 10 m cells, with point
+// targets: each rank's blocks spill their own lines' per-sample map values
+// (the halo's dropped), rank 0 builds the scene maps (pass 1m): the same
+// bytes.
+TEST(MpiCli, SpacedGridAxisCoherentSarGivesSingleProcessBytes) {
+  RIS_REQUIRE_MPI();
+  test::TempDir dir;
+  std::string text = test::read_file(
+      radar_with(dir, "r0.toml", "sar-x-band-stripmap.toml", "coherent = true", "coherent = true"));
+  text.insert(0, "azimuth_line_spacing = \"25 m\"\n");
+  test::write_file(dir / "r.toml", text);
+  expect_ranks_give_single_process_bytes((dir / "r.toml").string(), "coherent SAR, 25 m lines",
+                                         "--targets " + write_targets(dir));
+}
+
 // A streamed PPI run (rays in blocks, ris/sim/ppi_stream.h) on a noise
 // scene of 200 x 600 cells of 30 m (the shipped radars' site, 3 km east and
 // 2.1 km north of its south-west corner; 3 blocks of 256 rows, so pass 0's
