@@ -142,6 +142,28 @@ TEST(SlarStream, StreamedEqualsInMemoryByteForByte) {
   omp_set_num_threads(saved);
 }
 
+// The in-memory run's products of sim, then the streamed run of the same
+// radar in blocks of 7, 16 and all lines on `threads` threads: every file
+// the same bytes.
+void expect_streams_as_in_memory(const SceneFile& f, const Scene& read, const SlarSimulation& sim,
+                                 const RadarParams& radar, const Sigma0Source& src, int threads,
+                                 const std::string& tag) {
+  const SlarRunInfo info{f.path.string(), "r.toml", "test", 5, threads};
+  const fs::path mem = f.dir / ("mem-" + tag);
+  write_slar_products(mem, read, sim, render_slar(sim, info.seed), info);
+  for (int block : {7, 16, sim.image.lines}) {
+    SlarStreamOptions o;
+    o.block_lines = block;
+    o.quiet = true;
+    const fs::path out = f.dir / fmt::format("stream-{}-{}", tag, block);
+    const SlarStreamSummary sum = simulate_slar_streamed(f.path, radar, src, info, out, o);
+    EXPECT_EQ(sum.block_lines, block);
+    expect_same_folders(mem, out, tag + fmt::format(" block {}", block));
+    fs::remove_all(out);
+  }
+  fs::remove_all(mem);
+}
+
 // Tracks at any heading stream (off the axes: slar_stream_oblique.h, its
 // scene maps in pass 1m) with the in-memory run's bytes, every product
 // file; blocks of 7, 16 and all lines, 1 and 2 threads.
@@ -156,21 +178,8 @@ TEST(SlarStream, ObliqueStreamedEqualsInMemoryByteForByte) {
     EXPECT_EQ(sim.geometry.direct_sampling, heading == 0.0 || heading == 90.0);
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
-      const SlarRunInfo info{f.path.string(), "r.toml", "test", 5, threads};
-      const std::string tag = fmt::format("heading {} threads {}", heading, threads);
-      const fs::path mem = f.dir / ("mem-" + tag);
-      write_slar_products(mem, read, sim, render_slar(sim, info.seed), info);
-      for (int block : {7, 16, sim.image.lines}) {
-        SlarStreamOptions o;
-        o.block_lines = block;
-        o.quiet = true;
-        const fs::path out = f.dir / fmt::format("stream-{}-{}", tag, block);
-        const SlarStreamSummary sum = simulate_slar_streamed(f.path, radar, src, info, out, o);
-        EXPECT_EQ(sum.block_lines, block);
-        expect_same_folders(mem, out, tag + fmt::format(" block {}", block));
-        fs::remove_all(out);
-      }
-      fs::remove_all(mem);
+      expect_streams_as_in_memory(f, read, sim, radar, src, threads,
+                                  fmt::format("heading {} threads {}", heading, threads));
     }
   }
   omp_set_num_threads(saved);
@@ -295,22 +304,9 @@ TEST(SlarStream, SpacedGridAxisStreamedEqualsInMemoryByteForByte) {
         ASSERT_FALSE(fused_slar_applies(read, sim.geometry));
         for (int threads : {1, 2}) {
           omp_set_num_threads(threads);
-          const SlarRunInfo info{f.path.string(), "r.toml", "test", 5, threads};
-          const std::string tag = fmt::format("{} heading {} spacing {} cells threads {}",
-                                              sar ? "sar" : "slar", heading, cells, threads);
-          const fs::path mem = f.dir / ("mem-" + tag);
-          write_slar_products(mem, read, sim, render_slar(sim, info.seed), info);
-          for (int block : {7, 16, sim.image.lines}) {
-            SlarStreamOptions o;
-            o.block_lines = block;
-            o.quiet = true;
-            const fs::path out = f.dir / fmt::format("stream-{}-{}", tag, block);
-            const SlarStreamSummary sum = simulate_slar_streamed(f.path, radar, src, info, out, o);
-            EXPECT_EQ(sum.block_lines, block);
-            expect_same_folders(mem, out, tag + fmt::format(" block {}", block));
-            fs::remove_all(out);
-          }
-          fs::remove_all(mem);
+          expect_streams_as_in_memory(f, read, sim, radar, src, threads,
+                                      fmt::format("{} heading {} spacing {} cells threads {}",
+                                                  sar ? "sar" : "slar", heading, cells, threads));
         }
       }
     }
