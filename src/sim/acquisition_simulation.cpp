@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/scene/geo_frame.h"
@@ -13,6 +12,7 @@
 #include "ris/sim/slar_run_setup.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
+#include "sim/acquisition_frame.h"
 #include "sim/acquisition_lines.h"
 
 namespace ris {
@@ -21,8 +21,6 @@ namespace {
 
 // Speed of light (m/s), for the acquisition's frequency.
 constexpr double kLightSpeed_m_s = 299792458.0;
-// Layers and line profiles live in memory: refuse larger windows (as ris topo).
-constexpr std::size_t kMaxPixels = 50'000'000;
 
 // A grid for the set-up's checks (SAR resolution against the DEM's
 // posting): the DEM's cell size in metres at its centre, no arrays.
@@ -82,46 +80,19 @@ AcquisitionSimulation simulate_acquisition(const Acquisition& acq, const Ellipso
   AcquisitionSimulation out;
   out.earth = options.earth;
   out.category = options.category;
-  out.window = options.full_grid ? GridWindow{0, g.lines, 0, g.bins} : dem_window(acq, dem);
-  const GridWindow w = out.window;
-  if (w.lines == 0 || w.bins == 0) {
-    throw InputError(
-        dem.source, "",
-        fmt::format("the DEM does not cover any pixel of {}'s radar grid", acq.source));
-  }
-  if (w.size() > kMaxPixels) {
-    throw InputError(
-        acq.source, options.full_grid ? "--full-grid" : "--dem",
-        fmt::format("the window is {} lines x {} bins ({:.0f} M pixels); at most {} M "
-                    "pixels: choose one burst (--burst), a smaller DEM, or drop "
-                    "--full-grid",
-                    w.lines, w.bins, static_cast<double>(w.size()) / 1e6, kMaxPixels / 1'000'000));
-  }
-  float h_min = std::numeric_limits<float>::infinity(), h_max = -h_min;
-  for (float h : dem.height_m) {
-    if (std::isfinite(h)) {
-      h_min = std::min(h_min, h);
-      h_max = std::max(h_max, h);
-    }
-  }
-  if (!std::isfinite(h_min)) throw InputError(dem.source, "", "the DEM has no height with data");
+  const detail::AcquisitionFrame frame = detail::acquisition_frame(acq, dem, options.full_grid);
+  const GridWindow w = frame.window;
+  detail::check_in_memory_window(w, acq.source, options.full_grid);
+  out.window = w;
+  const float h_min = frame.dem_min_m, h_max = frame.dem_max_m;
+  out.sensor_height_m = frame.sensor_height_m;
+  out.ground_azimuth_spacing_m = frame.ground_azimuth_spacing_m;
 
-  // The radar at the acquisition's wavelength; the grid's geometry.
+  // The radar at the acquisition's wavelength.
   SlarSimulation& sim = out.sim;
   sim.radar = radar_at_band(radar_in, kLightSpeed_m_s / g.wavelength_m, radar_in.polarisation);
   sim.radar.earth = options.earth;
   sim.derived = derive(sim.radar);
-  const double t_mid = g.time_of_line(w.line0 + 0.5 * (w.lines - 1));
-  const OrbitState s_mid = acq.orbit.interpolate(t_mid);
-  const Geodetic sub_mid = e.to_geodetic(s_mid.position_m);
-  out.sensor_height_m = sub_mid.height_m;
-  // The image's line spacing on the ground at mid-window: the sensor's
-  // angular rate about the Earth's centre at the terrain's radius (as ris
-  // topo's beta area).
-  const double rho_ground =
-      e.to_ecef({sub_mid.lat_rad, sub_mid.lon_rad, 0.5 * (h_min + h_max)}).norm();
-  out.ground_azimuth_spacing_m =
-      s_mid.velocity_m_s.norm() * g.line_interval_s * rho_ground / s_mid.position_m.norm();
 
   // The engine's layout: the window's lines, the profile's points as samples.
   std::vector<float> local_deg(w.size());
