@@ -20,6 +20,7 @@
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 #include "slar_fixtures.h"
+#include "stream_fixtures.h"
 #include "test_util.h"
 
 namespace ris {
@@ -41,12 +42,7 @@ struct SceneFile {
 };
 
 RadarParams targets_radar(const Scene& s, double heading_deg, bool sar) {
-  RadarParams r = load_radar(std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml");
-  r = bench_radar(r, s, deg_to_rad(heading_deg));
-  r.track.altitude_m = 600.0;  // shadow behind the tower
-  r.track.near_edge_ground_m = 1500.0;
-  if (heading_deg == 90.0 || heading_deg == 270.0) r.track.look_side = LookSide::left;
-  r = bench_radar(r, s, deg_to_rad(heading_deg));
+  RadarParams r = test::stream_test_radar(s, heading_deg);
   if (sar) {
     r.mode = RadarMode::sar;
     r.sar.range_resolution_m = 2.5 * r.range_bin_m;

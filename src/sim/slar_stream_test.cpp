@@ -21,6 +21,7 @@
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 #include "slar_fixtures.h"
+#include "stream_fixtures.h"
 #include "test_util.h"
 
 namespace ris {
@@ -40,14 +41,7 @@ Scene test_scene() {
 }
 
 RadarParams test_radar(const Scene& s, double heading_deg, bool auto_reference) {
-  RadarParams r = load_radar(std::string(ris::test::data_dir()) + "/radars/seed-fig4-5.toml");
-  r = bench_radar(r, s, deg_to_rad(heading_deg));
-  r.track.altitude_m = 600.0;  // steep enough for shadow over the relief
-  r.track.near_edge_ground_m = 1500.0;
-  // Left-looking on the east-west tracks (lines are columns, cells counted
-  // the other way across).
-  if (heading_deg == 90.0 || heading_deg == 270.0) r.track.look_side = LookSide::left;
-  r = bench_radar(r, s, deg_to_rad(heading_deg));
+  RadarParams r = test::stream_test_radar(s, heading_deg);
   r.reference.automatic = auto_reference;
   if (!auto_reference) {
     r.reference.mean_power_w = 1e-12;
