@@ -20,11 +20,12 @@ struct AcquisitionFrame {
   double ground_azimuth_spacing_m = 0.0;     // line spacing on the terrain
 };
 
-// The lowest and highest DEM height with data. Throws InputError naming the
-// DEM when none has data.
 struct HeightRange {
   float min_m, max_m;
 };
+
+// The lowest and highest DEM height with data. Throws InputError naming the
+// DEM when none has data.
 HeightRange dem_height_range(const EllipsoidalDem& dem);
 
 // The frame: the whole grid (`full_grid`) or the window the DEM covers.
