@@ -1,7 +1,8 @@
 // `mpirun -np N ris simulate ... --stream` (docs/scale.md): every product the
 // same bytes as a single process, for SLAR along the grid (heading 0) and
 // across it (heading 90), SLAR with point targets, the incoherent and the
-// coherent SAR (along the grid and off it) and PPI (both shipped radars, a sector, point targets);
+// coherent SAR (along the grid and off it), PPI (both shipped radars, a sector, point targets)
+// and an acquisition's radar grid;
 // a failing or killed rank fails the whole run and leaves no output. Skipped when ris was built
 // without MPI.
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 
 #include "acquisition_paths.h"
 #include "build_paths.h"
+#include "folder_compare.h"
 #include "test_util.h"
 
 namespace ris {
@@ -43,34 +45,8 @@ test::RunResult run_shell(const std::string& cmd) {
   return r;
 }
 
-// A shipped radar file with its text edited (heading, coherence).
-std::string radar_with(const test::TempDir& dir, const std::string& name, const std::string& from,
-                       const std::string& old_text, const std::string& new_text) {
-  std::string text = test::read_file(fs::path(test::data_dir()) / "radars" / from);
-  const auto at = text.find(old_text);
-  EXPECT_NE(at, std::string::npos) << old_text;
-  if (at != std::string::npos) text.replace(at, old_text.size(), new_text);
-  const fs::path p = dir / name;
-  test::write_file(p, text);
-  return p.string();
-}
-
-// The products of `out` and `ref`: the same files, byte for byte.
-void expect_same_files(const fs::path& ref, const fs::path& out, const std::string& tag,
-                       int min_files = 10) {
-  int files = 0;
-  for (const auto& e : fs::directory_iterator(ref)) {
-    const fs::path other = out / e.path().filename();
-    ASSERT_TRUE(fs::exists(other)) << tag << ": " << other;
-    EXPECT_TRUE(test::read_file(e.path()) == test::read_file(other))
-        << tag << ": " << e.path().filename();
-    ++files;
-  }
-  int others = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++others;
-  EXPECT_EQ(files, others) << tag;
-  EXPECT_GE(files, min_files) << tag;
-}
+using test::expect_same_files;
+using test::radar_with;
 
 // A small noise scene (300 x 200 cells of 10 m, or `size`), run by one
 // process and by 1, 2 and 3 ranks in blocks of 16 lines (13 or 19 blocks).
@@ -442,23 +418,34 @@ TEST(MpiCli, AFailingRankFailsTheRunWithoutOutput) {
   expect_nothing_written(dir, "no --stream");
 }
 
-// An acquisition run is held in memory on one process (issue 19: not
-// streamed yet): over 2 ranks it is refused naming --acquisition and
-// pointing at a single-process run (not "add --stream", which
-// run_acquisition refuses in its turn), with or without --stream, and
-// nothing is written.
-TEST(MpiCli, AcquisitionRunOverRanksIsRefused) {
+// An acquisition run streamed (ris/sim/acquisition_stream.h): over 1, 2 and
+// 3 ranks, both schedules, the single process's bytes; over 2 ranks
+// without --stream it is refused naming --stream, and nothing is written.
+TEST(MpiCli, AcquisitionRunGivesSingleProcessBytes) {
   RIS_REQUIRE_MPI();
   test::TempDir dir;
-  for (const std::string extra : {"", " --stream"}) {
-    const auto r = run_shell(mpirun(2) + test::ris_exe() + " simulate --quiet -a " +
-                             test::winnipeg_h5() + " --dem " + test::test_dem("winnipeg_dem.tif") +
-                             extra + " --out " + (dir / "out").string());
-    EXPECT_NE(r.exit_code, 0) << extra << "\n" << r.output;
-    EXPECT_NE(r.output.find("--acquisition"), std::string::npos) << extra << "\n" << r.output;
-    EXPECT_NE(r.output.find("without mpirun"), std::string::npos) << extra << "\n" << r.output;
-    expect_nothing_written(dir, "an acquisition over ranks" + extra);
+  const std::string args = " simulate --quiet --threads 1 --block-lines 16 -a " +
+                           test::winnipeg_h5() + " --dem " + test::test_dem("winnipeg_dem.tif");
+  const auto one = test::run_ris(args + " --out " + (dir / "one").string());
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  for (int ranks : {1, 2, 3}) {
+    for (const char* schedule : {"dynamic", "interleaved"}) {
+      if (ranks == 1 && std::string(schedule) == "interleaved") continue;
+      const fs::path out = dir / ("np" + std::to_string(ranks) + schedule);
+      const auto r = run_shell(mpirun(ranks, std::string("RIS_MPI_SCHEDULE=") + schedule) +
+                               test::ris_exe() + args + " --out " + out.string());
+      const std::string t = "acquisition, " + std::to_string(ranks) + " ranks, " + schedule;
+      ASSERT_EQ(r.exit_code, 0) << t << "\n" << r.output;
+      expect_same_files(dir / "one", out, t, 8);
+    }
   }
+  test::TempDir none;
+  const auto r = run_shell(mpirun(2) + test::ris_exe() + " simulate --quiet -a " +
+                           test::winnipeg_h5() + " --dem " + test::test_dem("winnipeg_dem.tif") +
+                           " --out " + (none / "out").string());
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("--stream"), std::string::npos) << r.output;
+  expect_nothing_written(none, "an acquisition over ranks without --stream");
 }
 
 }  // namespace

@@ -64,11 +64,6 @@ TEST(SimulateAcquisitionCli, BadCombinationsNameTheOption) {
   EXPECT_NE(scene_ellipsoid.exit_code, 0);
   EXPECT_NE(scene_ellipsoid.output.find("--acquisition"), std::string::npos)
       << scene_ellipsoid.output;
-  const auto streamed =
-      test::run_ris("simulate -a " + test::winnipeg_h5() + " --dem " +
-                    test::test_dem("winnipeg_dem.tif") + " --stream --out " + (tmp / "c").string());
-  EXPECT_NE(streamed.exit_code, 0);
-  EXPECT_NE(streamed.output.find("--stream"), std::string::npos) << streamed.output;
   const auto dem_alone = test::run_ris("simulate --dem " + test::test_dem("winnipeg_dem.tif") +
                                        " --out " + (tmp / "d").string());
   EXPECT_NE(dem_alone.exit_code, 0);
@@ -85,7 +80,6 @@ TEST(SimulateAcquisitionCli, BadCombinationsNameTheOption) {
   EXPECT_FALSE(std::filesystem::exists(tmp / "e"));
   EXPECT_FALSE(std::filesystem::exists(tmp / "a"));
   EXPECT_FALSE(std::filesystem::exists(tmp / "b"));
-  EXPECT_FALSE(std::filesystem::exists(tmp / "c"));
 }
 
 }  // namespace

@@ -55,16 +55,21 @@ struct RunResult {
 };
 
 // Runs the ris executable with the given argument string (shell-quoted by the
-// caller) and captures its output.
-inline RunResult run_ris(const std::string& args) {
+// caller) and captures its output; env: VAR=value words set for it (or "").
+inline RunResult run_ris_env(const std::string& env, const std::string& args) {
   TempDir tmp;
   const std::string log = (tmp / "out.txt").string();
-  const std::string cmd = std::string(ris::test::ris_exe()) + " " + args + " > " + log + " 2>&1";
+  const std::string cmd = (env.empty() ? std::string() : "env " + env + " ") +
+                          std::string(ris::test::ris_exe()) + " " + args + " > " + log + " 2>&1";
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.output = read_file(log);
   return r;
+}
+
+inline RunResult run_ris(const std::string& args) {
+  return run_ris_env("", args);
 }
 
 }  // namespace ris::test

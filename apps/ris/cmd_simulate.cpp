@@ -108,9 +108,9 @@ void print_slar(const RunRequest& r, const RunResult& res) {
   print_point_targets(res.irfs, sim.hidden_targets);
 }
 
-void print_acquisition(const RunRequest& r, const RunResult& res) {
+// sim: the run's (res.slar in memory; a.sim streamed).
+void print_acquisition(const RunRequest& r, const RunResult& res, const SlarSimulation& sim) {
   const AcquisitionSimulation& a = *res.acquisition;
-  const SlarSimulation& sim = *res.slar;
   const GridWindow& w = a.window;
   fmt::print("simulated {} on {} ({}) with {} ({}, {} Earth)\n", r.dem_path, r.acquisition_path,
              a.mission, r.radar_path, res.kind == RunKind::sar ? "SAR" : "SLAR",
@@ -126,6 +126,15 @@ void print_acquisition(const RunRequest& r, const RunResult& res) {
              100.0 * double(g.shadow_samples) / samples,
              100.0 * double(g.layover_samples) / samples,
              100.0 * double(g.back_facing_samples) / samples);
+}
+
+// Each pass of a streamed run: wall time and this process's CPU time.
+void print_stage_times(const SlarStreamSummary& s) {
+  for (std::size_t i = 0; i < s.stage_seconds.size(); ++i) {
+    const auto& [name, t] = s.stage_seconds[i];
+    fmt::print("  {:.2f} s  {} ({:.2f} s CPU)\n", t, name,
+               i < s.stage_cpu_seconds.size() ? s.stage_cpu_seconds[i] : 0.0);
+  }
 }
 
 void print_streamed(const RunRequest& r, const RunResult& res) {
@@ -146,17 +155,19 @@ void print_streamed(const RunRequest& r, const RunResult& res) {
     return;
   }
   const SlarStreamSummary& s = *res.streamed;
+  if (res.acquisition) {  // ris/sim/acquisition_stream.h
+    print_acquisition(r, res, s.sim);
+    fmt::print("  streamed in {} blocks of {} lines\n", s.blocks, s.block_lines);
+    print_stage_times(s);
+    return;
+  }
   fmt::print("simulated {} ({} x {} cells, streamed in {} blocks of {} lines) with {}\n",
              r.scene_path, s.grid.cols, s.grid.rows, s.blocks, s.block_lines, r.radar_path);
   fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
              s.sim.image.lines, s.sim.image.bins, s.sim.ground_grid.count);
   print_geometry_counts(s.sim.geometry);
   print_point_targets(s.irfs, s.sim.hidden_targets);
-  for (std::size_t i = 0; i < s.stage_seconds.size(); ++i) {
-    const auto& [name, t] = s.stage_seconds[i];
-    fmt::print("  {:.2f} s  {} ({:.2f} s CPU)\n", t, name,
-               i < s.stage_cpu_seconds.size() ? s.stage_cpu_seconds[i] : 0.0);
-  }
+  print_stage_times(s);
   for (const auto& [name, t] : s.cpu_parts) fmt::print("  {:.2f} s  {}\n", t, name);
 }
 
@@ -191,7 +202,7 @@ void run_simulate(SimulateArgs& a) {
   } else {
     bar->finish();
     if (res.acquisition) {
-      print_acquisition(r, res);
+      print_acquisition(r, res, *res.slar);
     } else if (res.kind == RunKind::ppi) {
       print_ppi(r, res);
     } else {

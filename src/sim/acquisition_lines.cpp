@@ -172,8 +172,9 @@ void AcquisitionLineSource::store_maps(int line, const LineSpan& span, const Lin
   bin_shadow.assign(bins, 0);
   bin_layover.assign(bins, 0);
   bin_best.assign(bins, std::numeric_limits<float>::infinity());
-  float* local = run.local_incidence_deg + static_cast<std::size_t>(line) * bins;
-  std::uint8_t* mask = run.mask + static_cast<std::size_t>(line) * bins;
+  const auto row = static_cast<std::size_t>(line - run.maps_line0);
+  float* local = run.local_incidence_deg + row * bins;
+  std::uint8_t* mask = run.mask + row * bins;
   std::fill(local, local + bins, kNanF);
   std::fill(mask, mask + bins, std::uint8_t{kMaskNone});
   for (int k = 0; k < span.n; ++k) {

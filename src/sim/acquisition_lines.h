@@ -52,8 +52,11 @@ struct AcquisitionRun {
   int samples_per_bin = 3;                  // profile points per range bin
   std::size_t max_points = 0;               // the scratch's capacity
   const SlarGeometry* layout = nullptr;     // the engine's layout (capacity)
-  float* local_incidence_deg = nullptr;     // window lines x bins
-  std::uint8_t* mask = nullptr;             // TopoMask bits, window lines x bins
+  // The radar-grid layers, lines [maps_line0, ...) x bins of the window:
+  // the whole window in memory, a block's lines when streamed.
+  float* local_incidence_deg = nullptr;
+  std::uint8_t* mask = nullptr;  // TopoMask bits
+  int maps_line0 = 0;
 
   // The category at a latitude/longitude (radians): the nearest posting's.
   std::uint16_t category_at(double lat_rad, double lon_rad) const;

@@ -25,8 +25,9 @@ const char* earth_name(EarthModel e) {
   return e == EarthModel::flat ? "flat" : "ellipsoid";
 }
 
-// The grid window every raster of the run lies on (their metadata).
-RasterMetadata grid_metadata(const AcquisitionSimulation& a) {
+}  // namespace
+
+RasterMetadata acquisition_grid_metadata(const AcquisitionSimulation& a) {
   const RadarGrid& g = a.grid;
   const GridWindow& w = a.window;
   return {{"RIS_ACQUISITION", a.acquisition_source},
@@ -41,7 +42,25 @@ RasterMetadata grid_metadata(const AcquisitionSimulation& a) {
           {"RIS_EARTH_MODEL", earth_name(a.earth)}};
 }
 
-}  // namespace
+SlarRasterSpec acquisition_raster_spec(const std::string& file, const AcquisitionSimulation& a,
+                                       const SlarImage& img) {
+  SlarRasterSpec spec;
+  if (file == "local_incidence.tif") {
+    spec.metadata = {{"RIS_PRODUCT", "local incidence of the terrain at each bin"},
+                     {"RIS_UNITS", "degrees"}};
+    spec.band = "local_incidence_deg";
+    spec.nodata = std::numeric_limits<double>::quiet_NaN();
+  } else if (file == "layover_shadow_mask.tif") {
+    spec.metadata = {{"RIS_PRODUCT", "layover/shadow mask: 0 none, 1 shadow, 2 layover, 3 both"}};
+    spec.band = "layover_shadow_mask";
+  } else {
+    spec = slar_raster_spec(file, img);
+  }
+  spec.georeferenced = false;  // the grid's axes, no map georeferencing
+  const RasterMetadata grid_md = acquisition_grid_metadata(a);
+  spec.metadata.insert(grid_md.begin(), grid_md.end());
+  return spec;
+}
 
 const std::vector<std::string_view>& acquisition_product_stems() {
   static const std::vector<std::string_view> stems = {
@@ -122,28 +141,24 @@ void write_acquisition_products(const std::filesystem::path& out_dir,
   StagedDirectory dir(out_dir);
   const SlarImage& img = sim.image;
   const ProductSelection& want = info.products;
-  const GeoTiffCompression float_tif = geotiff_compression(info.compression, true);
-  const GeoTiffCompression int_tif = geotiff_compression(info.compression, false);
-  const RasterMetadata grid_md = grid_metadata(a);
+  // As a scene run's products (write_slar_products): the preset, overviews
+  // on request.
+  const GeoTiffCompression float_tif = product_tiff_settings(info, true);
+  const GeoTiffCompression int_tif = product_tiff_settings(info, false);
   std::vector<std::function<void()>> tasks;
   // A raster of the window (no map georeferencing: its axes are the grid's).
   const auto raster = [&](const std::string& stem, const std::string& file, const auto* data,
-                          int cols, int rows, RasterMetadata md, const std::string& band,
-                          std::optional<double> nodata) {
+                          int cols, int rows) {
     if (!want.wants(stem)) return;
-    tasks.emplace_back([&, file, data, cols, rows, md, band, nodata] {
-      RasterMetadata all = md;
-      all.insert(grid_md.begin(), grid_md.end());
+    tasks.emplace_back([&, file, data, cols, rows] {
+      const SlarRasterSpec spec = acquisition_raster_spec(file, a, img);
       using T = std::remove_cvref_t<decltype(*data)>;
-      write_geotiff(dir.path(file), data, cols, rows, nullptr, nodata, all, band,
-                    BlockOrder::top_down, std::is_floating_point_v<T> ? &float_tif : &int_tif);
+      write_geotiff(dir.path(file), data, cols, rows, nullptr, spec.nodata, spec.metadata,
+                    spec.band, BlockOrder::top_down,
+                    std::is_floating_point_v<T> ? &float_tif : &int_tif);
     });
   };
-  const auto slant = [&](const std::string& stem, const std::string& file, const auto* data,
-                         int cols, int rows) {
-    const SlarRasterSpec spec = slar_raster_spec(file, img);
-    raster(stem, file, data, cols, rows, spec.metadata, spec.band, spec.nodata);
-  };
+  const auto& slant = raster;
   const auto picture = [&](const std::string& stem, const std::uint8_t* grey, int cols, int rows) {
     const std::string file = picture_file(stem, cols, rows, info.max_png_pixels);
     if (file.ends_with(".png")) {
@@ -166,12 +181,9 @@ void write_acquisition_products(const std::filesystem::path& out_dir,
   picture("slant_range", pic.slant_grey.data(), img.bins, img.lines);
   picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines);
   const GridWindow& w = a.window;
-  raster("local_incidence", "local_incidence.tif", a.local_incidence_deg.data(), w.bins, w.lines,
-         {{"RIS_PRODUCT", "local incidence of the terrain at each bin"}, {"RIS_UNITS", "degrees"}},
-         "local_incidence_deg", std::numeric_limits<double>::quiet_NaN());
+  raster("local_incidence", "local_incidence.tif", a.local_incidence_deg.data(), w.bins, w.lines);
   raster("layover_shadow_mask", "layover_shadow_mask.tif", a.layover_shadow_mask.data(), w.bins,
-         w.lines, {{"RIS_PRODUCT", "layover/shadow mask: 0 none, 1 shadow, 2 layover, 3 both"}},
-         "layover_shadow_mask", std::nullopt);
+         w.lines);
   tasks.emplace_back([&] {
     write_text_file_atomic(dir.path("metadata.json"),
                            acquisition_metadata(a, sim, pic, info).dump(2) + "\n");

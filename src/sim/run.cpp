@@ -14,6 +14,7 @@
 #include "ris/scene/scene_stream.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/sim/acquisition_products.h"
+#include "ris/sim/acquisition_stream.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/sar_coherent.h"
 #include "ris/sim/slar_products.h"
@@ -216,11 +217,6 @@ void render_slar_run(RunResult& res, std::uint64_t seed) {
 
 // The simulation on an acquisition's radar grid (ris/sim/acquisition_simulation.h).
 void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
-  if (r.stream || r.block_lines > 0) {
-    throw InputError("", r.stream ? "--stream" : "--block-lines",
-                     "an acquisition run is held in memory (a window of at most 50 M pixels); "
-                     "drop the option");
-  }
   if (!r.targets_path.empty() || (r.targets && !r.targets->empty())) {
     throw InputError(r.targets_path, "--targets",
                      "point targets are not placed on an acquisition's grid yet; drop --targets");
@@ -255,6 +251,25 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
     o.land_cover_source = r.land_cover_path;
   }
   o.backscatter_file = sigma0.path;
+  if (r.stream || r.block_lines > 0) {  // in blocks of lines (ris/sim/acquisition_stream.h)
+    SlarStreamOptions so;
+    so.block_lines = r.block_lines;
+    so.quiet = r.quiet;
+    AcquisitionStreamSummary s = simulate_acquisition_streamed(acq, dem, res.radar, *sigma0.source,
+                                                               o, res.info, r.out_dir, so);
+    res.kind = RunKind::streamed;
+    SlarStreamSummary& summary = res.streamed.emplace();
+    summary.sim = s.acquisition.sim;
+    summary.block_lines = s.block_lines;
+    summary.blocks = s.blocks;
+    summary.stage_seconds = std::move(s.stage_seconds);
+    summary.stage_cpu_seconds = std::move(s.stage_cpu_seconds);
+    res.acquisition = std::make_shared<AcquisitionSimulation>(std::move(s.acquisition));
+    // Once, by rank 0, in an MPI run (every rank sets up the same stages).
+    if (process_group().rank() == 0)
+      for (const std::string& w : summary.sim.warnings) warn(cb, w);
+    return;
+  }
   if (cb.progress) cb.progress("geometry + image formation on the acquisition's grid", 0.1);
   auto a = std::make_shared<AcquisitionSimulation>(
       simulate_acquisition(acq, dem, res.radar, *sigma0.source, o));
@@ -276,29 +291,20 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   }
   const Clock::time_point t0 = Clock::now();
   RunResult res;
-  if (process_group().size() > 1 && !r.acquisition_path.empty()) {
-    // An acquisition run is not streamed yet: "add --stream" would only be
-    // refused in its turn (run_acquisition).
-    throw InputError(r.acquisition_path, "--acquisition",
-                     fmt::format("an acquisition run is held in memory on one process (a window "
-                                 "of at most 50 M pixels), not spread over {} MPI ranks yet; run "
-                                 "it without mpirun",
-                                 process_group().size()));
-  }
   if (process_group().size() > 1 && !(r.stream || r.block_lines > 0)) {
     // Else every rank would run the whole simulation and write the same folder.
-    throw InputError(r.scene_path, "--stream",
+    throw InputError(r.acquisition_path.empty() ? r.scene_path : r.acquisition_path, "--stream",
                      fmt::format("a run over {} MPI ranks is a streamed run (docs/scale.md); add "
                                  "--stream, or run without mpirun",
                                  process_group().size()));
   }
   if (!r.acquisition_path.empty()) {
     run_acquisition(r, cb, res);
-    if (!r.out_dir.empty()) {
+    if (res.kind != RunKind::streamed && !r.out_dir.empty()) {
       if (cb.progress) cb.progress("writing products", 0.95);
       res.write_seconds = write_run_products(res, r.out_dir);
     }
-    if (cb.progress) cb.progress("done", 1.0);
+    if (cb.progress && res.kind != RunKind::streamed) cb.progress("done", 1.0);
     res.seconds = seconds_since(t0);
     return res;
   }

@@ -47,10 +47,15 @@
 #include "ris/util/resource_guard.h"
 #include "sim/block_schedule.h"
 #include "sim/sar_coherent_stream.h"
+#include "sim/slant_stream_passes.h"
 #include "sim/slar_stream_oblique.h"
 #include "sim/slar_stream_targets.h"
 
 namespace ris {
+
+using detail::process_cpu_seconds;
+using detail::read_rows;
+using detail::read_window;
 
 namespace {
 
@@ -59,27 +64,6 @@ constexpr float kNaNf = std::numeric_limits<float>::quiet_NaN();
 
 std::size_t sz(std::int64_t n) {
   return static_cast<std::size_t>(n);
-}
-
-// Reads rows [row0, row0 + rows) x all columns of band 1 of an open raster.
-template <typename T>
-void read_rows(GDALDatasetH ds, int row0, int rows, T* out, GDALDataType type,
-               const std::string& path) {
-  const int cols = GDALGetRasterXSize(ds);
-  if (GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Read, 0, row0, cols, rows, out, cols, rows, type, 0,
-                   0) != CE_None) {
-    throw InputError(path, "", "cannot read back: " + last_gdal_error());
-  }
-}
-
-// A window of band 1: rows [row0, row0 + rows) x columns [col0, col0 + cols).
-template <typename T>
-void read_window(GDALDatasetH ds, int row0, int rows, int col0, int cols, T* out, GDALDataType type,
-                 const std::string& path) {
-  if (GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Read, col0, row0, cols, rows, out, cols, rows, type,
-                   0, 0) != CE_None) {
-    throw InputError(path, "", "cannot read back: " + last_gdal_error());
-  }
 }
 
 // Pass 0: what simulate_slar learns from the whole scene before it starts.
@@ -182,31 +166,9 @@ void reduce_scene_summary(ProcessGroup& g, SceneSummary& s) {
   }
 }
 
-// Exact median of the values counted in pass 1 and refined in pass 2: the
-// upper median (nth_element at n / 2) or, with both_middles, the mean of the
-// two middle values for an even count (median_valid_power_w).
-std::vector<std::uint64_t> median_ranks(std::uint64_t n, bool both_middles) {
-  if (both_middles && n % 2 == 0) return {n / 2 - 1, n / 2};
-  return {n / 2};
-}
-
-double median_value(const FloatRankSelect& sel, std::uint64_t n, bool both_middles) {
-  const double upper = sel.value(both_middles && n % 2 == 0 ? 1 : 0);
-  if (!(both_middles && n % 2 == 0)) return upper;
-  const double lower = sel.value(0);
-  return 0.5 * (lower + upper);
-}
-
 // Whether the track runs along y (lines are cell rows), as fused_slar_applies.
 bool along_y_axis(const Track& t) {
   return std::abs(std::abs(t.along_y) - 1.0) < 1e-9;
-}
-
-// CPU time of this process (every thread), seconds.
-double process_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 // A band of scene rows [r0, r0 + rows) as a rank sends it to rank 0: a
@@ -235,11 +197,6 @@ void unpack_row_band(const char* p, std::size_t n, int cols, int& r0, int& rows,
   values.resize(nc);
   std::memcpy(values.data(), p + sizeof(head), nc * sizeof(float));
   bytes.assign(p + sizeof(head) + nc * sizeof(float), p + n);
-}
-
-// A pixel counted by the auto greytone reference (ris/image/greytone.h).
-inline bool valid_power(float p, std::uint8_t mask) {
-  return std::isfinite(p) && p > 0.0f && !(mask & pixel_flag::kNoData);
 }
 
 }  // namespace
@@ -349,7 +306,8 @@ class StreamRun {
                                       geo_.consume_cpu);
     }
     stage("greytones, ground range, PNGs (pass 2)");
-    if (want.wants("slant_range") || want.wants("ground_range")) pictures_pass(map, slant_dir);
+    if (want.wants("slant_range") || want.wants("ground_range"))
+      detail::pictures_pass(passes(), map, slant_dir);
     stage_done();
     if (!root) {
       summary_.sim.warnings.clear();  // rank 0 reports them
@@ -430,19 +388,8 @@ class StreamRun {
                   : std::int64_t(std::ceil(cross_cells_ * cells_per_line)) * (coherent ? 26 : 18) +
                         (spill_maps_ ? std::int64_t(g.samples) * 5 : 0)) +
         std::int64_t(std::max(bins(), 1)) * (coherent ? 112 : 72);
-    const int n = lines();
-    const int block_lines =
-        options_.block_lines > 0
-            ? std::min(options_.block_lines, n)
-            : static_cast<int>(std::clamp<std::int64_t>(options_.memory_budget_bytes / per_line, 16,
-                                                        std::max(n, 16)));
-    // Over several MPI ranks, at least 4 blocks a rank, so the queue has
-    // blocks to balance (the bytes do not depend on the block length).
-    const int ranks = group_.size();
-    const int for_ranks = ranks > 1 && options_.block_lines <= 0
-                              ? std::max(16, (n + 4 * ranks - 1) / (4 * ranks))
-                              : n;
-    summary_.block_lines = std::min({block_lines, n, for_ranks});
+    summary_.block_lines = detail::stream_block_lines(lines(), per_line, options_.block_lines,
+                                                      options_.memory_budget_bytes, group_.size());
     // Scene rows read at a time by the passes over whole rows.
     scene_block_rows_ = std::min(grid().rows, std::max(in_.block_rows(), 256));
   }
@@ -457,7 +404,7 @@ class StreamRun {
     complete_slar_setup(sim(), rs_, grid());
     RIS_CHECK(rs_.imaging.range.count == bins() && bins() > 0);
     n_elev_ = ss_.elevation.total();
-    ss_.elevation.select(median_ranks(n_elev_, false));
+    ss_.elevation.select(detail::median_ranks(n_elev_, false));
     // The image's layout (for the products' metadata and geocoding).
     SlarImage& img = sim().image;
     img.lines = lines();
@@ -515,17 +462,8 @@ class StreamRun {
   }
 
   // A block of lines as computed by any rank and consumed, in line order, by
-  // rank 0 (src/sim/block_schedule.h): its profile rows, counts and its own
-  // cells' scene-grid maps (in the writers' layout).
-  struct LineBlock {
-    int l0 = 0, l1 = 0;
-    SlarLineProfiles prof;
-    SlarLineCounts counts;
-    std::vector<std::uint8_t> scene_mask;
-    std::vector<float> incidence;
-    detail::BlockTargets targets;    // its point targets, lit or not
-    detail::CoherentBlock coherent;  // the coherent SAR's intensity
-  };
+  // rank 0 (src/sim/block_schedule.h; slant_stream_passes.h).
+  using LineBlock = detail::StreamLineBlock;
 
   void lines_pass() {
     const SlarGeometry& g = sim().geometry;
@@ -573,8 +511,7 @@ class StreamRun {
           ++computed;
           return k;
         },
-        [](const LineBlock& k, std::vector<char>& out) { pack_block(k, out); },
-        [](const char* p, std::size_t n) { return unpack_block(p, n); },
+        detail::pack_line_block, detail::unpack_line_block,
         [&](int, LineBlock& k) {
           const double t0 = process_cpu_seconds();
           counts.add(k.counts);
@@ -731,68 +668,6 @@ class StreamRun {
     return k;
   }
 
-  static void pack_block(const LineBlock& k, std::vector<char>& out) {
-    const auto put = [&](const void* p, std::size_t n) {
-      const char* c = static_cast<const char*>(p);
-      out.insert(out.end(), c, c + n);
-    };
-    const int head[5] = {k.l0, k.l1, k.prof.line0, k.prof.lines, k.prof.bins};
-    put(head, sizeof(head));
-    put(&k.prof.samples_in_swath, sizeof(std::int64_t));
-    put(&k.counts, sizeof(SlarLineCounts));
-    const std::size_t np = k.prof.power_w.size(), nm = k.scene_mask.size();
-    put(&nm, sizeof(nm));
-    put(k.prof.power_w.data(), np * sizeof(float));
-    put(k.prof.area_m2.data(), np * sizeof(float));
-    put(k.prof.touch.data(), np);
-    put(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
-    put(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
-    put(k.scene_mask.data(), nm);
-    put(k.incidence.data(), nm * sizeof(float));
-    detail::pack_block_targets(k.targets, out);
-    detail::pack_coherent_block(k.coherent, out);
-  }
-
-  static LineBlock unpack_block(const char* p, std::size_t n) {
-    const char* const end = p + n;
-    const auto get = [&](void* to, std::size_t bytes) {
-      RIS_CHECK(std::size_t(end - p) >= bytes);
-      std::memcpy(to, p, bytes);
-      p += bytes;
-    };
-    LineBlock k;
-    int head[5] = {};
-    get(head, sizeof(head));
-    k.l0 = head[0];
-    k.l1 = head[1];
-    k.prof.line0 = head[2];
-    k.prof.lines = head[3];
-    k.prof.bins = head[4];
-    get(&k.prof.samples_in_swath, sizeof(std::int64_t));
-    get(&k.counts, sizeof(SlarLineCounts));
-    std::size_t nm = 0;
-    get(&nm, sizeof(nm));
-    const std::size_t np = sz(k.prof.lines) * sz(k.prof.bins);
-    k.prof.power_w.resize(np);
-    k.prof.area_m2.resize(np);
-    k.prof.touch.resize(np);
-    k.prof.mapped_count.resize(np);
-    k.prof.visible_count.resize(np);
-    get(k.prof.power_w.data(), np * sizeof(float));
-    get(k.prof.area_m2.data(), np * sizeof(float));
-    get(k.prof.touch.data(), np);
-    get(k.prof.mapped_count.data(), np * sizeof(std::uint16_t));
-    get(k.prof.visible_count.data(), np * sizeof(std::uint16_t));
-    k.scene_mask.resize(nm);
-    k.incidence.resize(nm);
-    get(k.scene_mask.data(), nm);
-    get(k.incidence.data(), nm * sizeof(float));
-    k.targets = detail::unpack_block_targets(p, end);
-    k.coherent = detail::unpack_coherent_block(p, end);
-    RIS_CHECK(p == end);
-    return k;
-  }
-
   // The block's own cells (its lines' rows or columns, without the halo):
   // their scene-grid maps kept for the writers (count rows x cols along y,
   // rows x count across), the median elevation's second pass.
@@ -853,23 +728,11 @@ class StreamRun {
     if (n == 0) return;
     const int k0 = az.lines_emitted();
     const std::size_t np = sz(n) * sz(bins());
-    SlarImage block;
-    block.lines = n;
-    block.bins = bins();
-    block.range = rs_.imaging.range;
-    block.mean_power_w.resize(np);
-    block.area_m2.resize(np);
-    mask_.resize(np);
-    az.emit(n, block.mean_power_w.data(), block.area_m2.data(), mask_.data());
-    finish_slar_image(sim(), block, rs_.terms);
+    const SlarImage block = detail::emit_finished_lines(az, n, sim(), rs_.terms, mask_);
     // The point targets' measurement windows (of the mean power before
     // NaN for no data, as measure_point_targets reads it).
     if (targets_ && !coherent_) targets_->observe(k0, n, block.mean_power_w.data());
-    mean_.assign(block.mean_power_w.begin(), block.mean_power_w.end());
-    for (std::size_t i = 0; i < np; ++i) {
-      if (valid_power(mean_[i], mask_[i])) power_.count(mean_[i]);
-      if (mask_[i] & pixel_flag::kNoData) mean_[i] = kNaNf;
-    }
+    detail::count_and_blank_no_data(block, mask_, power_, mean_);
     if (coherent_) {  // the coherent intensity stands in for the faded mean
       speckled_.resize(np);
       coherent_->finish_lines(n, mask_.data(), block.area_m2.data(), speckled_.data());
@@ -1000,22 +863,14 @@ class StreamRun {
     if (!(radar().reference.automatic && n_power > 0))
       return std::numeric_limits<double>::quiet_NaN();
     stage("median mean power (pass 1b)");
-    power_.select(median_ranks(n_power, true));
-    GdalDataset mean_ds = open_raster(dir_->path("mean_power_slant.tif").string());
-    GdalDataset mask_ds = open_raster(dir_->path("mask_slant.tif").string());
-    for (int k0 = 0; k0 < lines(); k0 += block_lines()) {
-      const int n = std::min(block_lines(), lines() - k0);
-      const std::size_t np = sz(n) * sz(bins());
-      mean_.resize(np);
-      mask_.resize(np);
-      read_rows(handle(mean_ds), k0, n, mean_.data(), GDT_Float32, "mean_power_slant.tif");
-      read_rows(handle(mask_ds), k0, n, mask_.data(), GDT_Byte, "mask_slant.tif");
-      for (std::size_t i = 0; i < np; ++i)
-        if (valid_power(mean_[i], mask_[i])) power_.refine(mean_[i]);
-    }
-    const double median = median_value(power_, n_power, true);
+    const double median = detail::median_mean_power_pass(passes(), power_, n_power);
     stage_done();
     return median;
+  }
+
+  // What passes 1b and 2 need (slant_stream_passes.h).
+  detail::SlantImagePasses passes() {
+    return {group_, schedule_, sim(), info_, block_lines(), dir_ ? &*dir_ : nullptr, &*bar_, {}};
   }
 
   // The ground-range grid over the median elevation (simulate_slar).
@@ -1028,138 +883,10 @@ class StreamRun {
         ground_range_grid(img.range, sim().geometry.altitude_m, h_ref, img.line_spacing_m);
   }
 
-  // ---- Pass 2: greytones, ground range, PNGs ----------------------------
-  // The pictures: a tiled GeoTIFF when too large for a PNG (picture_file),
-  // else through a tiled temporary in the staging folder (removed before it
-  // is committed), then to PNG row by row.
-  void pictures_pass(const GreytoneMap& map, const std::string& slant_dir) {
-    const GroundRangeGrid& gg = sim().ground_grid;
-    if (group_.rank() != 0) {  // blocks computed for rank 0
-      picture_blocks(map, slant_dir, nullptr, nullptr);
-      return;
-    }
-    const std::string slant_file =
-        picture_file("slant_range", bins(), lines(), info_.max_png_pixels);
-    const std::string ground_file =
-        picture_file("ground_range", gg.count, lines(), info_.max_png_pixels);
-    const auto picture_path = [&](const std::string& file) {
-      return file.ends_with(".png") ? dir_->path("." + file + ".tmp.tif") : dir_->path(file);
-    };
-    const auto open_picture = [&](const std::string& file, int cols) {
-      const bool png = file.ends_with(".png");
-      const SlarRasterSpec spec = png ? SlarRasterSpec{} : slar_raster_spec(file, sim().image);
-      // A GeoTIFF picture with the run's compression (write_slar_products).
-      return std::make_unique<GeoTiffBlockWriter<std::uint8_t>>(
-          picture_path(file), cols, lines(), std::vector<std::string>{spec.band}, nullptr,
-          spec.nodata, spec.metadata,
-          png ? GeoTiffCompression{} : product_tiff_settings(info_, false));
-    };
-    {
-      ByteWriter slant_grey_out = open_picture(slant_file, bins());
-      ByteWriter ground_grey_out = open_picture(ground_file, gg.count);
-      picture_blocks(map, slant_dir, slant_grey_out.get(), ground_grey_out.get());
-      slant_grey_out->close();
-      ground_grey_out->close();
-    }
-    for (const std::string& file : {slant_file, ground_file}) {
-      if (!file.ends_with(".png")) continue;
-      write_png_gray_from_raster(dir_->path(file), picture_path(file),
-                                 png_compression_level(info_.compression));
-      std::filesystem::remove(picture_path(file));
-    }
-  }
-
-  // A block of image lines' greytones in slant and ground range (any rank).
-  struct PictureBlock {
-    int k0 = 0, lines = 0;
-    std::vector<std::uint8_t> slant, ground;
-  };
-
-  // The speckled power read back block by block: its greytones in slant and
-  // ground range (render_slar), computed on every rank and written by rank 0
-  // (slant_out, ground_out; null on the other ranks) in line order.
-  void picture_blocks(const GreytoneMap& map, const std::string& slant_dir,
-                      GeoTiffBlockWriter<std::uint8_t>* slant_out,
-                      GeoTiffBlockWriter<std::uint8_t>* ground_out) {
-    const SlarImage& img = sim().image;
-    const GroundRangeGrid& gg = sim().ground_grid;
-    const std::filesystem::path dir(slant_dir);
-    std::optional<GdalDataset> sp_ds, mask_ds;  // at the first block (see geocoded_pass)
-    std::vector<std::uint8_t> no_data, ground_no_data;
-    const int blocks = (lines() + block_lines() - 1) / block_lines();
-    detail::run_blocks_in_order<PictureBlock>(
-        group_, blocks, schedule_,
-        [&](int b) {
-          if (!sp_ds) {
-            sp_ds.emplace(open_raster((dir / "speckled_power_slant.tif").string()));
-            mask_ds.emplace(open_raster((dir / "mask_slant.tif").string()));
-          }
-          PictureBlock k;
-          k.k0 = b * block_lines();
-          k.lines = std::min(block_lines(), lines() - k.k0);
-          const int n = k.lines;
-          const std::size_t np = sz(n) * sz(bins());
-          speckled_.resize(np);
-          mask_.resize(np);
-          read_rows(handle(*sp_ds), k.k0, n, speckled_.data(), GDT_Float32,
-                    "speckled_power_slant.tif");
-          read_rows(handle(*mask_ds), k.k0, n, mask_.data(), GDT_Byte, "mask_slant.tif");
-          no_data.resize(np);
-          for (std::size_t i = 0; i < np; ++i)
-            no_data[i] = (mask_[i] & pixel_flag::kNoData) ? 1 : 0;
-          k.slant.resize(np);
-          greytones(speckled_, k.slant, map, no_data);
-          const std::vector<float> ground_power = to_ground_range(speckled_, n, img.range, gg);
-          const std::vector<std::uint8_t> ground_mask =
-              to_ground_range_nearest(mask_, n, img.range, gg, pixel_flag::kNoData);
-          ground_no_data.resize(ground_mask.size());
-          for (std::size_t i = 0; i < ground_mask.size(); ++i)
-            ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
-          k.ground.resize(ground_power.size());
-          greytones(ground_power, k.ground, map, ground_no_data);
-          return k;
-        },
-        [](const PictureBlock& k, std::vector<char>& out) {
-          const std::size_t sizes[4] = {std::size_t(k.k0), std::size_t(k.lines), k.slant.size(),
-                                        k.ground.size()};
-          const char* h = reinterpret_cast<const char*>(sizes);
-          out.insert(out.end(), h, h + sizeof(sizes));
-          out.insert(out.end(), k.slant.begin(), k.slant.end());
-          out.insert(out.end(), k.ground.begin(), k.ground.end());
-        },
-        [](const char* p, std::size_t n) {
-          std::size_t sizes[4] = {};
-          RIS_CHECK(n >= sizeof(sizes));
-          std::memcpy(sizes, p, sizeof(sizes));
-          RIS_CHECK(n == sizeof(sizes) + sizes[2] + sizes[3]);
-          PictureBlock k;
-          k.k0 = static_cast<int>(sizes[0]);
-          k.lines = static_cast<int>(sizes[1]);
-          const char* at = p + sizeof(sizes);
-          k.slant.assign(at, at + sizes[2]);
-          k.ground.assign(at + sizes[2], at + sizes[2] + sizes[3]);
-          return k;
-        },
-        [&](int, PictureBlock& k) {
-          slant_out->write(k.slant.data(), k.lines);
-          ground_out->write(k.ground.data(), k.lines);
-          bar_->advance(0);
-        });
-  }
-
   // ---- Pass 2b: geocoded products, scene rows top down ------------------
   // (median, folder) as rank 0 has them, on every rank.
   std::pair<double, std::string> share_from_rank0(double median, const std::string& folder) {
-    if (group_.size() == 1) return {median, folder};
-    std::array<char, sizeof(double)> m_bytes{};
-    std::memcpy(m_bytes.data(), &median, sizeof(double));
-    const std::string text = std::string(m_bytes.data(), m_bytes.size()) + folder;
-    const std::vector<char> mine(text.begin(), text.end());
-    const std::vector<char> root = group_.all_gather(mine).at(0);
-    RIS_CHECK(root.size() >= sizeof(double));
-    double m = 0.0;
-    std::memcpy(&m, root.data(), sizeof(double));
-    return {m, std::string(root.data() + sizeof(double), root.size() - sizeof(double))};
+    return detail::share_from_rank0(group_, median, folder);
   }
 
   // A block of scene rows geocoded (any rank) for rank 0 to write.
@@ -1284,13 +1011,7 @@ class StreamRun {
 
   // metadata.json, with make_greytone_image's map and N per bin.
   void write_metadata(const GreytoneMap& map) {
-    SlarPictures pic_meta;
-    pic_meta.seed = info_.seed;
-    pic_meta.looks = looks_;
-    pic_meta.reference_power_w = map.reference_power_w();
-    pic_meta.reference_greytone = map.reference_greytone();
-    pic_meta.greytones_per_decade = map.greytones_per_decade();
-    pic_meta.film_offset = map.film_offset();
+    const SlarPictures pic_meta = detail::picture_metadata(map, info_.seed, looks_);
     nlohmann::json meta = slar_metadata(grid(), ss_.h_min, ss_.h_max, sim(), pic_meta, info_);
     if (targets_)
       meta["point_targets"] = targets_->metadata(summary_.irfs, sim(), coherent_.has_value());

@@ -24,10 +24,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ris/io/raster_io.h"
 #include "ris/sim/acquisition_simulation.h"
 #include "ris/sim/run_info.h"
+#include "ris/sim/slar_products.h"
 
 namespace ris {
+
+// The metadata every raster of the run carries: the grid window it lies on.
+RasterMetadata acquisition_grid_metadata(const AcquisitionSimulation& a);
+
+// A raster product's metadata (the grid's with the product's), band and
+// no-data; file: any GeoTIFF of the run. The streamed run
+// (ris/sim/acquisition_stream.h) writes the same.
+SlarRasterSpec acquisition_raster_spec(const std::string& file, const AcquisitionSimulation& a,
+                                       const SlarImage& img);
 
 // The product stems (ProductSelection).
 const std::vector<std::string_view>& acquisition_product_stems();
