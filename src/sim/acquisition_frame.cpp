@@ -10,11 +10,6 @@
 
 namespace ris::detail {
 
-namespace {
-// Layers and line profiles live in memory: refuse larger windows (as ris topo).
-constexpr std::size_t kMaxInMemoryPixels = 50'000'000;
-}  // namespace
-
 HeightRange dem_height_range(const EllipsoidalDem& dem) {
   float h_min = std::numeric_limits<float>::infinity(), h_max = -h_min;
   for (float h : dem.height_m) {
@@ -61,8 +56,8 @@ void check_in_memory_window(const GridWindow& w, const std::string& acquisition_
   if (w.size() <= kMaxInMemoryPixels) return;
   throw InputError(acquisition_source, full_grid ? "--full-grid" : "--dem",
                    fmt::format("the window is {} lines x {} bins ({:.0f} M pixels); at most {} M "
-                               "pixels: choose one burst (--burst), a smaller DEM, or drop "
-                               "--full-grid",
+                               "pixels in memory: stream the run (--stream), choose one burst "
+                               "(--burst), a smaller DEM, or drop --full-grid",
                                w.lines, w.bins, static_cast<double>(w.size()) / 1e6,
                                kMaxInMemoryPixels / 1'000'000));
 }

@@ -6,6 +6,7 @@
 // (docs/scale.md), which is why it is a function of its own.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "ris/geometry/topo.h"
@@ -32,6 +33,10 @@ HeightRange dem_height_range(const EllipsoidalDem& dem);
 // Throws InputError naming the DEM when the window is empty.
 AcquisitionFrame acquisition_frame(const Acquisition& acq, const EllipsoidalDem& dem,
                                    bool full_grid);
+
+// The in-memory run holds its layers and line profiles whole (about 90
+// bytes a pixel, as ris topo's layers).
+constexpr std::size_t kMaxInMemoryPixels = 50'000'000;
 
 // The in-memory run holds its layers and line profiles whole: refuse a
 // window of more than 50 M pixels (as ris topo), naming the acquisition and

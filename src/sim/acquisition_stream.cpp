@@ -20,6 +20,7 @@
 #include "ris/util/error.h"
 #include "ris/util/process_group.h"
 #include "ris/util/progress.h"
+#include "ris/util/resource_guard.h"
 #include "sim/acquisition_setup.h"
 #include "sim/block_schedule.h"
 #include "sim/slant_stream_passes.h"
@@ -36,6 +37,11 @@ std::size_t sz(std::int64_t n) {
 // profile, the integrator's running sums, the written lines and their
 // copies; ris/sim/slar_stream.h) and the radar-grid layers' 5.
 constexpr std::int64_t kBytesPerBin = 72 + 5;
+
+// The products' bytes a pixel of the window at most: the five rasters
+// uncompressed (4 + 4 + 4 + 1 + 1) and the two greytone pictures (about a
+// byte a pixel each). Compressed they take less (Winnipeg's: 12).
+constexpr std::int64_t kProductBytesPerPixel = 16;
 
 // The run's state and its passes, in the order run() calls them.
 class AcquisitionStream {
@@ -56,6 +62,12 @@ class AcquisitionStream {
     // Every rank sets the same run up (the inputs are read by each).
     detail::check_acquisition_radar(radar, options);
     const detail::AcquisitionFrame frame = detail::acquisition_frame(acq, dem, options.full_grid);
+    // Room for the products, before any work (the window has no cap).
+    const GridWindow& w = frame.window;
+    require_disk(checked_mul(checked_mul(w.lines, w.bins, acq.source, ""), kProductBytesPerPixel,
+                             acq.source, ""),
+                 out_dir, acq.source, "--out",
+                 fmt::format("the products of a {} x {} pixel window", w.lines, w.bins));
     detail::set_up_acquisition(acq, dem, radar, sigma0, options, frame, s_);
     SlarImage& img = sim().image;
     img.lines = lines();

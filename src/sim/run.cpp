@@ -21,6 +21,7 @@
 #include "ris/util/error.h"
 #include "ris/util/process_group.h"
 #include "ris/util/resource_guard.h"
+#include "sim/acquisition_frame.h"
 
 namespace ris {
 
@@ -42,11 +43,15 @@ void warn(const RunCallbacks& cb, const std::string& message) {
 
 // Whether to stream: asked for, or a scene raster too large for memory
 // (only its header is read to decide).
-bool should_stream(const RunRequest& r, const RunCallbacks& cb) {
+void check_block_lines(const RunRequest& r) {
   if (r.block_lines < 0) {
     throw InputError("", "--block-lines",
                      fmt::format("expected a positive number of lines, got {}", r.block_lines));
   }
+}
+
+bool should_stream(const RunRequest& r, const RunCallbacks& cb) {
+  check_block_lines(r);
   const bool is_raster = std::filesystem::path(r.scene_path).extension() != ".toml";
   if (r.stream || r.block_lines > 0) {
     if (r.scene != nullptr || !is_raster) {
@@ -215,6 +220,22 @@ void render_slar_run(RunResult& res, std::uint64_t seed) {
   }
 }
 
+// Whether an acquisition run streams: on request (--stream, --block-lines),
+// or when its window is over the in-memory run's cap and the run writes
+// products (as a scene too large for memory streams, should_stream).
+bool should_stream_acquisition(const RunRequest& r, const RunCallbacks& cb, const Acquisition& acq,
+                               const EllipsoidalDem& dem) {
+  check_block_lines(r);
+  if (r.stream || r.block_lines > 0) return true;
+  if (r.out_dir.empty()) return false;
+  const GridWindow w = detail::acquisition_frame(acq, dem, r.full_grid).window;
+  if (w.size() <= detail::kMaxInMemoryPixels) return false;
+  warn(cb, fmt::format("{}: a window of {} lines x {} bins is too large for an in-memory run; "
+                       "streaming it in blocks of azimuth lines",
+                       r.acquisition_path, w.lines, w.bins));
+  return true;
+}
+
 // The simulation on an acquisition's radar grid (ris/sim/acquisition_simulation.h).
 void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   if (!r.targets_path.empty() || (r.targets && !r.targets->empty())) {
@@ -251,7 +272,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
     o.land_cover_source = r.land_cover_path;
   }
   o.backscatter_file = sigma0.path;
-  if (r.stream || r.block_lines > 0) {  // in blocks of lines (ris/sim/acquisition_stream.h)
+  if (should_stream_acquisition(r, cb, acq, dem)) {  // ris/sim/acquisition_stream.h
     SlarStreamOptions so;
     so.block_lines = r.block_lines;
     so.quiet = r.quiet;
