@@ -159,6 +159,7 @@ void print_streamed(const RunRequest& r, const RunResult& res) {
     print_acquisition(r, res, s.sim);
     fmt::print("  streamed in {} blocks of {} lines\n", s.blocks, s.block_lines);
     print_stage_times(s);
+    for (const auto& [name, t] : s.cpu_parts) fmt::print("  {:.2f} s  {}\n", t, name);
     return;
   }
   fmt::print("simulated {} ({} x {} cells, streamed in {} blocks of {} lines) with {}\n",

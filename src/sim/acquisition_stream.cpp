@@ -1,7 +1,9 @@
 #include "ris/sim/acquisition_stream.h"
 
 #include <fmt/format.h>
+#include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 #include <memory>
@@ -178,10 +180,22 @@ class AcquisitionStream {
     SlarLineCounts counts;
     std::int64_t samples_in_swath = 0;
     const int blocks = (lines() + block_lines() - 1) / block_lines();
+    // This process's CPU time in the two halves of pass 1: what a rank
+    // computes, and what rank 0 alone does (as a scene's streamed run).
+    double compute_cpu = 0.0, consume_cpu = 0.0;
+    int computed = 0;
     detail::run_blocks_in_order<LineBlock>(
-        group_, blocks, schedule_, [&](int b) { return compute_block(b); }, detail::pack_line_block,
-        detail::unpack_line_block,
+        group_, blocks, schedule_,
+        [&](int b) {
+          const double t0 = detail::process_cpu_seconds();
+          LineBlock k = compute_block(b);
+          compute_cpu += detail::process_cpu_seconds() - t0;
+          ++computed;
+          return k;
+        },
+        detail::pack_line_block, detail::unpack_line_block,
         [&](int, LineBlock& k) {
+          const double t0 = detail::process_cpu_seconds();
           const int n = k.l1 - k.l0;
           counts.add(k.counts);
           samples_in_swath += k.prof.samples_in_swath;
@@ -192,6 +206,7 @@ class AcquisitionStream {
           bar_->advance(n);
           ++summary_.blocks;
           if (spare_.size() < 2) spare_.push_back(std::move(k));
+          consume_cpu += detail::process_cpu_seconds() - t0;
         });
     if (!root) {
       stage_done();
@@ -207,6 +222,11 @@ class AcquisitionStream {
     sinks->mask->close();
     sinks->layover_shadow->close();
     stage_done();
+    summary_.cpu_parts.emplace_back(
+        fmt::format("CPU of pass 1 on rank 0: {} of {} blocks computed", computed, blocks),
+        compute_cpu);
+    summary_.cpu_parts.emplace_back(
+        "CPU of pass 1 on rank 0: integration, fading, writing (every block)", consume_cpu);
   }
 
   // Block b's lines through the engine, on this rank: their range profiles,
@@ -231,10 +251,15 @@ class AcquisitionStream {
     run.local_incidence_deg = k.incidence.data();
     run.mask = k.scene_mask.data();
     run.maps_line0 = k.l0;
-    detail::run_line_blocks(
-        sim().geometry, s_.stages(), k.l0, k.l1, 16, k.prof, k.counts, [&](detail::LineScratch&) {
-          return detail::AcquisitionThreadSource{run, {}, {}, {}, {}, {}, {}, {}, {}};
-        });
+    // Lines handed to the threads a few at a time, so that a short block
+    // still keeps every thread busy (each line's profile row is its own:
+    // the bytes do not depend on it).
+    const int chunk = std::clamp((k.l1 - k.l0) / (4 * omp_get_max_threads()), 1, 16);
+    detail::run_line_blocks(sim().geometry, s_.stages(), k.l0, k.l1, chunk, k.prof, k.counts,
+                            [&](detail::LineScratch&) {
+                              return detail::AcquisitionThreadSource{run, {}, {}, {}, {},
+                                                                     {},  {}, {}, {}};
+                            });
     return k;
   }
 

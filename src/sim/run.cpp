@@ -285,6 +285,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
     summary.blocks = s.blocks;
     summary.stage_seconds = std::move(s.stage_seconds);
     summary.stage_cpu_seconds = std::move(s.stage_cpu_seconds);
+    summary.cpu_parts = std::move(s.cpu_parts);
     res.acquisition = std::make_shared<AcquisitionSimulation>(std::move(s.acquisition));
     // Once, by rank 0, in an MPI run (every rank sets up the same stages).
     if (process_group().rank() == 0)

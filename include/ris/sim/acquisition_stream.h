@@ -49,6 +49,7 @@ struct AcquisitionStreamSummary {
   // Wall and CPU time of each pass (name, seconds), as SlarStreamSummary.
   std::vector<std::pair<std::string, double>> stage_seconds;
   std::vector<double> stage_cpu_seconds;
+  std::vector<std::pair<std::string, double>> cpu_parts;  // pass 1 on rank 0
 };
 
 // Throws InputError as simulate_acquisition does (without its window cap),
