@@ -5,17 +5,25 @@
 # /usr/bin/time: wall, CPU (user + sys) and peak RSS per rank, rank 0's
 # passes, and a byte comparison of every product with the first run's.
 #
-#   bench/mpi_scaling.sh [BUILD_DIR] [SIZE]     (defaults: build, 6000)
+#   bench/mpi_scaling.sh [BUILD_DIR] [SIZE] [scene|acquisition]
+#                                  (defaults: build, 6000, scene)
 #
-# The scene: SIZE x SIZE cells of 5 m of seeded noise terrain (2 km relief,
+# scene: SIZE x SIZE cells of 5 m of seeded noise terrain (2 km relief,
 # five land-cover patches); the radar: the figure-4-5 SLAR with its sweep
-# stretched over the scene (docs/performance.md, "Streaming"). The machine
-# may be shared: compare CPU times, and wall times only when the load
-# average printed before each run is below ~0.5.
+# stretched over the scene (docs/performance.md, "Streaming").
+# acquisition: a run on an acquisition's grid (ris/sim/acquisition_stream.h):
+# the shipped airborne example (data/acquisitions/airborne-l-band-flight-
+# line.toml) with SIZE lines of 5.9 m and 4,000 range bins of 1.5 m, its
+# whole grid over the Winnipeg DEM of the tests; BLOCK_LINES=N in the
+# environment sets --block-lines. The machine may be shared: compare CPU
+# times, and wall times only when the load average printed before each run
+# is below ~0.5.
 set -euo pipefail
 build=${1:-build}
 size=${2:-6000}
+mode=${3:-scene}
 ris=$(realpath "$build/ris")
+root=$(realpath "$(dirname "$0")/..")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -25,6 +33,15 @@ cd "$work"
 mpirun_flags=(--oversubscribe --bind-to none)
 [ "$(id -u)" -eq 0 ] && mpirun_flags+=(--allow-run-as-root)
 
+if [ "$mode" = acquisition ]; then
+  sed -e "s/^lines = 500/lines = $size/" -e 's/^range_spacing = "6.25 m"/range_spacing = "1.5 m"/' \
+    -e 's/^bins = 600/bins = 4000/' "$root/data/acquisitions/airborne-l-band-flight-line.toml" \
+    > acq.toml
+  input=(-a acq.toml --dem "$root/tests/data/dem/winnipeg_dem.tif" --full-grid
+         ${BLOCK_LINES:+--block-lines "$BLOCK_LINES"})
+  cells=$((size * 4000))
+  echo "acquisition: ${size} lines x 4000 bins ($cells pixels)${BLOCK_LINES:+, blocks of $BLOCK_LINES lines}"
+else
 "$ris" scene fractal --generator noise --size "$size" --cell-size 5 --relief 2000 --hurst 0.8 \
   --seed 7 --patches 1,2,3,4,5 --patch-size 3000 -o scene.tif > /dev/null 2>&1
 python3 - "$((size * 5))" 2000 "$(dirname "$ris")/../data/radars/seed-fig4-5.toml" > radar.toml <<'PY'
@@ -40,12 +57,14 @@ print(src)
 PY
 [ -s radar.toml ] || { echo "no radar (data/radars/seed-fig4-5.toml beside the build?)" >&2; exit 1; }
 echo "scene: ${size} x ${size} cells ($((size * size)) cells), $(du -h scene.tif | cut -f1)"
+input=(--scene scene.tif --radar radar.toml)
+cells=$((size * size))
+fi
 
 # run NAME RANKS THREADS [SCHEDULE]
 run() {
   local name=$1 ranks=$2 threads=$3 schedule=${4:-dynamic}
-  local cmd=("$ris" simulate --quiet --threads "$threads" --stream --scene scene.tif
-             --radar radar.toml --out "out-$name")
+  local cmd=("$ris" simulate --quiet --threads "$threads" --stream "${input[@]}" --out "out-$name")
   echo
   echo "== $name: $ranks rank(s) x $threads thread(s)${4:+, $schedule}; load $(cut -d' ' -f1-3 /proc/loadavg)"
   if [ "$ranks" -eq 0 ]; then  # no mpirun
@@ -64,7 +83,7 @@ run() {
     cpu=$(echo "$cpu + $user + $sys" | bc)
   done
   printf '  all ranks: CPU %.2f s, %.1f ns per cell\n' "$cpu" \
-    "$(echo "$cpu * 1000000000 / ($size * $size)" | bc -l)"
+    "$(echo "$cpu * 1000000000 / $cells" | bc -l)"
   # The same bytes as the single-threaded single process (metadata.json
   # records the thread count, so the reference has the same).
   if [ "$name" != "1x1" ] && [ "$threads" -eq 1 ]; then
