@@ -2,7 +2,7 @@
 // the in-memory run's files, byte for byte, on the shipped NISAR-format
 // products (winnipeg.h5 with its DEM; SanAnd_138.h5 over its window of a
 // DEM), for SLAR and the incoherent SAR, on the ellipsoid and the flat
-// Earth, in blocks of 7, 16 and all lines and from the memory budget, on 1
+// Earth, with land cover, in blocks of 7, 16 and all lines and from the memory budget, on 1
 // and 2 threads; a failing block leaves no output.
 #include <gtest/gtest.h>
 
@@ -12,6 +12,10 @@
 
 #include "acquisition_paths.h"
 #include "folder_compare.h"
+#include "ris/io/ellipsoidal_dem.h"
+#include "ris/scene/geo_frame.h"
+#include "ris/scene/scene_io.h"
+#include "ris/util/units.h"
 #include "test_util.h"
 
 namespace ris {
@@ -60,6 +64,36 @@ TEST(StreamAcquisitionCli, WinnipegIncoherentSarOnTheFlatEarthStreamsAsInMemory)
 TEST(StreamAcquisitionCli, SanAndreasStreamsAsInMemory) {
   expect_streams_as_in_memory(
       "-a " + test::sanand_h5() + " --dem " + test::test_dem("SanAnd_dem.tif"), "San Andreas SLAR");
+}
+
+// Land cover (--land-cover): a scene in UTM over the Winnipeg DEM, category
+// 1 west of the DEM's centre and 2 east of it. Each streamed block reads its
+// window of the DEM and the categories on it; the categories over the whole
+// DEM (the radiometry's table) come from a pass in bands of rows.
+TEST(StreamAcquisitionCli, LandCoverStreamsAsInMemory) {
+  test::TempDir dir;
+  const EllipsoidalDem dem = read_ellipsoidal_dem(test::test_dem("winnipeg_dem.tif"));
+  const double lat_c = rad_to_deg(dem.lat0_rad + 0.5 * (dem.rows - 1) * dem.dlat_rad);
+  const double lon_c = rad_to_deg(dem.lon0_rad + 0.5 * (dem.cols - 1) * dem.dlon_rad);
+  Scene cover = Scene::flat(1000, 1000, 25.0, 0.0f, 1);
+  cover.crs_wkt = utm_wkt_for(lon_c, lat_c);
+  const auto [xc, yc] = GeoFrame(cover.crs_wkt, "test").scene_from_lonlat(lon_c, lat_c);
+  cover.origin_x_m = xc - 12500.0;
+  cover.origin_y_m = yc + 12500.0;
+  for (int r = 0; r < cover.rows; ++r)
+    for (int c = 500; c < cover.cols; ++c) cover.category[cover.index(r, c)] = 2;
+  const fs::path cover_tif = dir / "cover.tif";
+  write_scene_geotiff(cover, cover_tif);
+  expect_streams_as_in_memory(winnipeg() + " --land-cover " + cover_tif.string(),
+                              "Winnipeg SLAR, land cover");
+  // The cover changes the image (category 2 east of the centre).
+  for (const std::string& extra : {std::string(), " --land-cover " + cover_tif.string()}) {
+    const auto r = test::run_ris("simulate --quiet --products mean_power_slant " + winnipeg() +
+                                 extra + " --out " + (dir / (extra.empty() ? "a" : "b")).string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  EXPECT_NE(test::read_file(dir / "a" / "mean_power_slant.tif"),
+            test::read_file(dir / "b" / "mean_power_slant.tif"));
 }
 
 // A block that fails (RIS_FAIL_BLOCK) fails the run naming it; nothing is

@@ -236,8 +236,6 @@ LatLonBox grid_corner_box(const Acquisition& a, double height_m) {
 }
 
 GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem) {
-  const RadarGrid& g = acq.grid;
-  const Ellipsoid& e = acq.ellipsoid;
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
   for (float h : dem.height_m) {
     if (std::isfinite(h)) {
@@ -246,6 +244,15 @@ GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem) {
     }
   }
   if (!std::isfinite(lo)) return {};
+  return dem_window(acq, dem, lo, hi);
+}
+
+GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem, float lo, float hi) {
+  const RadarGrid& g = acq.grid;
+  const Ellipsoid& e = acq.ellipsoid;
+  if (!(std::isfinite(lo) && std::isfinite(hi))) return {};
+  // The file's whole grid (a window's origin is the file's).
+  const int rows = dem.all_rows(), cols = dem.all_cols();
   double l_min = 1e300, l_max = -1e300, b_min = 1e300, b_max = -1e300;
   const auto place = [&](int r, int c) {
     for (double h : {static_cast<double>(lo), static_cast<double>(hi)}) {
@@ -259,13 +266,13 @@ GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem) {
       b_max = std::max(b_max, b);
     }
   };
-  for (int c = 0; c < dem.cols; ++c) {
+  for (int c = 0; c < cols; ++c) {
     place(0, c);
-    place(dem.rows - 1, c);
+    place(rows - 1, c);
   }
-  for (int r = 0; r < dem.rows; ++r) {
+  for (int r = 0; r < rows; ++r) {
     place(r, 0);
-    place(r, dem.cols - 1);
+    place(r, cols - 1);
   }
   GridWindow w;
   const double l0 = std::max(0.0, std::floor(l_min) - 2.0);

@@ -17,6 +17,7 @@ namespace ris::detail {
 struct AcquisitionFrame {
   GridWindow window;                         // lines x bins of the grid simulated
   float dem_min_m = 0.0F, dem_max_m = 0.0F;  // heights with data
+  std::string dem_vertical_note;             // the whole DEM's (metadata.json)
   double sensor_height_m = 0.0;              // above the ellipsoid, mid-window
   double ground_azimuth_spacing_m = 0.0;     // line spacing on the terrain
 };
@@ -33,6 +34,10 @@ HeightRange dem_height_range(const EllipsoidalDem& dem);
 // Throws InputError naming the DEM when the window is empty.
 AcquisitionFrame acquisition_frame(const Acquisition& acq, const EllipsoidalDem& dem,
                                    bool full_grid);
+// The same from the file's grid and its summary (EllipsoidalDemFile: its
+// heights are never all held).
+AcquisitionFrame acquisition_frame(const Acquisition& acq, const EllipsoidalDem& grid,
+                                   const EllipsoidalDemSummary& summary, bool full_grid);
 
 // The in-memory run holds its layers and line profiles whole (about 90
 // bytes a pixel, as ris topo's layers).

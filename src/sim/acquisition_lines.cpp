@@ -20,10 +20,14 @@ ZeroDopplerFrame frame_of_line(const Acquisition& acq, int grid_line) {
 
 std::uint16_t AcquisitionRun::category_at(double lat_rad, double lon_rad) const {
   if (dem_category == nullptr) return category;
+  // The nearest posting of the file's grid, then its place in the held
+  // window (the whole DEM: the same).
   const long r = std::clamp(std::lround((lat_rad - dem.lat0_rad) / dem.dlat_rad), 0L,
-                            static_cast<long>(dem.rows - 1));
+                            static_cast<long>(dem.all_rows() - 1)) -
+                 dem.row0;
   const long c = std::clamp(std::lround((lon_rad - dem.lon0_rad) / dem.dlon_rad), 0L,
-                            static_cast<long>(dem.cols - 1));
+                            static_cast<long>(dem.all_cols() - 1)) -
+                 dem.col0;
   return dem_category[static_cast<std::size_t>(r) * static_cast<std::size_t>(dem.cols) +
                       static_cast<std::size_t>(c)];
 }
@@ -67,6 +71,48 @@ std::size_t acquisition_max_points(AcquisitionRun& run) {
     n = std::max(n, run.span_of_line(frame_of_line(run.acq, l)).points);
   }
   return n + n / 4 + 16;
+}
+
+DemRect dem_rect_of_lines(const AcquisitionRun& run, int line0, int line1) {
+  const Ellipsoid& e = run.acq.ellipsoid;
+  const EllipsoidalDem& dem = run.dem;
+  constexpr std::size_t kEvery = 8;  // profile points between samples
+  double r_lo = 1e300, r_hi = -1e300, c_lo = 1e300, c_hi = -1e300, gap = 0.0;
+  for (int line = line0; line < line1; ++line) {
+    const ZeroDopplerFrame f = frame_of_line(run.acq, run.window.line0 + line);
+    const ProfileSpan span = run.span_of_line(f);
+    const std::size_t n = span.points;
+    // As trace_terrain_profile places its points on the reference ellipsoid.
+    const double dlook = (span.look_hi_rad - span.look_lo_rad) / static_cast<double>(n - 1);
+    double r_prev = kNan, c_prev = kNan;
+    for (std::size_t k = 0; k < n; k = (k + 1 == n) ? n : std::min(k + kEvery, n - 1)) {
+      const double th = span.look_lo_rad + static_cast<double>(k) * dlook;
+      const double t = f.range_to_ellipsoid(th, e, span.height_ref_m);
+      if (!std::isfinite(t)) continue;
+      const Geodetic q = e.to_geodetic(f.point(t, th));
+      const double r = (q.lat_rad - dem.lat0_rad) / dem.dlat_rad;
+      const double c = (q.lon_rad - dem.lon0_rad) / dem.dlon_rad;
+      r_lo = std::min(r_lo, r);
+      r_hi = std::max(r_hi, r);
+      c_lo = std::min(c_lo, c);
+      c_hi = std::max(c_hi, c);
+      if (std::isfinite(r_prev)) gap = std::max({gap, std::abs(r - r_prev), std::abs(c - c_prev)});
+      r_prev = r;
+      c_prev = c;
+    }
+  }
+  if (r_lo > r_hi) return {};
+  // The slope's neighbours (one posting), the bilinear cell (one), the
+  // nearest posting and rounding (one), and the gaps between samples.
+  const double m = 3.0 + std::ceil(gap);
+  const double rows = dem.all_rows(), cols = dem.all_cols();
+  const double a = std::clamp(std::floor(r_lo) - m, 0.0, rows);
+  const double b = std::clamp(std::floor(r_hi) + 1.0 + m, -1.0, rows - 1.0);
+  const double ca = std::clamp(std::floor(c_lo) - m, 0.0, cols);
+  const double cb = std::clamp(std::floor(c_hi) + 1.0 + m, -1.0, cols - 1.0);
+  if (b < a || cb < ca) return {};
+  return {static_cast<int>(a), static_cast<int>(b - a) + 1, static_cast<int>(ca),
+          static_cast<int>(cb - ca) + 1};
 }
 
 LineSpan AcquisitionLineSource::load(int line, LineScratch& s) {

@@ -68,6 +68,18 @@ struct AcquisitionRun {
 // span's count at the window's first, middle and last lines, plus a margin.
 std::size_t acquisition_max_points(AcquisitionRun& run);
 
+// A rectangle of postings of the DEM's file grid.
+struct DemRect {
+  int row0 = 0, rows = 0, col0 = 0, cols = 0;
+};
+
+// The postings lines [line0, line1) of the window read (a streamed block's
+// DEM window): around every profile point's latitude/longitude (sampled
+// along each line's span; the margin covers the gaps between samples, the
+// slope's neighbours and the bilinear cell), on run.dem's file grid (its
+// heights are not read). Empty when no line meets the ellipsoid.
+DemRect dem_rect_of_lines(const AcquisitionRun& run, int line0, int line1);
+
 // One line's terrain and look geometry into the engine's scratch.
 struct AcquisitionLineSource {
   static constexpr bool kMakesGeometry = true;

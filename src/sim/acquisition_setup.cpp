@@ -22,26 +22,25 @@ constexpr double kLightSpeed_m_s = 299792458.0;
 // posting): the DEM's cell size in metres at its centre, no arrays.
 Scene dem_grid(const EllipsoidalDem& dem, const Ellipsoid& e) {
   Scene grid;
-  grid.rows = dem.rows;
-  grid.cols = dem.cols;
-  const double lat = dem.lat0_rad + 0.5 * (dem.rows - 1) * dem.dlat_rad;
+  grid.rows = dem.all_rows();
+  grid.cols = dem.all_cols();
+  const double lat = dem.lat0_rad + 0.5 * (grid.rows - 1) * dem.dlat_rad;
   grid.dx_m = std::abs(dem.dlon_rad) * e.prime_vertical_radius_m(lat) * std::cos(lat);
   grid.dy_m = std::abs(dem.dlat_rad) * e.meridional_radius_m(lat);
   return grid;
 }
 
-// The land cover's category at each DEM posting: the scene cell nearest
-// it (PROJ from latitude/longitude into the scene's CRS), or `fallback`
-// outside the scene and on its no-data cells. Serial, before the parallel
-// run: a point PROJ cannot transform throws here, naming the scene.
+}  // namespace
+
 std::vector<std::uint16_t> categories_on_dem(const EllipsoidalDem& dem, const Scene& scene,
                                              const std::string& source, std::uint16_t fallback) {
   const GeoFrame frame(scene.crs_wkt, source);
   std::vector<std::uint16_t> out(dem.height_m.size(), fallback);
   for (int r = 0; r < dem.rows; ++r) {
     for (int c = 0; c < dem.cols; ++c) {
-      const auto [x, y] = frame.scene_from_lonlat(rad_to_deg(dem.lon0_rad + c * dem.dlon_rad),
-                                                  rad_to_deg(dem.lat0_rad + r * dem.dlat_rad));
+      const auto [x, y] =
+          frame.scene_from_lonlat(rad_to_deg(dem.lon0_rad + (dem.col0 + c) * dem.dlon_rad),
+                                  rad_to_deg(dem.lat0_rad + (dem.row0 + r) * dem.dlat_rad));
       const auto [col_f, row_f] = scene.grid_from_world(x, y);
       const int sr = static_cast<int>(std::floor(row_f)), sc = static_cast<int>(std::floor(col_f));
       if (!scene.contains(sr, sc) || scene.valid[scene.index(sr, sc)] == 0) continue;
@@ -52,7 +51,11 @@ std::vector<std::uint16_t> categories_on_dem(const EllipsoidalDem& dem, const Sc
   return out;
 }
 
-}  // namespace
+std::vector<std::uint16_t> sorted_categories(std::vector<std::uint16_t> c) {
+  std::sort(c.begin(), c.end());
+  c.erase(std::unique(c.begin(), c.end()), c.end());
+  return c;
+}
 
 void check_acquisition_radar(const RadarParams& radar, const AcquisitionSimOptions& options) {
   if (radar.mode == RadarMode::ppi) {
@@ -73,7 +76,8 @@ void check_acquisition_radar(const RadarParams& radar, const AcquisitionSimOptio
 
 void set_up_acquisition(const Acquisition& acq, const EllipsoidalDem& dem, const RadarParams& radar,
                         const Sigma0Source& sigma0, const AcquisitionSimOptions& options,
-                        const AcquisitionFrame& frame, AcquisitionSetup& s) {
+                        const AcquisitionFrame& frame, AcquisitionSetup& s,
+                        const std::vector<std::uint16_t>* categories_used) {
   const RadarGrid& g = acq.grid;
   const GridWindow& w = frame.window;
   AcquisitionSimulation& out = s.out;
@@ -89,7 +93,7 @@ void set_up_acquisition(const Acquisition& acq, const EllipsoidalDem& dem, const
   out.grid = g;
   out.acquisition_notes = acq.notes;
   out.dem_source = dem.source;
-  out.dem_vertical_note = dem.vertical_note;
+  out.dem_vertical_note = frame.dem_vertical_note;
   out.dem_min_m = frame.dem_min_m;
   out.dem_max_m = frame.dem_max_m;
 
@@ -105,12 +109,14 @@ void set_up_acquisition(const Acquisition& acq, const EllipsoidalDem& dem, const
   AcquisitionRun& run = *s.run;
   std::vector<std::uint16_t> categories{options.category};
   if (options.land_cover != nullptr) {
-    s.dem_category =
-        categories_on_dem(dem, *options.land_cover, options.land_cover_source, options.category);
-    categories = s.dem_category;
-    std::sort(categories.begin(), categories.end());
-    categories.erase(std::unique(categories.begin(), categories.end()), categories.end());
-    run.dem_category = s.dem_category.data();
+    if (categories_used != nullptr) {  // the DEM read in windows later
+      categories = *categories_used;
+    } else {
+      s.dem_category =
+          categories_on_dem(dem, *options.land_cover, options.land_cover_source, options.category);
+      categories = sorted_categories(s.dem_category);
+      run.dem_category = s.dem_category.data();
+    }
     out.land_cover_source = options.land_cover_source;
   }
   out.profile_points = acquisition_max_points(run);

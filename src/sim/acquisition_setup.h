@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "ris/backscatter/sigma0_source.h"
@@ -47,10 +48,25 @@ struct AcquisitionSetup {
 // coherent SAR radar, fewer than one profile point per bin (InputError).
 void check_acquisition_radar(const RadarParams& radar, const AcquisitionSimOptions& options);
 
-// Throws InputError for a category the backscatter source lacks.
+// Throws InputError for a category the backscatter source lacks. dem: the
+// whole DEM, or (a streamed run) its grid alone with categories_used, the
+// land cover's categories over the whole DEM (sorted, unique); the run's
+// dem_category is then the caller's, block by block.
 void set_up_acquisition(const Acquisition& acq, const EllipsoidalDem& dem, const RadarParams& radar,
                         const Sigma0Source& sigma0, const AcquisitionSimOptions& options,
-                        const AcquisitionFrame& frame, AcquisitionSetup& s);
+                        const AcquisitionFrame& frame, AcquisitionSetup& s,
+                        const std::vector<std::uint16_t>* categories_used = nullptr);
+
+// The land cover's category at each posting the DEM holds (a window's
+// too): the scene cell nearest it (PROJ from latitude/longitude into the
+// scene's CRS), or `fallback` outside the scene and on its no-data cells.
+// Serial, before the parallel run: a point PROJ cannot transform throws
+// here, naming the scene.
+std::vector<std::uint16_t> categories_on_dem(const EllipsoidalDem& dem, const Scene& scene,
+                                             const std::string& source, std::uint16_t fallback);
+
+// The distinct values, sorted.
+std::vector<std::uint16_t> sorted_categories(std::vector<std::uint16_t> c);
 
 // The ground-range presentation over the flat Earth at the DEM's mid height
 // (render_slar's ground_range picture), once the image's range and line

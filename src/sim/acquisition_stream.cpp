@@ -45,14 +45,19 @@ constexpr std::int64_t kBytesPerBin = 72 + 5;
 // byte a pixel each). Compressed they take less (Winnipeg's: 12).
 constexpr std::int64_t kProductBytesPerPixel = 16;
 
+// DEM rows read at a time by the passes over the whole DEM.
+constexpr int kDemBandRows = 256;
+
 // The run's state and its passes, in the order run() calls them.
 class AcquisitionStream {
  public:
-  AcquisitionStream(const Acquisition& acq, const EllipsoidalDem& dem, const RadarParams& radar,
+  AcquisitionStream(const Acquisition& acq, const EllipsoidalDemFile& dem, const RadarParams& radar,
                     const Sigma0Source& sigma0, const AcquisitionSimOptions& options,
                     const SlarRunInfo& info, const std::filesystem::path& out_dir,
                     const SlarStreamOptions& stream)
-      : schedule_(detail::block_schedule_from_environment()),
+      : dem_(dem),
+        options_(options),
+        schedule_(detail::block_schedule_from_environment()),
         fail_block_(detail::failing_block_from_environment("RIS_FAIL_BLOCK")),
         info_(info),
         out_dir_(out_dir),
@@ -63,14 +68,20 @@ class AcquisitionStream {
     }
     // Every rank sets the same run up (the inputs are read by each).
     detail::check_acquisition_radar(radar, options);
-    const detail::AcquisitionFrame frame = detail::acquisition_frame(acq, dem, options.full_grid);
+    // The DEM's heights in bands of rows, never all held: their range and
+    // the land cover's categories over the whole DEM.
+    const detail::AcquisitionFrame frame =
+        detail::acquisition_frame(acq, dem.grid(), dem.summarise(kDemBandRows), options.full_grid);
     // Room for the products, before any work (the window has no cap).
     const GridWindow& w = frame.window;
     require_disk(checked_mul(checked_mul(w.lines, w.bins, acq.source, ""), kProductBytesPerPixel,
                              acq.source, ""),
                  out_dir, acq.source, "--out",
                  fmt::format("the products of a {} x {} pixel window", w.lines, w.bins));
-    detail::set_up_acquisition(acq, dem, radar, sigma0, options, frame, s_);
+    std::vector<std::uint16_t> categories;
+    if (options.land_cover != nullptr) categories = land_cover_categories();
+    detail::set_up_acquisition(acq, dem.grid(), radar, sigma0, options, frame, s_,
+                               options.land_cover != nullptr ? &categories : nullptr);
     SlarImage& img = sim().image;
     img.lines = lines();
     img.bins = bins();
@@ -247,10 +258,30 @@ class AcquisitionStream {
     k.prof.samples_in_swath = 0;
     k.incidence.resize(sz(k.l1 - k.l0) * sz(bins()));
     k.scene_mask.resize(k.incidence.size());
-    detail::AcquisitionRun run = *s_.run;
-    run.local_incidence_deg = k.incidence.data();
-    run.mask = k.scene_mask.data();
-    run.maps_line0 = k.l0;
+    // The block's window of the DEM (and of the land cover on it), read
+    // by this rank; the run as the set-up made it, on that window.
+    const detail::AcquisitionRun& base = *s_.run;
+    const detail::DemRect rect = detail::dem_rect_of_lines(base, k.l0, k.l1);
+    const EllipsoidalDem dem = dem_.read(rect.row0, rect.rows, rect.col0, rect.cols);
+    std::vector<std::uint16_t> land;
+    if (options_.land_cover != nullptr) {
+      land = detail::categories_on_dem(dem, *options_.land_cover, options_.land_cover_source,
+                                       options_.category);
+    }
+    detail::AcquisitionRun run{base.acq,
+                               dem,
+                               base.window,
+                               base.earth,
+                               base.category,
+                               options_.land_cover != nullptr ? land.data() : nullptr,
+                               base.dem_min_m,
+                               base.dem_max_m,
+                               base.samples_per_bin,
+                               base.max_points,
+                               base.layout,
+                               k.incidence.data(),
+                               k.scene_mask.data(),
+                               k.l0};
     // Lines handed to the threads a few at a time, so that a short block
     // still keeps every thread busy (each line's profile row is its own:
     // the bytes do not depend on it).
@@ -291,6 +322,25 @@ class AcquisitionStream {
     return median;
   }
 
+  // The land cover's categories over the whole DEM (sorted, unique), the
+  // DEM read in bands of rows (the radiometry's table needs them all).
+  std::vector<std::uint16_t> land_cover_categories() const {
+    std::vector<std::uint8_t> seen(65536, 0);
+    const EllipsoidalDem& g = dem_.grid();
+    for (int r0 = 0; r0 < g.rows; r0 += kDemBandRows) {
+      const EllipsoidalDem band = dem_.read(r0, std::min(kDemBandRows, g.rows - r0), 0, g.cols);
+      for (std::uint16_t c : detail::categories_on_dem(
+               band, *options_.land_cover, options_.land_cover_source, options_.category))
+        seen[c] = 1;
+    }
+    std::vector<std::uint16_t> out;
+    for (std::size_t c = 0; c < seen.size(); ++c)
+      if (seen[c]) out.push_back(static_cast<std::uint16_t>(c));
+    return out;
+  }
+
+  const EllipsoidalDemFile& dem_;
+  const AcquisitionSimOptions& options_;
   ProcessGroup& group_ = process_group();
   const detail::BlockSchedule schedule_;
   const int fail_block_;  // RIS_FAIL_BLOCK, -1: none
@@ -314,7 +364,7 @@ class AcquisitionStream {
 }  // namespace
 
 AcquisitionStreamSummary simulate_acquisition_streamed(
-    const Acquisition& acq, const EllipsoidalDem& dem, const RadarParams& radar,
+    const Acquisition& acq, const EllipsoidalDemFile& dem, const RadarParams& radar,
     const Sigma0Source& sigma0, const AcquisitionSimOptions& options, const SlarRunInfo& info,
     const std::filesystem::path& out_dir, const SlarStreamOptions& stream) {
   bound_gdal_cache(std::int64_t(256) << 20);  // as a scene's streamed run

@@ -222,17 +222,21 @@ void render_slar_run(RunResult& res, std::uint64_t seed) {
 
 // Whether an acquisition run streams: on request (--stream, --block-lines),
 // or when its window is over the in-memory run's cap and the run writes
-// products (as a scene too large for memory streams, should_stream).
+// products (as a scene too large for memory streams, should_stream). An
+// in-memory run's DEM is read whole into `dem`; a streamed run reads it in
+// windows.
 bool should_stream_acquisition(const RunRequest& r, const RunCallbacks& cb, const Acquisition& acq,
-                               const EllipsoidalDem& dem) {
+                               const EllipsoidalDemFile& file, std::optional<EllipsoidalDem>& dem) {
   check_block_lines(r);
   if (r.stream || r.block_lines > 0) return true;
+  dem = file.read(0, file.grid().rows, 0, file.grid().cols);
   if (r.out_dir.empty()) return false;
-  const GridWindow w = detail::acquisition_frame(acq, dem, r.full_grid).window;
+  const GridWindow w = detail::acquisition_frame(acq, *dem, r.full_grid).window;
   if (w.size() <= detail::kMaxInMemoryPixels) return false;
   warn(cb, fmt::format("{}: a window of {} lines x {} bins is too large for an in-memory run; "
                        "streaming it in blocks of azimuth lines",
                        r.acquisition_path, w.lines, w.bins));
+  dem.reset();
   return true;
 }
 
@@ -252,7 +256,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   check_product_selection(r.products, acquisition_product_stems(), "--products");
   const Acquisition acq = read_acquisition(r.acquisition_path, r.acquisition);
   require_regular_input(r.dem_path, "--dem");
-  const EllipsoidalDem dem = read_ellipsoidal_dem(r.dem_path);
+  const EllipsoidalDemFile dem_file(r.dem_path);  // its grid: the heights are read below
   if (!r.out_dir.empty()) {  // checked before any work, as a scene run's (check_out_dir)
     std::vector<std::string> stems{"metadata"};
     for (std::string_view s : acquisition_product_stems()) stems.emplace_back(s);
@@ -272,12 +276,13 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
     o.land_cover_source = r.land_cover_path;
   }
   o.backscatter_file = sigma0.path;
-  if (should_stream_acquisition(r, cb, acq, dem)) {  // ris/sim/acquisition_stream.h
+  std::optional<EllipsoidalDem> dem;
+  if (should_stream_acquisition(r, cb, acq, dem_file, dem)) {  // ris/sim/acquisition_stream.h
     SlarStreamOptions so;
     so.block_lines = r.block_lines;
     so.quiet = r.quiet;
-    AcquisitionStreamSummary s = simulate_acquisition_streamed(acq, dem, res.radar, *sigma0.source,
-                                                               o, res.info, r.out_dir, so);
+    AcquisitionStreamSummary s = simulate_acquisition_streamed(
+        acq, dem_file, res.radar, *sigma0.source, o, res.info, r.out_dir, so);
     res.kind = RunKind::streamed;
     SlarStreamSummary& summary = res.streamed.emplace();
     summary.sim = s.acquisition.sim;
@@ -294,7 +299,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   }
   if (cb.progress) cb.progress("geometry + image formation on the acquisition's grid", 0.1);
   auto a = std::make_shared<AcquisitionSimulation>(
-      simulate_acquisition(acq, dem, res.radar, *sigma0.source, o));
+      simulate_acquisition(acq, *dem, res.radar, *sigma0.source, o));
   res.kind = res.radar.mode == RadarMode::sar ? RunKind::sar : RunKind::slar;
   res.slar = std::move(a->sim);
   res.acquisition = std::move(a);

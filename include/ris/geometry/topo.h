@@ -99,6 +99,9 @@ std::size_t topo_radar_line(const Acquisition& acq, const EllipsoidalDem& dem,
 // DEM's outline at its lowest and highest heights, widened by two pixels),
 // clipped to the grid; empty (lines = 0) when they do not overlap.
 GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem);
+// The same for heights in [lo, hi] (the DEM's range, summarised without
+// holding its heights: dem may be a window or the file's grid alone).
+GridWindow dem_window(const Acquisition& acq, const EllipsoidalDem& dem, float lo, float hi);
 
 // The latitude/longitude box (radians) of the grid's four corner pixels on
 // the ellipsoid raised to height_m (rdr2geo), e.g. for a DEM that covers

@@ -7,10 +7,13 @@
 // (simulate_acquisition + render_slar + write_acquisition_products; tested),
 // and the window has no 50 M-pixel cap.
 //
-// Memory: the DEM (and land cover) whole, as the in-memory run; per block
-// of B lines, B x bins range profiles and radar-grid layers, the azimuth
-// integrator's running sums, one profile's scratch per thread and one
-// strip of tiles per output file. The block length comes from
+// Memory: per block of B lines, B x bins range profiles and radar-grid
+// layers, the DEM's postings under the block's lines (read as a window of
+// the file, and the land cover on them), the azimuth integrator's running
+// sums, one profile's scratch per thread and one strip of tiles per output
+// file. The DEM is never held whole: its height range, vertical datum and
+// land-cover categories come from a pass over it in bands of rows. The
+// land cover (a ris scene) is held whole. The block length comes from
 // SlarStreamOptions (block_lines, or the memory budget).
 //
 // Passes: 1 lines in blocks (terrain profiles, image formation, the
@@ -21,19 +24,22 @@
 // scene's streamed run).
 //
 // Under MPI (`mpirun -np N ris simulate --acquisition P --dem D --stream`)
-// every rank reads the inputs and sets the run up itself; the blocks of
+// every rank reads the inputs and sets the run up itself, and reads the DEM
+// windows of the blocks it computes; the blocks of
 // passes 1 and 2 are computed on any rank (src/sim/block_schedule.h) and
 // consumed by rank 0 in line order, which writes every file: the products
 // are the single process's bytes.
 //
 // Example:
 //   ris::SlarStreamOptions s;  s.block_lines = 256;
+//   ris::EllipsoidalDemFile dem("winnipeg_dem.tif");
 //   ris::AcquisitionStreamSummary r =
 //       ris::simulate_acquisition_streamed(acq, dem, radar, *sigma0, {}, info, "out", s);
 #pragma once
 
 #include <filesystem>
 
+#include "ris/io/ellipsoidal_dem.h"
 #include "ris/sim/acquisition_simulation.h"
 #include "ris/sim/run_info.h"
 #include "ris/sim/slar_stream.h"
@@ -55,7 +61,7 @@ struct AcquisitionStreamSummary {
 // Throws InputError as simulate_acquisition does (without its window cap),
 // and for point targets in `stream` (not placed on an acquisition's grid).
 AcquisitionStreamSummary simulate_acquisition_streamed(
-    const Acquisition& acq, const EllipsoidalDem& dem, const RadarParams& radar,
+    const Acquisition& acq, const EllipsoidalDemFile& dem, const RadarParams& radar,
     const Sigma0Source& sigma0, const AcquisitionSimOptions& options, const SlarRunInfo& info,
     const std::filesystem::path& out_dir, const SlarStreamOptions& stream = {});
 
