@@ -229,15 +229,19 @@ bool should_stream_acquisition(const RunRequest& r, const RunCallbacks& cb, cons
                                const EllipsoidalDemFile& file, std::optional<EllipsoidalDem>& dem) {
   check_block_lines(r);
   if (r.stream || r.block_lines > 0) return true;
+  if (!r.out_dir.empty()) {
+    // The window from the DEM read in bands (never whole: it may not fit).
+    const GridWindow w =
+        detail::acquisition_frame(acq, file.grid(), file.summarise(256), r.full_grid).window;
+    if (w.size() > detail::kMaxInMemoryPixels) {
+      warn(cb, fmt::format("{}: a window of {} lines x {} bins is too large for an in-memory run; "
+                           "streaming it in blocks of azimuth lines",
+                           r.acquisition_path, w.lines, w.bins));
+      return true;
+    }
+  }
   dem = file.read(0, file.grid().rows, 0, file.grid().cols);
-  if (r.out_dir.empty()) return false;
-  const GridWindow w = detail::acquisition_frame(acq, *dem, r.full_grid).window;
-  if (w.size() <= detail::kMaxInMemoryPixels) return false;
-  warn(cb, fmt::format("{}: a window of {} lines x {} bins is too large for an in-memory run; "
-                       "streaming it in blocks of azimuth lines",
-                       r.acquisition_path, w.lines, w.bins));
-  dem.reset();
-  return true;
+  return false;
 }
 
 // The simulation on an acquisition's radar grid (ris/sim/acquisition_simulation.h).
