@@ -8,6 +8,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include "ris/io/gdal_util.h"
 #include "ris/util/error.h"
@@ -29,6 +30,8 @@ double EllipsoidalDem::mean_height_m() const {
 
 // The open file and what converting its heights needs.
 struct EllipsoidalDemFile::Impl {
+  explicit Impl(GdalDataset d) : ds(std::move(d)) {}
+
   GdalDataset ds;
   std::array<double, 6> gt{};
   OGRSpatialReference srs;
@@ -108,7 +111,7 @@ struct EllipsoidalDemFile::Impl {
 };
 
 EllipsoidalDemFile::EllipsoidalDemFile(const std::filesystem::path& path)
-    : impl_(std::make_unique<Impl>(Impl{open_raster(path.string())})) {
+    : impl_(std::make_unique<Impl>(open_raster(path.string()))) {
   const std::string file = path.string();
   GDALDatasetH h = handle(impl_->ds);
   EllipsoidalDem& dem = grid_;
