@@ -419,8 +419,9 @@ TEST(MpiCli, AFailingRankFailsTheRunWithoutOutput) {
 }
 
 // An acquisition run streamed (ris/sim/acquisition_stream.h): over 1, 2 and
-// 3 ranks, both schedules, the single process's bytes; over 2 ranks
-// without --stream it is refused naming --stream, and nothing is written.
+// 3 ranks, both schedules, the single process's bytes; a block failing on
+// rank 1 fails the run; over 2 ranks without --stream it is refused naming
+// --stream. Neither writes anything.
 TEST(MpiCli, AcquisitionRunGivesSingleProcessBytes) {
   RIS_REQUIRE_MPI();
   test::TempDir dir;
@@ -439,6 +440,14 @@ TEST(MpiCli, AcquisitionRunGivesSingleProcessBytes) {
       expect_same_files(dir / "one", out, t, 8);
     }
   }
+  // A block failing on rank 1 (interleaved: odd blocks are rank 1's) fails
+  // the whole run, naming it, and leaves no output.
+  test::TempDir failed;
+  const auto f = run_shell(mpirun(2, "RIS_MPI_SCHEDULE=interleaved RIS_FAIL_BLOCK=3") +
+                           test::ris_exe() + args + " --out " + (failed / "out").string());
+  EXPECT_NE(f.exit_code, 0) << f.output;
+  EXPECT_NE(f.output.find("RIS_FAIL_BLOCK"), std::string::npos) << f.output;
+  expect_nothing_written(failed, "an acquisition with a failing block");
   test::TempDir none;
   const auto r = run_shell(mpirun(2) + test::ris_exe() + " simulate --quiet -a " +
                            test::winnipeg_h5() + " --dem " + test::test_dem("winnipeg_dem.tif") +
