@@ -243,17 +243,7 @@ class AcquisitionStream {
   // Block b's lines through the engine, on this rank: their range profiles,
   // counts and radar-grid layers (lines x bins).
   LineBlock compute_block(int b) {
-    LineBlock k;
-    if (!spare_.empty()) {  // buffers reused
-      k = std::move(spare_.back());
-      spare_.pop_back();
-    }
-    if (b == fail_block_) {
-      throw std::runtime_error(fmt::format("block {}: a failure injected by RIS_FAIL_BLOCK", b));
-    }
-    k.l0 = b * block_lines();
-    k.l1 = std::min(lines(), k.l0 + block_lines());
-    k.counts = SlarLineCounts();
+    LineBlock k = detail::start_line_block(b, block_lines(), lines(), fail_block_, spare_);
     k.prof.allocate(k.l1 - k.l0, bins(), k.l0);
     k.prof.samples_in_swath = 0;
     k.incidence.resize(sz(k.l1 - k.l0) * sz(bins()));

@@ -37,6 +37,7 @@
 #include "ris/util/rank_select.h"
 #include "sim/block_schedule.h"
 #include "sim/ppi_ray_targets.h"
+#include "sim/slant_stream_passes.h"
 #include "sim/slar_line_stages.h"
 #include "sim/slar_stream_targets.h"
 #include "sim/texel_window.h"
@@ -46,9 +47,11 @@ namespace ris {
 using detail::CellBox;
 using detail::padded_box;
 using detail::read_texel_window;
+using detail::read_window;
 using detail::sample_cells;
 using detail::sample_from_window;
 using detail::TexelWindow;
+using detail::valid_power;
 
 namespace {
 
@@ -59,21 +62,6 @@ constexpr int kScopeStripRows = 256;
 
 std::size_t sz(std::int64_t n) {
   return static_cast<std::size_t>(n);
-}
-
-// A window of band 1: rows [row0, row0 + rows) x columns [col0, col0 + cols).
-template <typename T>
-void read_window(GDALDatasetH ds, int row0, int rows, int col0, int cols, T* out, GDALDataType type,
-                 const std::string& path) {
-  if (GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Read, col0, row0, cols, rows, out, cols, rows, type,
-                   0, 0) != CE_None) {
-    throw InputError(path, "", "cannot read back: " + last_gdal_error());
-  }
-}
-
-// A pixel counted by the auto greytone reference (ris/image/greytone.h).
-inline bool valid_power(float p, std::uint8_t mask) {
-  return std::isfinite(p) && p > 0.0f && !(mask & pixel_flag::kNoData);
 }
 
 // The exact median's ranks and value (make_greytone_map's median of the

@@ -1,11 +1,14 @@
 #include "sim/slant_stream_passes.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "ris/image/ground_range.h"
 #include "ris/io/compression_preset.h"
@@ -174,6 +177,22 @@ void pack_line_block(const StreamLineBlock& k, std::vector<char>& out) {
   put(k.incidence.data(), nm * sizeof(float));
   pack_block_targets(k.targets, out);
   pack_coherent_block(k.coherent, out);
+}
+
+StreamLineBlock start_line_block(int b, int block_lines, int lines, int fail_block,
+                                 std::vector<StreamLineBlock>& spare) {
+  StreamLineBlock k;
+  if (!spare.empty()) {  // buffers reused
+    k = std::move(spare.back());
+    spare.pop_back();
+  }
+  if (b == fail_block) {
+    throw std::runtime_error(fmt::format("block {}: a failure injected by RIS_FAIL_BLOCK", b));
+  }
+  k.l0 = b * block_lines;
+  k.l1 = std::min(lines, k.l0 + block_lines);
+  k.counts = SlarLineCounts();
+  return k;
 }
 
 StreamLineBlock unpack_line_block(const char* p, std::size_t n) {

@@ -102,6 +102,11 @@ struct StreamLineBlock {
   CoherentBlock coherent;  // the coherent SAR's intensity
 };
 void pack_line_block(const StreamLineBlock& k, std::vector<char>& out);
+// Block b's lines [l0, l1) of `lines` in blocks of block_lines, its counts
+// cleared, in a consumed block's buffers when `spare` has one. Throws at
+// b == fail_block (RIS_FAIL_BLOCK: a failure injected for the tests).
+StreamLineBlock start_line_block(int b, int block_lines, int lines, int fail_block,
+                                 std::vector<StreamLineBlock>& spare);
 StreamLineBlock unpack_line_block(const char* p, std::size_t n);
 
 // The n image lines the integrator has ready (n = az.lines_ready() > 0):

@@ -621,18 +621,7 @@ class StreamRun {
 
   // Block b's lines and a block's buffers (a consumed block's, reused).
   LineBlock start_block(int b) {
-    LineBlock k;
-    if (!spare_.empty()) {  // buffers reused
-      k = std::move(spare_.back());
-      spare_.pop_back();
-    }
-    if (b == fail_block_) {
-      throw std::runtime_error(fmt::format("block {}: a failure injected by RIS_FAIL_BLOCK", b));
-    }
-    k.l0 = b * block_lines();
-    k.l1 = std::min(lines(), k.l0 + block_lines());
-    k.counts = SlarLineCounts();
-    return k;
+    return detail::start_line_block(b, block_lines(), lines(), fail_block_, spare_);
   }
 
   // Block b of a track off the axes (slar_stream_oblique.h): its profile
