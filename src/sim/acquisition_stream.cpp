@@ -99,7 +99,9 @@ class AcquisitionStream {
     bar_.emplace("simulate (streamed)", lines(), "lines", stream_.quiet || !root);
     if (root) dir_.emplace(out_dir_);
     lines_pass();
-    const double median = root ? median_mean_power() : 0.0;
+    const double median =
+        root ? detail::median_mean_power_pass(passes(), power_, radar().reference.automatic, clock_)
+             : 0.0;
     const auto [median_all, slant_dir] =
         detail::share_from_rank0(group_, median, root ? dir_->path("").string() : std::string());
     const GreytoneMap map = make_greytone_map_for_median(radar(), median_all);
@@ -136,17 +138,8 @@ class AcquisitionStream {
   int bins() const { return s_.out.window.bins; }
   int block_lines() const { return summary_.block_lines; }
 
-  void stage(const std::string& name) {
-    summary_.stage_seconds.emplace_back(name, 0.0);
-    cpu_mark_ = detail::process_cpu_seconds();
-    bar_->set_stage(name);
-    mark_ = std::chrono::steady_clock::now();
-  }
-  void stage_done() {
-    summary_.stage_seconds.back().second =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - mark_).count();
-    summary_.stage_cpu_seconds.push_back(detail::process_cpu_seconds() - cpu_mark_);
-  }
+  void stage(const std::string& name) { clock_.start(name, *bar_); }
+  void stage_done() { clock_.done(); }
 
   detail::SlantImagePasses passes() {
     return {group_,        schedule_,
@@ -301,17 +294,6 @@ class AcquisitionStream {
     sinks.mask->write(mask_.data(), n);
   }
 
-  // ---- Pass 1b: the median mean power (auto greytone reference) ---------
-  double median_mean_power() {
-    const std::uint64_t n_power = power_.total();
-    if (!(radar().reference.automatic && n_power > 0))
-      return std::numeric_limits<double>::quiet_NaN();
-    stage("median mean power (pass 1b)");
-    const double median = detail::median_mean_power_pass(passes(), power_, n_power);
-    stage_done();
-    return median;
-  }
-
   // The land cover's categories over the whole DEM (sorted, unique), the
   // DEM read in bands of rows (the radiometry's table needs them all).
   std::vector<std::uint16_t> land_cover_categories() const {
@@ -342,8 +324,7 @@ class AcquisitionStream {
   // Made when run() starts: a refused run shows no bar and stages no folder.
   std::optional<ProgressBar> bar_;
   std::optional<StagedDirectory> dir_;
-  std::chrono::steady_clock::time_point mark_;
-  double cpu_mark_ = 0.0;
+  detail::StageClock clock_{summary_.stage_seconds, summary_.stage_cpu_seconds};
   std::vector<double> looks_;
   FloatRankSelect power_;         // the median mean power's two passes
   std::vector<LineBlock> spare_;  // consumed blocks, their buffers reused

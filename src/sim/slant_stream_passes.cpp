@@ -6,6 +6,7 @@
 #include <array>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -260,8 +261,24 @@ void count_and_blank_no_data(const SlarImage& block, const std::vector<std::uint
   }
 }
 
-double median_mean_power_pass(const SlantImagePasses& p, FloatRankSelect& power,
-                              std::uint64_t n_power) {
+void StageClock::start(const std::string& name, ProgressBar& bar) {
+  seconds_.emplace_back(name, 0.0);
+  cpu_mark_ = process_cpu_seconds();
+  bar.set_stage(name);
+  mark_ = std::chrono::steady_clock::now();
+}
+
+void StageClock::done() {
+  seconds_.back().second =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - mark_).count();
+  cpu_.push_back(process_cpu_seconds() - cpu_mark_);
+}
+
+double median_mean_power_pass(const SlantImagePasses& p, FloatRankSelect& power, bool automatic,
+                              StageClock& clock) {
+  const std::uint64_t n_power = power.total();
+  if (!(automatic && n_power > 0)) return std::numeric_limits<double>::quiet_NaN();
+  clock.start("median mean power (pass 1b)", *p.bar);
   power.select(median_ranks(n_power, true));
   const int lines = p.sim.image.lines, bins = p.sim.image.bins;
   GdalDataset mean_ds = open_raster(p.dir->path("mean_power_slant.tif").string());
@@ -278,7 +295,9 @@ double median_mean_power_pass(const SlantImagePasses& p, FloatRankSelect& power,
     for (std::size_t i = 0; i < np; ++i)
       if (valid_power(mean[i], mask[i])) power.refine(mean[i]);
   }
-  return median_value(power, n_power, true);
+  const double median = median_value(power, n_power, true);
+  clock.done();
+  return median;
 }
 
 void pictures_pass(const SlantImagePasses& p, const GreytoneMap& map,

@@ -12,6 +12,7 @@
 #include <gdal.h>
 #include <time.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -139,10 +140,27 @@ struct SlantImagePasses {
   RasterMetadata extra_metadata;
 };
 
+// Each pass's wall and CPU time (into a stream's summary) and the progress
+// bar's stage name.
+class StageClock {
+ public:
+  StageClock(std::vector<std::pair<std::string, double>>& seconds, std::vector<double>& cpu)
+      : seconds_(seconds), cpu_(cpu) {}
+  void start(const std::string& name, ProgressBar& bar);
+  void done();
+
+ private:
+  std::vector<std::pair<std::string, double>>& seconds_;
+  std::vector<double>& cpu_;
+  std::chrono::steady_clock::time_point mark_;
+  double cpu_mark_ = 0.0;
+};
+
 // Pass 1b on rank 0: the median of the `power` counted in pass 1, refined
-// over mean_power_slant.tif read back (n_power > 0 values).
-double median_mean_power_pass(const SlantImagePasses& p, FloatRankSelect& power,
-                              std::uint64_t n_power);
+// over mean_power_slant.tif read back, timed as a stage of its own; NaN
+// (no pass) unless the reference is automatic and some pixel counted.
+double median_mean_power_pass(const SlantImagePasses& p, FloatRankSelect& power, bool automatic,
+                              StageClock& clock);
 
 // Pass 2: the greytones (map) of the speckled power in slant_dir, computed
 // in blocks on every rank, written by rank 0: a tiled GeoTIFF when too

@@ -287,7 +287,9 @@ class StreamRun {
     lines_pass();
     // Rank 0's median mean power (pass 1b) and the folder holding the slant
     // products, for every rank's share of the geocoding.
-    const double median = root ? median_mean_power() : 0.0;
+    const double median =
+        root ? detail::median_mean_power_pass(passes(), power_, radar().reference.automatic, clock_)
+             : 0.0;
     const auto [median_all, slant_dir] =
         share_from_rank0(median, root ? dir_->path("").string() : std::string());
     const GreytoneMap map = make_greytone_map_for_median(picture_radar(), median_all);
@@ -338,17 +340,8 @@ class StreamRun {
     return r;
   }
 
-  void stage(const std::string& name) {
-    summary_.stage_seconds.emplace_back(name, 0.0);
-    cpu_mark_ = process_cpu_seconds();
-    bar_->set_stage(name);
-    mark_ = std::chrono::steady_clock::now();
-  }
-  void stage_done() {
-    summary_.stage_seconds.back().second =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - mark_).count();
-    summary_.stage_cpu_seconds.push_back(process_cpu_seconds() - cpu_mark_);
-  }
+  void stage(const std::string& name) { clock_.start(name, *bar_); }
+  void stage_done() { clock_.done(); }
 
   // What the stream runs (SLAR and SAR: along a grid axis the direct line
   // engine, off the axes slar_stream_oblique.h; the coherent SAR's blocks
@@ -846,17 +839,6 @@ class StreamRun {
     std::filesystem::remove(dir_->path(kSpillIncidence));
   }
 
-  // ---- Pass 1b: the median mean power (auto greytone reference) ---------
-  double median_mean_power() {
-    const std::uint64_t n_power = power_.total();
-    if (!(radar().reference.automatic && n_power > 0))
-      return std::numeric_limits<double>::quiet_NaN();
-    stage("median mean power (pass 1b)");
-    const double median = detail::median_mean_power_pass(passes(), power_, n_power);
-    stage_done();
-    return median;
-  }
-
   // What passes 1b and 2 need (slant_stream_passes.h).
   detail::SlantImagePasses passes() {
     return {group_, schedule_, sim(), info_, block_lines(), dir_ ? &*dir_ : nullptr, &*bar_, {}};
@@ -1022,8 +1004,7 @@ class StreamRun {
   // and stages no folder.
   std::optional<ProgressBar> bar_;
   std::optional<StagedDirectory> dir_;
-  std::chrono::steady_clock::time_point mark_;
-  double cpu_mark_ = 0.0;
+  detail::StageClock clock_{summary_.stage_seconds, summary_.stage_cpu_seconds};
   int cross_cells_ = 0;
   bool oblique_ = false;     // a track off the grid axes (slar_stream_oblique.h)
   bool spill_maps_ = false;  // scene maps through pass 1m (lines not one per cell)
