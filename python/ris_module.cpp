@@ -40,6 +40,7 @@
 #include "ris/image/slar_image.h"
 #include "ris/io/config_table.h"
 #include "ris/io/ellipsoidal_dem.h"
+#include "ris/io/toml_nesting.h"
 #include "ris/scene/dem_import.h"
 #include "ris/scene/landcover.h"
 #include "ris/scene/scene.h"
@@ -181,6 +182,7 @@ struct PyRadar {
 
 PyRadar radar_from_text(const std::string& text, const std::string& source) {
   toml::table doc;
+  ris::require_toml_nesting_within(text, ris::kMaxTomlNesting, source);
   try {
     doc = toml::parse(text, source);
   } catch (const toml::parse_error& e) {
@@ -327,6 +329,7 @@ py::array_t<double> model_sigma0(const std::string& model_toml,
                                  double frequency_hz, const std::string& polarisation,
                                  bool allow_extrapolation) {
   toml::table doc;
+  ris::require_toml_nesting_within(model_toml, ris::kMaxTomlNesting - 1, "model");
   try {
     doc = toml::parse("model = { " + model_toml + " }");
   } catch (const toml::parse_error& e) {

@@ -6,6 +6,8 @@
 # copies a new input in on purpose), with a 2 GiB RSS limit and a 10 s
 # per-input timeout. Findings go to BUILD_DIR/findings/<h>/; the last lines
 # of each log (executions, coverage, corpus size) are printed as a summary.
+# -max_len=65536: inputs up to 64 KiB, enough for the deep-nesting and
+# many-objects seeds to grow (libFuzzer's default stops at the largest seed).
 # Exits 1 when any harness reported a finding.
 set -uo pipefail
 build=${1:?build folder}
@@ -24,7 +26,7 @@ for h in "${harnesses[@]}"; do
   findings="$build/findings/$h"
   mkdir -p "$work" "$findings"
   echo "fuzz: $h for ${seconds}s"
-  "$exe" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 \
+  "$exe" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 \
     -artifact_prefix="$findings/" "$work" "$src/fuzz/corpus/$h" > "$build/$h.log" 2>&1
   rc=$?
   grep -E "^#[0-9]+.*(DONE|pulse)|stat::number_of_executed_units|stat::peak_rss_mb|cov:" \

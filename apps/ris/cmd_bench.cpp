@@ -44,6 +44,7 @@
 #include "ris/util/error.h"
 #include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
+#include "seed_option.h"
 
 namespace ris::app {
 namespace {
@@ -341,7 +342,7 @@ void add_bench(CLI::App& app) {
   cmd->add_option("--oblique-heading", args->oblique_heading_deg,
                   "Heading of the oblique track, degrees")
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Fractal scene seed")->capture_default_str();
+  add_seed_option(cmd, args->seed, "Fractal scene seed");
   cmd->add_flag("!--no-standard", args->standard, "Skip the standard scene");
   cmd->add_flag("!--no-oblique", args->oblique, "Skip the oblique track");
   cmd->add_flag("!--no-io", args->io, "Skip the product-writing (I/O) timing");

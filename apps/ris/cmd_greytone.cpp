@@ -16,6 +16,7 @@
 #include "ris/io/raster_io.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/util/error.h"
+#include "seed_option.h"
 
 namespace ris::app {
 namespace {
@@ -79,7 +80,7 @@ void add_greytone(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--out", o->out_path, "Greytone PNG to write")->capture_default_str();
   cmd->add_option("--speckled", o->speckled_path, "Also write the speckled power (GeoTIFF)");
-  cmd->add_option("--seed", o->seed, "Fading seed")->capture_default_str();
+  add_seed_option(cmd, o->seed, "Fading seed");
   cmd->callback([o] { run_greytone(*o); });
 }
 

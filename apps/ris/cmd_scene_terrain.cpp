@@ -31,6 +31,7 @@
 #include "ris/util/progress.h"
 #include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
+#include "seed_option.h"
 
 namespace {
 
@@ -422,8 +423,7 @@ void add_scene_terrain(CLI::App& app) {
       ->add_option("--hurst", fa->hurst,
                    "Hurst exponent in (0, 1): 0.9 smooth hills, 0.3 rough ground")
       ->capture_default_str();
-  fractal->add_option("--seed", fa->seed, "Random seed (same seed, same scene)")
-      ->capture_default_str();
+  ris::app::add_seed_option(fractal, fa->seed, "Random seed (same seed, same scene)");
   fractal->add_option("--category", fa->category,
                       "Category of every cell (name or id; default: grass of generic-terrain)");
   fractal->add_option("--patches", fa->patches,

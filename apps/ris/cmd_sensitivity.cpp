@@ -25,6 +25,7 @@
 #include "ris/sim/sensitivity.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
+#include "seed_option.h"
 
 namespace ris::app {
 namespace {
@@ -170,7 +171,7 @@ void add_sensitivity(CLI::App& app) {
   cmd->add_option("--tolerance-db", a->tolerance_db,
                   "RMS dB difference from the full-detail image still acceptable")
       ->capture_default_str();
-  cmd->add_option("--seed", a->seed, "Fading seed")->capture_default_str();
+  add_seed_option(cmd, a->seed, "Fading seed");
   cmd->add_option("--out", a->out, "Folder for sensitivity.csv, .json and the charts");
   cmd->callback([a] { run(*a); });
 }

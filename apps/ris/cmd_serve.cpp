@@ -24,6 +24,7 @@
 #include "ris/util/data_dir.h"
 #include "ris/util/memory_reuse.h"
 #include "run_input_options.h"
+#include "seed_option.h"
 
 namespace ris::app {
 namespace {
@@ -91,7 +92,7 @@ void add_serve(CLI::App& app) {
                         "Scene: a .toml description (editable) or a raster");
   cmd->add_option("--out", in.out_dir, "Folder for saved scenes, radars and products")
       ->capture_default_str();
-  cmd->add_option("--seed", in.seed, "Initial fading seed")->capture_default_str();
+  add_seed_option(cmd, in.seed, "Initial fading seed");
   cmd->add_option("--host", args->server.host,
                   "Address to listen on (other than loopback: no authentication, a warning)")
       ->capture_default_str();

@@ -25,6 +25,7 @@
 #include "ris/image/line_chart.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/config_table.h"
+#include "ris/io/toml_nesting.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -118,6 +119,7 @@ std::vector<Series> model_series(const Options& o, double frequency_hz,
                                  const std::vector<ris::Polarisation>& pols,
                                  const std::vector<double>& angles) {
   toml::table doc;
+  ris::require_toml_nesting_within(o.model, ris::kMaxTomlNesting - 1, "--model");
   try {
     doc = toml::parse("model = { " + o.model + " }");
   } catch (const toml::parse_error& e) {

@@ -39,6 +39,7 @@
 #include "ris/util/process_group.h"
 #include "ris/util/progress.h"
 #include "run_input_options.h"
+#include "seed_option.h"
 
 namespace ris::app {
 namespace {
@@ -223,7 +224,7 @@ void add_simulate(CLI::App& app) {
   cmd->add_option("--out", args->out, "Output folder (written as a whole)")->capture_default_str();
   cmd->add_option("--targets", r.targets_path,
                   "Point targets (TOML, [[target]] tables): corner reflectors etc.");
-  cmd->add_option("--seed", r.seed, "Fading seed")->capture_default_str();
+  add_seed_option(cmd, r.seed, "Fading seed");
   cmd->add_option("--threads", r.threads, "Threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--quiet", r.quiet, "No progress (a bar on a terminal, else plain log lines)");
   cmd->add_flag("--stream", r.stream,

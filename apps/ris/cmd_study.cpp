@@ -30,6 +30,7 @@
 #include "ris/util/error.h"
 #include "ris/util/progress.h"
 #include "ris/util/resource_guard.h"
+#include "seed_option.h"
 
 namespace ris::app {
 namespace {
@@ -140,8 +141,7 @@ void add_study(CLI::App& app) {
   cmd->add_option("--bands", args->bands, "Comma-separated FREQUENCY:POLARISATION pairs")
       ->capture_default_str();
   cmd->add_option("--out", args->out, "Output folder (written as a whole)")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Fading seed (the same in every panel)")
-      ->capture_default_str();
+  add_seed_option(cmd, args->seed, "Fading seed (the same in every panel)");
   cmd->add_option("--panel-size", args->panel_px,
                   "Contact sheet: longer side of a panel, pixels (panels are never enlarged)")
       ->capture_default_str();

@@ -12,6 +12,7 @@
 
 #include "command_registry.h"
 #include "mpi/process_group_start.h"
+#include "ris/io/interrupt_cleanup.h"
 #include "ris/io/safe_paths.h"
 #include "ris/util/data_dir.h"
 #include "ris/util/error.h"
@@ -50,6 +51,9 @@ int main(int argc, char** argv) {
   // The MPI job this process is a rank of, when started by mpirun or srun.
   const std::unique_ptr<ris::ProcessGroup> group = ris::app::join_process_group(argc, argv);
   if (group) ris::install_process_group(group.get());
+  // Ctrl-C, SIGTERM, SIGHUP: the unfinished outputs removed (an MPI rank has
+  // its own, started by join_process_group).
+  if (!group) ris::remove_outputs_on_interrupt();
   CLI::App app{"ris: radar image simulator (SLAR, SAR and PPI images from terrain)", "ris"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("ris ") + RIS_VERSION);

@@ -16,7 +16,9 @@ Units are SI and carried in names: metres (``_m``), watts (``_w``), hertz
 :class:`InputFileNotFoundError` (also a ``FileNotFoundError``).
 """
 
+import json
 import math
+import re
 import numbers
 import warnings as _warnings
 
@@ -230,6 +232,21 @@ def load_scene(path, category_path=None, cell_size_m=None, crs=None, category=No
                                   None if category is None else str(category)))
 
 
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+")
+
+
+def _toml_key(k, prefix=""):
+    """A dict key as a TOML key: every ris key is a bare name, so anything
+    else (a quote, a bracket, a newline: text that would be pasted into the
+    TOML as structure) is refused, never written."""
+    if not isinstance(k, str):
+        raise _error(prefix + str(k), f"{prefix}{k!r}: keys must be strings")
+    if not _BARE_KEY.fullmatch(k):
+        raise _error(prefix + k, f"{prefix}{k!r}: not a key name (letters, digits, '_' and '-' "
+                                 "only, as in the radar file format)")
+    return k
+
+
 def _toml_value(v, key):
     if isinstance(v, bool):
         return "true" if v else "false"
@@ -241,9 +258,11 @@ def _toml_value(v, key):
             raise _error(key, f"{key}: expected a finite number, got {v!r}")
         return repr(f)
     if isinstance(v, str):
-        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+        # JSON's string escapes (\\, \", \n, \uXXXX) are TOML's basic-string ones.
+        return json.dumps(v, ensure_ascii=False)
     if isinstance(v, dict):
-        return "{ " + ", ".join(f"{k} = {_toml_value(x, key + '.' + k)}" for k, x in v.items()) + " }"
+        return "{ " + ", ".join(f"{_toml_key(k, key + '.')} = {_toml_value(x, key + '.' + k)}"
+                                for k, x in v.items()) + " }"
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_toml_value(x, key) for x in v) + "]"
     raise _error(key, f"{key}: cannot be written as TOML ({type(v).__name__})")
@@ -254,9 +273,7 @@ def _dict_to_toml(d, prefix=""):
     of tables ([[a]])."""
     lines, tables = [], []
     for k, v in d.items():
-        if not isinstance(k, str):
-            raise _error(str(k), f"keys must be strings, got {k!r}")
-        full = prefix + k
+        full = prefix + _toml_key(k, prefix)
         if isinstance(v, dict):
             tables.append(f"\n[{full}]\n" + _dict_to_toml(v, full + "."))
         elif isinstance(v, (list, tuple)) and v and all(isinstance(x, dict) for x in v):
@@ -573,7 +590,8 @@ def sigma0(model_or_category, angles_deg, frequency_hz, polarisation="HH", libra
     flat_p = pol.reshape(-1)
     out = np.empty(flat_a.size, dtype=np.float64)
     if isinstance(model_or_category, dict):
-        body = ", ".join(f"{k} = {_toml_value(v, k)}" for k, v in model_or_category.items())
+        body = ", ".join(f"{_toml_key(k)} = {_toml_value(v, k)}"
+                         for k, v in model_or_category.items())
         def curve(a, f, p):
             return _ris._model_sigma0(body, a, f, p, bool(allow_extrapolation))
     elif isinstance(model_or_category, (str, numbers.Integral)) and not isinstance(model_or_category, bool):

@@ -35,6 +35,28 @@ def test_bad_radar_text_names_the_key(tmp_path):
         ris.Radar.from_dict(["frequency"])
 
 
+def test_dict_keys_are_names_never_pasted_into_toml():
+    # A key that would be TOML structure (a table header, a second key, a
+    # comment) is refused naming it, before anything is parsed.
+    for key in ('frequency = "1 Hz"\n#', "track]\n[x", "a.b", 'q"uote', "", "sp ace"):
+        with pytest.raises(ris.InputError, match="not a key name") as e:
+            ris.Radar.from_dict(dict(SMALL_RADAR, **{key: 1}))
+        assert e.value.key == key
+    with pytest.raises(ris.InputError, match="keys must be strings"):
+        ris.Radar.from_dict({**SMALL_RADAR, 3: 1})
+    with pytest.raises(ris.InputError, match="not a key name"):
+        ris.Radar.from_dict(dict(SMALL_RADAR, track={"altitude]\n[y": 1}))
+    # A value is a string, whatever it holds: the line it tries to add is not read.
+    with pytest.raises(ris.InputError, match="polarisation") as e:
+        ris.Radar.from_dict(dict(SMALL_RADAR, polarisation='HH"\ntransmit_power = "1e300 W'))
+    assert e.value.key == "polarisation"
+
+
+def test_deep_toml_text_is_refused():
+    with pytest.raises(ris.InputError, match="levels deep"):
+        ris.Radar.from_toml("x = " + "[" * 100000 + "]" * 100000)
+
+
 @pytest.mark.parametrize("kwargs, message", [
     (dict(elevation_m=np.zeros(5)), "2-D"),
     (dict(category=np.ones((3, 4))), "shape"),

@@ -3,13 +3,13 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <fstream>
 #include <mutex>
 #include <system_error>
 #include <vector>
 
 #include "ris/io/safe_paths.h"
+#include "ris/io/staging_names.h"
 #include "ris/util/error.h"
 #include "ris/util/path_exists.h"
 
@@ -18,13 +18,8 @@ namespace ris {
 namespace fs = std::filesystem;
 
 namespace {
-// A name unique to this process and call, so concurrent writers never clash.
-std::string unique_suffix() {
-  static std::atomic<unsigned> counter{0};
-  return ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-}
-
-// The staging folders of the StagedDirectory objects alive in this process
+// The staging folders of the StagedDirectory objects, and the temporary
+// files of the AtomicPath objects, alive in this process
 // (remove_staged_directories).
 std::mutex& staged_mutex() {
   static std::mutex m;
@@ -34,19 +29,50 @@ std::vector<fs::path>& staged_folders() {
   static std::vector<fs::path> v;
   return v;
 }
+
+void remember(const fs::path& p) {
+  const std::lock_guard<std::mutex> lock(staged_mutex());
+  staged_folders().push_back(p);
+}
+
+void forget(const fs::path& p) noexcept {
+  const std::lock_guard<std::mutex> lock(staged_mutex());
+  std::vector<fs::path>& v = staged_folders();
+  const auto it = std::find(v.begin(), v.end(), p);
+  if (it != v.end()) v.erase(it);
+}
+
+// A file or folder and GDAL's side-car beside a file.
+void remove_with_side_car(const fs::path& p) {
+  std::error_code ec;
+  fs::remove_all(p, ec);
+  fs::path aux = p;
+  aux += ".aux.xml";
+  fs::remove(aux, ec);
+}
 }  // namespace
 
-void remove_staged_directories() noexcept {
+std::vector<fs::path> remove_staged_directories() noexcept {
+  std::vector<fs::path> removed;
   const std::lock_guard<std::mutex> lock(staged_mutex());
   for (const fs::path& p : staged_folders()) {
     // The writing thread may still add a file between listing and removal:
     // a few tries.
+    bool was_there = false;
     for (int attempt = 0; attempt < 20; ++attempt) {
       std::error_code ec;
-      fs::remove_all(p, ec);
-      if (!ec && !path_exists(p)) break;
+      was_there = was_there || fs::exists(fs::symlink_status(p, ec));
+      remove_with_side_car(p);
+      if (!path_exists(p)) break;
+    }
+    if (was_there) {
+      try {
+        removed.push_back(p);
+      } catch (...) {  // out of memory: removed all the same, just not listed
+      }
     }
   }
+  return removed;
 }
 
 AtomicPath::AtomicPath(fs::path final_path) : final_(std::move(final_path)) {
@@ -56,19 +82,16 @@ AtomicPath::AtomicPath(fs::path final_path) : final_(std::move(final_path)) {
                      "the output folder " + parent.string() + " does not exist");
   }
   require_safe_output_file(final_);  // no device, FIFO, folder or input
+  remove_stale_staging(parent, final_.filename().string());
   temp_ = final_;
-  temp_ += unique_suffix();
+  temp_ += staging_suffix();
   temp_ += final_.extension();
+  remember(temp_);
 }
 
 AtomicPath::~AtomicPath() {
-  if (!committed_) {
-    std::error_code ec;
-    fs::remove(temp_, ec);
-    fs::path aux = temp_;
-    aux += ".aux.xml";  // GDAL side-car files
-    fs::remove(aux, ec);
-  }
+  if (!committed_) remove_with_side_car(temp_);  // and GDAL's side-car
+  forget(temp_);
 }
 
 void AtomicPath::commit() {
@@ -82,6 +105,7 @@ void AtomicPath::commit() {
   aux += ".aux.xml";
   fs::remove(aux, ec);
   committed_ = true;
+  forget(temp_);
 }
 
 void write_text_file_atomic(const fs::path& path, const std::string& text) {
@@ -106,13 +130,12 @@ StagedDirectory::StagedDirectory(fs::path final_dir) : final_(std::move(final_di
     throw InputError(final_.string(), "",
                      "the parent folder " + parent.string() + " does not exist");
   }
+  require_outside_system_trees(final_);
   staging_ = fs::absolute(final_).lexically_normal();
   if (staging_.filename().empty()) staging_ = staging_.parent_path();
-  staging_ = staging_.parent_path() / ("." + staging_.filename().string() + unique_suffix());
-  {  // known before it exists (remove_staged_directories)
-    const std::lock_guard<std::mutex> lock(staged_mutex());
-    staged_folders().push_back(staging_);
-  }
+  remove_stale_staging(staging_.parent_path(), staging_.filename().string());
+  staging_ = staging_.parent_path() / ("." + staging_.filename().string() + staging_suffix());
+  remember(staging_);  // known before it exists (remove_staged_directories)
   try {
     fs::create_directories(staging_);
   } catch (...) {
@@ -122,10 +145,7 @@ StagedDirectory::StagedDirectory(fs::path final_dir) : final_(std::move(final_di
 }
 
 void StagedDirectory::forget_staging() noexcept {
-  const std::lock_guard<std::mutex> lock(staged_mutex());
-  std::vector<fs::path>& v = staged_folders();
-  const auto it = std::find(v.begin(), v.end(), staging_);
-  if (it != v.end()) v.erase(it);
+  forget(staging_);
 }
 
 StagedDirectory::~StagedDirectory() {

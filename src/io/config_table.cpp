@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "ris/io/safe_paths.h"
+#include "ris/io/toml_nesting.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -19,16 +22,36 @@ std::string quoted_alternatives(const std::vector<std::string_view>& texts) {
   return out;
 }
 
-toml::table parse_toml_file(const std::string& path) {
-  require_regular_input(path);  // a FIFO would block the parser forever
+toml::table parse_toml_text(std::string_view text, const std::string& source) {
+  // Before toml++'s recursive parser sees it (ris/io/toml_nesting.h).
+  require_toml_nesting_within(text, kMaxTomlNesting, source);
   try {
-    return toml::parse_file(path);
+    return toml::parse(text, source);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
-    throw InputError(path, "",
+    throw InputError(source, "",
                      fmt::format("TOML syntax error at line {}, column {}: {}", where.line,
                                  where.column, e.description()));
   }
+}
+
+toml::table parse_toml_file(const std::string& path) {
+  require_regular_input(path);  // a FIFO would block the parser forever
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+  if (ec) throw InputError(path, "", "cannot read its size: " + ec.message());
+  if (bytes > kMaxTomlFileBytes) {
+    throw InputError(path, "",
+                     fmt::format("is {} bytes; a ris configuration file (TOML) may have at most "
+                                 "{} (docs/limits.md): is this the right file?",
+                                 bytes, kMaxTomlFileBytes));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string text(static_cast<std::size_t>(bytes), '\0');
+  if (!in || !in.read(text.data(), static_cast<std::streamsize>(text.size()))) {
+    throw InputError(path, "", "cannot be read");
+  }
+  return parse_toml_text(text, path);
 }
 
 ConfigTable::ConfigTable(const toml::table& table, std::string file, std::string path)

@@ -7,14 +7,19 @@
 #include <ogr_spatialref.h>
 #include <spdlog/spdlog.h>
 
+#include <sys/resource.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
 #include <mutex>
 #include <utility>
 #include <vector>
 
+#include "ris/io/file_references.h"
 #include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris {
 
@@ -46,14 +51,54 @@ std::string last_gdal_error() {
   return (msg != nullptr && *msg != '\0') ? std::string(msg) : std::string("unknown GDAL error");
 }
 
+std::string write_failure(const std::filesystem::path& out, const std::filesystem::path& written,
+                          std::int64_t needed_bytes) {
+  const int err = errno;  // of the failed write, when nothing since has set it
+  const std::string gdal = last_gdal_error();
+  const std::string needs =
+      needed_bytes > 0 ? fmt::format("; the file needs up to {}", format_bytes(needed_bytes)) : "";
+  // libtiff reports "Write error" whatever the cause: the limit and the
+  // room are looked at directly.
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(written, ec);
+  rlimit lim{};
+  const bool limited = ::getrlimit(RLIMIT_FSIZE, &lim) == 0 && lim.rlim_cur != RLIM_INFINITY;
+  const bool at_limit = limited && !ec && size + (1u << 16) >= lim.rlim_cur;
+  if (err == EFBIG || at_limit) {
+    return fmt::format(
+        "write failed: the file-size limit{} was reached ({}){}: raise it (ulimit -f) or write "
+        "smaller products",
+        limited ? fmt::format(" of {}", format_bytes(static_cast<std::int64_t>(lim.rlim_cur)))
+                : std::string(),
+        gdal, needs);
+  }
+  const std::filesystem::path folder = out.parent_path().empty() ? "." : out.parent_path();
+  const std::int64_t free_bytes = free_disk_bytes(folder);
+  if (err == ENOSPC || gdal.find("No space left") != std::string::npos ||
+      free_bytes < (std::int64_t{1} << 20)) {
+    return fmt::format(
+        "write failed: the disk is full ({}); {} free at {}{}: free some space or write "
+        "elsewhere",
+        gdal, format_bytes(free_bytes), folder.string(), needs);
+  }
+  return "write failed: " + gdal;
+}
+
 GdalDataset open_raster(const std::string& path) {
   ensure_gdal_registered();
-  require_regular_input(path);  // a FIFO would block GDAL forever
+  require_regular_input(path);     // a FIFO would block GDAL forever
+  require_safe_vrt_sources(path);  // nor may a file it names (ris/io/file_references.h)
   CPLErrorReset();
   GDALDatasetH ds =
       GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
   if (ds == nullptr) {
     throw InputError(path, "", "not a readable raster (" + last_gdal_error() + ")");
+  }
+  try {
+    require_files_beside(ds, path);
+  } catch (...) {
+    GDALClose(ds);
+    throw;
   }
   if (GDALGetRasterCount(ds) < 1 || GDALGetRasterXSize(ds) < 1 || GDALGetRasterYSize(ds) < 1) {
     GDALClose(ds);

@@ -199,13 +199,17 @@ void GeoTiffBlockWriter<T>::flush_strip() {
         GDALRasterIO(band, GF_Write, x0, y0, w, h, buffer_[static_cast<std::size_t>(b)].data(), w,
                      h, gdal_type<T>(), 0, 0);
     if (err != CE_None) {
-      throw InputError(impl_->out.final_path().string(), "", "write failed: " + last_gdal_error());
+      throw InputError(
+          impl_->out.final_path().string(), "",
+          write_failure(impl_->out.final_path(), impl_->out.temp_path(), uncompressed_bytes()));
     }
   }
   CPLErrorReset();
   GDALFlushCache(ds);
   if (CPLGetLastErrorType() == CE_Failure || CPLGetLastErrorType() == CE_Fatal) {
-    throw InputError(impl_->out.final_path().string(), "", "write failed: " + last_gdal_error());
+    throw InputError(
+        impl_->out.final_path().string(), "",
+        write_failure(impl_->out.final_path(), impl_->out.temp_path(), uncompressed_bytes()));
   }
   // The next strip.
   strip_filled_ = 0;
@@ -233,7 +237,9 @@ void GeoTiffBlockWriter<T>::close() {
   }
   GDALClose(impl_->ds.release());
   if (CPLGetLastErrorType() == CE_Failure || CPLGetLastErrorType() == CE_Fatal) {
-    throw InputError(impl_->out.final_path().string(), "", "write failed: " + last_gdal_error());
+    throw InputError(
+        impl_->out.final_path().string(), "",
+        write_failure(impl_->out.final_path(), impl_->out.temp_path(), uncompressed_bytes()));
   }
   impl_->out.commit();
   buffer_.clear();

@@ -41,7 +41,43 @@ std::string kind_of(const fs::file_status& s) {
   }
 }
 
+// The kernel's file systems, where a "file" is a device, a process's
+// descriptor or a kernel setting: /dev/stdout is a link to /proc/self/fd/1,
+// and renaming a product over it (as root) would replace the system's link.
+bool in_system_tree(const fs::path& p) {
+  auto it = p.begin();
+  if (it == p.end() || *it != "/") return false;
+  ++it;
+  if (it == p.end()) return false;
+  if (*it == "proc" || *it == "sys") return true;
+  if (*it != "dev") return false;
+  ++it;
+  return it == p.end() || *it != "shm";  // /dev/shm: a tmpfs for ordinary files
+}
+
 }  // namespace
+
+void require_outside_system_trees(const fs::path& path, const std::string& key) {
+  std::error_code ec;
+  const fs::path named = fs::absolute(path, ec).lexically_normal();
+  fs::path resolved = fs::weakly_canonical(named.parent_path(), ec);
+  if (!ec) resolved /= named.filename();
+  fs::path target;
+  if (fs::is_symlink(fs::symlink_status(path, ec))) {
+    target = fs::read_symlink(path, ec);
+    if (!ec && target.is_relative()) target = named.parent_path() / target;
+    target = target.lexically_normal();
+  }
+  for (const fs::path& p : {named, resolved, target}) {
+    if (in_system_tree(p)) {
+      throw InputError(path.string(), key,
+                       "lies in " + p.string() +
+                           ", a device or kernel file system (/dev, /proc, /sys); ris writes "
+                           "products only into ordinary folders: write to a file and copy it "
+                           "where it must go");
+    }
+  }
+}
 
 void require_regular_input(const std::string& path, const std::string& key) {
   std::error_code ec;
@@ -58,7 +94,10 @@ void require_regular_input(const std::string& path, const std::string& key) {
 void require_safe_output_file(const fs::path& path, const std::string& key) {
   std::error_code ec;
   const fs::file_status link = fs::symlink_status(path, ec);  // the link itself
-  if (ec || link.type() == fs::file_type::not_found) return;  // a new path
+  if (ec || link.type() == fs::file_type::not_found) {        // a new path
+    require_outside_system_trees(path, key);
+    return;
+  }
   if (fs::is_symlink(link)) {
     const fs::file_status target = fs::status(path, ec);
     if (!ec && fs::exists(target) && !fs::is_regular_file(target)) {
@@ -71,6 +110,9 @@ void require_safe_output_file(const fs::path& path, const std::string& key) {
         path.string(), key,
         "is " + kind_of(link) + "; ris writes only new files or replaces regular files");
   }
+  // A regular file or a link to one, but in /dev or /proc (/dev/stdout
+  // redirected to a file): its name is the system's.
+  require_outside_system_trees(path, key);
   for (const fs::path& input : tracked_inputs()) {
     if (fs::equivalent(path, input, ec) && !ec) {
       throw InputError(
@@ -82,6 +124,7 @@ void require_safe_output_file(const fs::path& path, const std::string& key) {
 
 void require_safe_output_folder(const fs::path& dir, const std::vector<std::string>& product_stems,
                                 const std::string& key) {
+  require_outside_system_trees(dir, key);
   std::error_code ec;
   const fs::file_status s = fs::status(dir, ec);
   if (ec || !fs::exists(s)) return;  // made by the run

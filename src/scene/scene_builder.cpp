@@ -12,7 +12,9 @@
 #include "ris/io/config_table.h"
 #include "ris/io/gdal_util.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
+#include "scene/objects/paint_cells.h"
 
 namespace ris {
 
@@ -118,8 +120,38 @@ SceneDescription read_scene_description(const std::string& path) {
   return parse_scene_description(doc, path);
 }
 
+namespace {
+
+// The least work the objects of any scene may ask for: 4e9 cell tests, a
+// few seconds on two cores; a larger grid may take 16 full passes.
+constexpr std::int64_t kMinPaintSteps = 4'000'000'000;
+constexpr std::int64_t kPaintPassesPerGrid = 16;
+
+// The objects' cell tests (each visits every cell of its clipped bounding
+// box), counted before any is painted: a file of 0.3 MB holding 5,000
+// full-grid patches over a 3,000^2 grid would ask for 4.5e10.
+void require_paint_work(const SceneDescription& d) {
+  const GridSpec& g = d.grid;
+  std::int64_t steps = 0;
+  for (const std::unique_ptr<SceneObject>& object : d.objects) {
+    const detail::CellRange r =
+        detail::cell_range(g.rows, g.cols, g.cell_m, g.cell_m, object->bounds());
+    steps = checked_add(steps, r.cells(), d.source, "object");
+  }
+  const std::int64_t cells = checked_mul(g.rows, g.cols, d.source, "grid");
+  const std::int64_t max_steps =
+      std::max(kMinPaintSteps, checked_mul(kPaintPassesPerGrid, cells, d.source, "grid"));
+  require_work(steps, max_steps, d.source, "object",
+               fmt::format("the {} objects' cell tests (each object visits every cell of its "
+                           "bounding box)",
+                           d.objects.size()));
+}
+
+}  // namespace
+
 Scene build_scene(const SceneDescription& d) {
   const GridSpec& g = d.grid;
+  require_paint_work(d);
   Scene scene = Scene::flat(g.rows, g.cols, g.cell_m, g.base_elevation_m, g.base_category);
   // Scene stores the north-west corner; the file gives the south-west one.
   scene.origin_x_m = g.origin_x_m;

@@ -27,6 +27,36 @@ double get_positive(ConfigTable& t, const std::string& key, Quantity q, const st
   return positive(t, key, t.get_quantity(key, q), unit);
 }
 
+// Bounds past which a radar quantity is no radar's and its products would
+// overflow or underflow (a 1e-300 Hz frequency gave an infinite wavelength,
+// a 1e300 W transmitter infinite powers blamed on the `reference` key):
+// each is refused at its own key. They are wide: every radar ris ships, and
+// every real radar from HF over-the-horizon sets to sub-millimetre imagers,
+// lies well inside them (docs/limits.md).
+struct Bounds {
+  double lo, hi;
+  const char* unit;
+};
+constexpr Bounds kFrequencyHz{1e6, 1e12, "Hz"};  // 1 MHz .. 1 THz
+constexpr Bounds kBandwidthHz{1.0, 1e12, "Hz"};
+constexpr Bounds kPulseWidthS{1e-12, 1.0, "s"};
+constexpr Bounds kTransmitPowerW{1e-6, 1e10, "W"};
+constexpr Bounds kGainDb{-30.0, 80.0, "dB"};
+constexpr Bounds kLevelDb{-150.0, 150.0, "dB"};  // sigma0, gains, NESZ written in dB or linearly
+
+double within(ConfigTable& t, const std::string& key, double v, const Bounds& b) {
+  if (!(v >= b.lo && v <= b.hi)) {
+    t.fail(key, fmt::format("{:g} {} is outside {:g} .. {:g} {}, the range of any radar (and of "
+                            "what ris's products can hold); is the unit right?",
+                            v, b.unit, b.lo, b.hi, b.unit));
+  }
+  return v;
+}
+
+double get_within(ConfigTable& t, const std::string& key, Quantity q, const Bounds& b) {
+  return within(t, key, get_positive(t, key, q, b.unit), b);
+}
+
 // At most one of the keys may be present; returns which one (or "").
 std::string one_of(ConfigTable& t, std::initializer_list<const char*> keys, bool required) {
   std::string found;
@@ -52,10 +82,14 @@ std::optional<double> linear_or_db(ConfigTable& t, const std::string& key) {
   const std::string db_key = key + "_db";
   const std::string which = one_of(t, {key.c_str(), db_key.c_str()}, false);
   if (which.empty()) return std::nullopt;
-  if (which == key) return positive(t, key, t.get_double(key), "");
+  if (which == key) {
+    const double v = positive(t, key, t.get_double(key), "");
+    within(t, key, 10.0 * std::log10(v), kLevelDb);
+    return v;
+  }
   const double db = t.get_double(db_key);
   if (!std::isfinite(db)) t.fail(db_key, "expected a finite number of dB");
-  return std::pow(10.0, db / 10.0);
+  return std::pow(10.0, within(t, db_key, db, kLevelDb) / 10.0);
 }
 
 // An area: a bare number in m^2, or "<number> m2" / "<number> ft2".
@@ -126,7 +160,7 @@ void parse_track(ConfigTable& t, TrackSpec& spec) {
 void parse_sar(ConfigTable& t, RadarParams& r) {
   SarParams& p = r.sar;
   if (one_of(t, {"bandwidth", "range_resolution"}, true) == "bandwidth") {
-    p.bandwidth_hz = get_positive(t, "bandwidth", Quantity::frequency, "Hz");
+    p.bandwidth_hz = get_within(t, "bandwidth", Quantity::frequency, kBandwidthHz);
     p.range_resolution_m = kSpeedOfLight_m_per_s / (2.0 * p.bandwidth_hz);  // c / (2B)
   } else {
     p.range_resolution_m = get_positive(t, "range_resolution", Quantity::length, "m");
@@ -208,10 +242,16 @@ void parse_scan(std::optional<ConfigTable>& t, RadarParams& r, const std::string
   }
   if (p.scope_pixel_m <= 0.0) p.scope_pixel_m = r.range_bin_m;
   // A full circle is split into whole rays; a sector's rays cover it.
-  const int rays = static_cast<int>(std::ceil(p.scan_width_rad / p.ray_spacing_rad - 1e-9));
-  if (rays > 2000000) {
-    throw InputError(file, "scan.ray_spacing", fmt::format("{} rays: too many", rays));
+  // Counted in floating point and checked before the conversion: a 1e-7 deg
+  // spacing is 3.6e9 rays, past int (once printed as -2147483648).
+  const double ray_count = std::ceil(p.scan_width_rad / p.ray_spacing_rad - 1e-9);
+  if (!(ray_count <= 2000000.0)) {
+    throw InputError(file, "scan.ray_spacing",
+                     fmt::format("{:.3g} rays over the scan: too many (at most 2,000,000); use a "
+                                 "wider ray_spacing",
+                                 ray_count));
   }
+  const int rays = std::max(1, static_cast<int>(ray_count));
   p.ray_spacing_rad = p.scan_width_rad / rays;
 }
 
@@ -426,7 +466,7 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
         "earth", {{"flat", EarthModel::flat}, {"ellipsoid", EarthModel::ellipsoid}});
   }
 
-  r.frequency_hz = get_positive(t, "frequency", Quantity::frequency, "Hz");
+  r.frequency_hz = get_within(t, "frequency", Quantity::frequency, kFrequencyHz);
   try {
     r.polarisation = parse_polarisation(t.get_string("polarisation"));
   } catch (const std::invalid_argument& e) {
@@ -435,13 +475,14 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
   // SAR: the range resolution comes from the chirp bandwidth, so the pulse
   // width is optional; the [sar] table is read first for the default bin.
   if (sar) {
-    if (t.has("pulse_width")) r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
+    if (t.has("pulse_width"))
+      r.pulse_width_s = get_within(t, "pulse_width", Quantity::time, kPulseWidthS);
     auto st = t.subtable("sar");
     if (!st) t.fail("sar", "mode = \"sar\" needs a [sar] table (bandwidth, antenna_length, ...)");
     parse_sar(*st, r);
   } else {
     if (t.has("sar")) t.fail("sar", "a [sar] table needs mode = \"sar\"");
-    r.pulse_width_s = get_positive(t, "pulse_width", Quantity::time, "s");
+    r.pulse_width_s = get_within(t, "pulse_width", Quantity::time, kPulseWidthS);
   }
   const double default_bin_m =
       sar ? r.sar.range_resolution_m : kSpeedOfLight_m_per_s * r.pulse_width_s / 2.0;
@@ -464,10 +505,14 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
   if (r.azimuth_beamwidth_rad >= kPi) {
     t.fail("azimuth_beamwidth", "expected a beamwidth below 180 deg");
   }
-  r.transmit_power_w = positive(t, "transmit_power",
-                                t.get_quantity_or("transmit_power", Quantity::power, 1000.0), "W");
+  r.transmit_power_w =
+      within(t, "transmit_power",
+             positive(t, "transmit_power",
+                      t.get_quantity_or("transmit_power", Quantity::power, 1000.0), "W"),
+             kTransmitPowerW);
   const double gain_db = t.get_double_or("antenna_gain_db", 0.0);
   if (!std::isfinite(gain_db)) t.fail("antenna_gain_db", "expected a finite number of dB");
+  within(t, "antenna_gain_db", gain_db, kGainDb);
   r.peak_gain = std::pow(10.0, gain_db / 10.0);
 
   // Track (with altitude and look side); PPI: the site and the scan.

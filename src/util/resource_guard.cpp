@@ -47,6 +47,16 @@ int core_count() {
   return n > 0 ? static_cast<int>(n) : 1;
 }
 
+// A refusal, or with the limits off a warning.
+void refuse_or_warn(const std::string& file, const std::string& key, const std::string& message) {
+  if (resource_limits_disabled()) {
+    spdlog::warn("{}{}{}", file.empty() ? "" : file + ": ",
+                 key.empty() ? "" : "'" + key + "': ", message);
+    return;
+  }
+  throw InputError(file, key, message);
+}
+
 // Refuses (or, with the limits off, warns) when need > have.
 void require(std::int64_t need, std::int64_t have, const std::string& file, const std::string& key,
              const std::string& what, const std::string& resource) {
@@ -55,12 +65,7 @@ void require(std::int64_t need, std::int64_t have, const std::string& file, cons
       "{} needs about {} of {}, but {} is available; use smaller inputs, or set {}=1 "
       "to run anyway",
       what, format_bytes(need), resource, format_bytes(have), kNoLimitsEnv);
-  if (resource_limits_disabled()) {
-    spdlog::warn("{}{}{}", file.empty() ? "" : file + ": ",
-                 key.empty() ? "" : "'" + key + "': ", message);
-    return;
-  }
-  throw InputError(file, key, message);
+  refuse_or_warn(file, key, message);
 }
 
 }  // namespace
@@ -163,6 +168,17 @@ void require_disk(std::int64_t bytes, const fs::path& out, const std::string& fi
                   const std::string& key, const std::string& what) {
   require(bytes, capped(free_disk_bytes(out), kMaxDiskEnv), file, key, what,
           "disk at " + out.string());
+}
+
+void require_work(std::int64_t steps, std::int64_t max_steps, const std::string& file,
+                  const std::string& key, const std::string& what) {
+  if (steps <= max_steps) return;
+  const std::string message = fmt::format(
+      "{} come to {:.3g} steps, more than the {:.3g} ris allows a run of this size (it would "
+      "run for minutes; docs/limits.md): use fewer or smaller objects, or set {}=1 to run "
+      "anyway",
+      what, static_cast<double>(steps), static_cast<double>(max_steps), kNoLimitsEnv);
+  refuse_or_warn(file, key, message);
 }
 
 std::string format_bytes(std::int64_t bytes) {

@@ -51,7 +51,9 @@ void stop_cleanly_on_signal() {
   sigemptyset(&stop);
   sigaddset(&stop, SIGTERM);
   sigaddset(&stop, SIGINT);
+  sigaddset(&stop, SIGHUP);
   pthread_sigmask(SIG_BLOCK, &stop, nullptr);
+  std::signal(SIGXFSZ, SIG_IGN);  // past `ulimit -f`: an error, not a silent death
   std::thread([stop] {
     int sig = 0;
     if (sigwait(&stop, &sig) != 0) return;
@@ -60,7 +62,10 @@ void stop_cleanly_on_signal() {
       std::fputs(fmt::format("ris (rank 0 of {}): error: stopped by signal {} ({}): the MPI "
                              "launcher ends every rank when one fails or is killed (its message "
                              "names the rank); no output written, the staging folder removed\n",
-                             g_size.load(), sig, sig == SIGTERM ? "SIGTERM" : "SIGINT")
+                             g_size.load(), sig,
+                             sig == SIGTERM  ? "SIGTERM"
+                             : sig == SIGHUP ? "SIGHUP"
+                                             : "SIGINT")
                      .c_str(),
                  stderr);
       std::fflush(stderr);

@@ -2,7 +2,9 @@
 //
 // Every file ris writes goes to a temporary name in the destination folder and
 // is renamed into place only when complete, so a failure (bad input found
-// late, a full disk, Ctrl-C) never leaves a half-written product.
+// late, a full disk, Ctrl-C) never leaves a half-written product. The
+// temporary names carry their owner (ris/io/staging_names.h): one left by a
+// killed run is removed by the next run writing the same output.
 //
 // Example:
 //   ris::AtomicPath out("scene.tif");
@@ -12,6 +14,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace ris {
 
@@ -61,9 +64,11 @@ class StagedDirectory {
   bool committed_ = false;
 };
 
-// Removes the staging folder of every StagedDirectory alive in this process
-// (from a thread that is ending the process on a signal, while another may
-// still write into them: an MPI rank stopped by mpirun, docs/scale.md).
-void remove_staged_directories() noexcept;
+// Removes the staging folder of every StagedDirectory, and the temporary
+// file of every AtomicPath, alive in this process (from a thread that is
+// ending the process on a signal, while another may still write into them:
+// ris/io/interrupt_cleanup.h, an MPI rank stopped by mpirun, docs/scale.md).
+// Returns the paths that existed and were removed.
+std::vector<std::filesystem::path> remove_staged_directories() noexcept;
 
 }  // namespace ris

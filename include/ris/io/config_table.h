@@ -35,7 +35,16 @@ using EnumChoices = std::initializer_list<std::pair<std::string_view, E>>;
 std::string quoted_alternatives(const std::vector<std::string_view>& texts);
 
 // Parses a TOML file; a syntax error becomes an InputError with line/column.
+// Refused before parsing: a file over kMaxTomlFileBytes, and one nesting
+// deeper than kMaxTomlNesting levels (ris/io/toml_nesting.h).
 toml::table parse_toml_file(const std::string& path);
+// The same for TOML text from elsewhere (Python, a command-line option);
+// source names it in messages.
+toml::table parse_toml_text(std::string_view text, const std::string& source);
+
+// The largest configuration file ris parses: 64 MiB (a scene of 5,000
+// objects is 0.3 MB; the parser holds the whole text and its tree).
+constexpr std::uintmax_t kMaxTomlFileBytes = std::uintmax_t{64} << 20;
 
 class ConfigTable {
  public:

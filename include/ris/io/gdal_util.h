@@ -5,6 +5,8 @@
 #include <gdal.h>
 
 #include <array>
+#include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -39,6 +41,14 @@ GdalDataset open_raster(const std::string& path);
 
 // The last GDAL error message, or "unknown GDAL error".
 std::string last_gdal_error();
+
+// The message for a write of `out` that failed: GDAL's error and, when the
+// disk is full (ENOSPC) or the file-size limit (`ulimit -f`, EFBIG: ris
+// ignores SIGXFSZ, ris/io/interrupt_cleanup.h) was reached, which one, the
+// room there is and what the file needs (needed_bytes, uncompressed; 0 when
+// not known). written: the file being written (its temporary name).
+std::string write_failure(const std::filesystem::path& out, const std::filesystem::path& written,
+                          std::int64_t needed_bytes);
 
 // The axis-aligned bounds {x0, y0, x1, y1}, in its own CRS, of a raster of
 // cols x rows under the geotransform gt: all four corners, so rotated grids

@@ -107,6 +107,10 @@ class GeoTiffBlockWriter {
   bool ascending() const {
     return order_ == BlockOrder::top_down || order_ == BlockOrder::left_right;
   }
+  // The pixels' bytes, for the message of a failed write.
+  std::int64_t uncompressed_bytes() const {
+    return std::int64_t{cols_} * rows_ * bands_ * static_cast<std::int64_t>(sizeof(T));
+  }
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

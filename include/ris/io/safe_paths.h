@@ -5,7 +5,8 @@
 // before it is opened: a FIFO would block the reader (GDAL, the TOML parser)
 // forever, a device or folder gives confusing errors.
 //
-// Outputs: the final path must be new or a regular file (a device, FIFO,
+// Outputs: never in /dev, /proc or /sys (as named or through a link); the
+// final path must be new or a regular file (a device, FIFO,
 // socket or folder is refused; as root, renaming over /dev/full would
 // replace the device node) and must not resolve to a file this run read
 // (std::filesystem::equivalent). A symlink at the output path is replaced
@@ -37,6 +38,12 @@ void require_regular_input(const std::string& path, const std::string& key = "")
 // existing non-regular file (or a link to one), or one of the recorded
 // inputs.
 void require_safe_output_file(const std::filesystem::path& path, const std::string& key = "");
+
+// InputError (path, key) when an output path lies in /dev, /proc or /sys
+// (/dev/shm excepted), as named, with its folder resolved, or as the target
+// of a link at it: /dev/stdout is a link into /proc, and renaming a product
+// over it would replace the system's link.
+void require_outside_system_trees(const std::filesystem::path& path, const std::string& key = "");
 
 // The same for an output folder: InputError when it exists and is not a
 // folder, when it holds something other than a regular file under one of

@@ -70,6 +70,13 @@ void require_memory(std::int64_t bytes, const std::string& file, const std::stri
 void require_disk(std::int64_t bytes, const std::filesystem::path& out, const std::string& file,
                   const std::string& key, const std::string& what);
 
+// InputError (file, key) when a loop would take more than `max_steps`
+// steps (cell tests, ray samples): work that a small file can ask for and
+// that would run for minutes. what: what the steps are ("the objects' cell
+// tests"). Warns instead when the limits are off.
+void require_work(std::int64_t steps, std::int64_t max_steps, const std::string& file,
+                  const std::string& key, const std::string& what);
+
 // Bytes as a short human figure ("1.5 GiB").
 std::string format_bytes(std::int64_t bytes);
 

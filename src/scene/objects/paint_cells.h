@@ -19,22 +19,42 @@
 
 namespace ris::detail {
 
+// The cells paint_cells visits for `b`: rows and columns, inclusive, clipped
+// to a grid of rows x cols cells of dx_m x dy_m; empty when the bounds miss
+// the grid. Also what the scene builder counts before painting (its work
+// estimate, ris/util/resource_guard.h).
+struct CellRange {
+  int row_begin = 0, row_end = -1, col_begin = 0, col_end = -1;
+  std::int64_t cells() const {
+    return row_end < row_begin || col_end < col_begin
+               ? 0
+               : std::int64_t{row_end - row_begin + 1} * (col_end - col_begin + 1);
+  }
+};
+
+inline CellRange cell_range(int rows, int cols, double dx_m, double dy_m, const Bounds& b) {
+  // Cells with centre x in [x_min, x_max]: (c + 0.5) dx in range. One extra
+  // cell each side keeps the range conservative against rounding; the
+  // functor decides membership exactly.
+  const double c0 = std::floor(b.x_min_m / dx_m - 0.5) - 1.0;
+  const double c1 = std::ceil(b.x_max_m / dx_m - 0.5) + 1.0;
+  const double r0 = std::floor(rows - 0.5 - b.y_max_m / dy_m) - 1.0;
+  const double r1 = std::ceil(rows - 0.5 - b.y_min_m / dy_m) + 1.0;
+  if (!(c1 >= 0.0 && r1 >= 0.0 && c0 < cols && r0 < rows)) return {};
+  return {static_cast<int>(std::max(r0, 0.0)), static_cast<int>(std::min(r1, rows - 1.0)),
+          static_cast<int>(std::max(c0, 0.0)), static_cast<int>(std::min(c1, cols - 1.0))};
+}
+
 template <typename PaintFn>
 std::size_t paint_cells(Scene& scene, const Bounds& b, PaintFn&& paint) {
   const double dx = scene.dx_m;
   const double dy = scene.dy_m;
-  // Cells with centre x in [x_min, x_max]: (c + 0.5) dx in range. One extra
-  // cell each side keeps the range conservative against rounding; the
-  // functor decides membership exactly.
-  const double c0 = std::floor(b.x_min_m / dx - 0.5) - 1.0;
-  const double c1 = std::ceil(b.x_max_m / dx - 0.5) + 1.0;
-  const double r0 = std::floor(scene.rows - 0.5 - b.y_max_m / dy) - 1.0;
-  const double r1 = std::ceil(scene.rows - 0.5 - b.y_min_m / dy) + 1.0;
-  if (c1 < 0.0 || r1 < 0.0 || c0 >= scene.cols || r0 >= scene.rows) return 0;
-  const int col_begin = static_cast<int>(std::max(c0, 0.0));
-  const int col_end = static_cast<int>(std::min(c1, scene.cols - 1.0));
-  const int row_begin = static_cast<int>(std::max(r0, 0.0));
-  const int row_end = static_cast<int>(std::min(r1, scene.rows - 1.0));
+  const CellRange range = cell_range(scene.rows, scene.cols, dx, dy, b);
+  if (range.cells() == 0) return 0;
+  const int col_begin = range.col_begin;
+  const int col_end = range.col_end;
+  const int row_begin = range.row_begin;
+  const int row_end = range.row_end;
 
   std::size_t painted = 0;
 #pragma omp parallel for schedule(static) reduction(+ : painted)
