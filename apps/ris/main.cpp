@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "command_registry.h"
@@ -18,6 +19,7 @@
 #include "ris/util/error.h"
 #include "ris/util/memory_reuse.h"
 #include "ris/util/process_group.h"
+#include "ris/util/spelling.h"
 
 namespace ris::app {
 
@@ -39,6 +41,49 @@ std::string default_scene_path() {
 }
 std::string default_radar_path() {
   return data_path("radars/seed-fig4-5.toml");
+}
+
+}  // namespace ris::app
+
+namespace ris::app {
+
+// A command name that is none of ris's: a usage error with a suggestion
+// (CLI11 alone says "A subcommand is required" for `ris simulat`).
+struct UnknownCommand : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The command words (`ris scene buidl ...`) checked against the commands
+// and subcommands before CLI11 parses them: the first word that is not an
+// option, and the word after a command that has subcommands of its own.
+void require_known_commands(CLI::App& app, int argc, char** argv) {
+  CLI::App* level = &app;
+  std::string path = "ris";
+  for (int i = 1; i < argc && level != nullptr; ++i) {
+    const std::string word = argv[i];
+    if (word.empty() || word[0] == '-') {
+      if (level != &app) return;  // options of a command: CLI11 checks them
+      continue;                   // -v, --help, --version
+    }
+    const std::vector<CLI::App*> subs = level->get_subcommands([](CLI::App*) { return true; });
+    if (subs.empty()) return;
+    std::vector<std::string> names;
+    CLI::App* match = nullptr;
+    for (CLI::App* sub : subs) {
+      names.push_back(sub->get_name());
+      if (sub->get_name() == word) match = sub;
+    }
+    if (match == nullptr) {
+      std::string all;
+      for (const std::string& n : names) all += (all.empty() ? "" : ", ") + n;
+      throw UnknownCommand(
+          fmt::format("'{}' is not a command of {}{}; the commands are: {} "
+                      "(`{} --help` says more)",
+                      word, path, ris::did_you_mean(word, names), all, path));
+    }
+    path += " " + word;
+    level = match;
+  }
 }
 
 }  // namespace ris::app
@@ -87,7 +132,11 @@ int main(int argc, char** argv) {
   // (out of memory, an I/O error, an internal error).
   int code = 0;
   try {
+    ris::app::require_known_commands(app, argc, argv);
     app.parse(argc, argv);
+  } catch (const ris::app::UnknownCommand& e) {
+    spdlog::error("{}", e.what());
+    code = 2;
   } catch (const CLI::ParseError& e) {
     code = app.exit(e) == 0 ? 0 : 2;
   } catch (const ris::InputError& e) {

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,8 +12,16 @@
 #include "ris/io/safe_paths.h"
 #include "ris/io/toml_nesting.h"
 #include "ris/util/error.h"
+#include "ris/util/spelling.h"
 
 namespace ris {
+
+bool same_letters(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) ==
+                  std::tolower(static_cast<unsigned char>(y));
+         });
+}
 
 std::string quoted_alternatives(const std::vector<std::string_view>& texts) {
   std::string out;
@@ -66,6 +76,7 @@ void ConfigTable::fail(const std::string& key, const std::string& what) const {
 }
 
 bool ConfigTable::has(const std::string& key) const {
+  asked_.insert(key);
   return table_->contains(key);
 }
 
@@ -77,17 +88,37 @@ std::vector<std::string> ConfigTable::keys() const {
 
 void ConfigTable::mark_used(const std::string& key) {
   used_.insert(key);
+  asked_.insert(key);
 }
 
 const toml::node* ConfigTable::raw(const std::string& key) {
   used_.insert(key);
+  asked_.insert(key);
   return table_->get(key);
 }
 
 const toml::node& ConfigTable::require(const std::string& key) {
   used_.insert(key);
+  asked_.insert(key);
   const toml::node* node = table_->get(key);
-  if (node == nullptr) fail(key, "missing required key");
+  if (node == nullptr) {
+    // A key of the table that nothing has read and that is one slip from
+    // this one ("polarization" for "polarisation"; one in six letters at
+    // most, so that "far_range" is never taken for "near_range").
+    std::vector<std::string> unread;
+    for (const auto& [k, v] : *table_) {
+      if (used_.count(std::string(k.str())) == 0) unread.emplace_back(k.str());
+    }
+    std::string hint;
+    for (const std::string& name : unread) {
+      if (edit_distance(name, key) <= std::max<std::size_t>(1, key.size() / 6)) {
+        hint = fmt::format("; the table has \"{}\", which is not a key: did you mean \"{}\"?",
+                           name, key);
+        break;
+      }
+    }
+    fail(key, "missing required key" + hint);
+  }
   return *node;
 }
 
@@ -217,12 +248,18 @@ std::vector<ConfigTable> ConfigTable::table_array(const std::string& key) {
 }
 
 void ConfigTable::finish() const {
+  // What the reader asked for and the table lacks: the keys a slip may have
+  // meant.
+  std::vector<std::string> absent;
+  for (const std::string& k : asked_) {
+    if (!table_->contains(k)) absent.push_back(k);
+  }
   std::string unknown;
   for (const auto& [k, v] : *table_) {
     std::string name(k.str());
     if (used_.count(name) == 0) {
       if (!unknown.empty()) unknown += ", ";
-      unknown += key_path(name);
+      unknown += key_path(name) + did_you_mean(name, absent);
     }
   }
   if (!unknown.empty()) {

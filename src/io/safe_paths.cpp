@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <mutex>
+#include <optional>
 
 #include "ris/util/error.h"
+#include "ris/util/spelling.h"
 
 namespace ris {
 
@@ -55,6 +57,21 @@ bool in_system_tree(const fs::path& p) {
   return it == p.end() || *it != "shm";  // /dev/shm: a tmpfs for ordinary files
 }
 
+// " (did you mean \"x\"?)" for a file of the same folder one slip from the
+// missing one's name, or where the folder is missing, a note saying so.
+std::string nearby_names(const fs::path& path) {
+  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) return " (nor its folder " + folder.string() + ")";
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(folder, ec)) {
+    if (names.size() >= 1000) break;  // a huge folder: no suggestion rather than a slow one
+    names.push_back(e.path().filename().string());
+  }
+  const std::optional<std::string> near = nearest_name(path.filename().string(), names);
+  return near ? " (did you mean " + (folder / *near).string() + "?)" : "";
+}
+
 }  // namespace
 
 void require_outside_system_trees(const fs::path& path, const std::string& key) {
@@ -82,7 +99,7 @@ void require_outside_system_trees(const fs::path& path, const std::string& key) 
 void require_regular_input(const std::string& path, const std::string& key) {
   std::error_code ec;
   const fs::file_status s = fs::status(path, ec);  // follows a symlink
-  if (ec || !fs::exists(s)) throw InputError(path, key, "no such file");
+  if (ec || !fs::exists(s)) throw InputError(path, key, "no such file" + nearby_names(path));
   if (!fs::is_regular_file(s)) {
     throw InputError(path, key, "is " + kind_of(s) + "; expected a regular file");
   }

@@ -36,19 +36,22 @@ double get_positive(ConfigTable& t, const std::string& key, Quantity q, const st
 struct Bounds {
   double lo, hi;
   const char* unit;
+  const char* example;  // how the quantity is usually written
 };
-constexpr Bounds kFrequencyHz{1e6, 1e12, "Hz"};  // 1 MHz .. 1 THz
-constexpr Bounds kBandwidthHz{1.0, 1e12, "Hz"};
-constexpr Bounds kPulseWidthS{1e-12, 1.0, "s"};
-constexpr Bounds kTransmitPowerW{1e-6, 1e10, "W"};
-constexpr Bounds kGainDb{-30.0, 80.0, "dB"};
-constexpr Bounds kLevelDb{-150.0, 150.0, "dB"};  // sigma0, gains, NESZ written in dB or linearly
+constexpr Bounds kFrequencyHz{1e6, 1e12, "Hz", "\"9.6 GHz\""};  // 1 MHz .. 1 THz
+constexpr Bounds kBandwidthHz{1.0, 1e12, "Hz", "\"150 MHz\""};
+constexpr Bounds kPulseWidthS{1e-12, 1.0, "s", "\"50 ns\""};
+constexpr Bounds kTransmitPowerW{1e-6, 1e10, "W", "\"2 kW\""};
+constexpr Bounds kGainDb{-30.0, 80.0, "dB", "35"};
+// sigma0, gains and NESZ written in dB or linearly.
+constexpr Bounds kLevelDb{-150.0, 150.0, "dB", "-20 (dB) or 0.01 (linear)"};
 
 double within(ConfigTable& t, const std::string& key, double v, const Bounds& b) {
   if (!(v >= b.lo && v <= b.hi)) {
     t.fail(key, fmt::format("{:g} {} is outside {:g} .. {:g} {}, the range of any radar (and of "
-                            "what ris's products can hold); is the unit right?",
-                            v, b.unit, b.lo, b.hi, b.unit));
+                            "what ris's products can hold); a bare number is read in {}: is the "
+                            "unit right (for example {})?",
+                            v, b.unit, b.lo, b.hi, b.unit, b.unit, b.example));
   }
   return v;
 }

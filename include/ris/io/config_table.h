@@ -22,6 +22,7 @@
 
 #include <toml++/toml.h>
 
+#include "ris/util/spelling.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -30,6 +31,9 @@ namespace ris {
 // RadarMode::slar}, ...
 template <typename E>
 using EnumChoices = std::initializer_list<std::pair<std::string_view, E>>;
+
+// Whether two texts are equal without regard to (ASCII) case.
+bool same_letters(std::string_view a, std::string_view b);
 
 // The allowed texts for a message: "\"a\", \"b\" or \"c\"".
 std::string quoted_alternatives(const std::vector<std::string_view>& texts);
@@ -112,18 +116,23 @@ class ConfigTable {
   const toml::node& require(const std::string& key);
   template <typename E>
   E enum_from(const std::string& key, const std::string& text, EnumChoices<E> choices) const {
+    // Without regard to case, as polarisations are ("Right" is "right").
     std::vector<std::string_view> texts;
+    std::vector<std::string> names;
     for (const auto& [t, value] : choices) {
-      if (t == text) return value;
+      if (same_letters(t, text)) return value;
       texts.push_back(t);
+      names.emplace_back(t);
     }
-    fail(key, "expected " + quoted_alternatives(texts) + ", got \"" + text + "\"");
+    fail(key, "expected " + quoted_alternatives(texts) + ", got \"" + text + "\"" +
+                  did_you_mean(text, names));
   }
 
   const toml::table* table_;
   std::string file_;
   std::string path_;
   std::set<std::string> used_;
+  mutable std::set<std::string> asked_;  // every key looked up: the did-you-mean candidates
 };
 
 }  // namespace ris
