@@ -145,8 +145,8 @@ TEST(HostileInputsCli, RastersNamingFilesElsewhereAreRefused) {
                    "  </VRTRasterBand>\n</VRTDataset>\n");
   const auto before = listing(dir / "in");
   const auto import = [&](const std::string& name, const std::string& env = "") {
-    return test::run_ris_env(
-        env, "scene import " + q(dir / "in" / name) + " -o " + q(dir / "in" / "scene.tif"));
+    return test::run_ris_env(env, "scene import --crs EPSG:32633 " + q(dir / "in" / name) + " -o " +
+                                      q(dir / "in" / "scene.tif"));
   };
   expect_refused(import("outside.vrt"), 1, "outside its own folder", dir / "in", before);
   expect_refused(import("absolute.vrt"), 1, "outside its own folder", dir / "in", before);
@@ -169,8 +169,8 @@ TEST(HostileInputsCli, OutputsIntoDevAndProcAreRefused) {
   // renaming over /dev/stdout replaced the system's link.
   fs::create_symlink("/proc/self/fd/1", dir / "stdout.tif");
   const auto before = listing(dir.path());
-  for (const std::string out :
-       {"/dev/ris-hostile-test.tif", "/proc/self/fd/1", (dir / "stdout.tif").string()}) {
+  for (const std::string out : {std::string("/dev/ris-hostile-test.tif"),
+                                std::string("/proc/self/fd/1"), (dir / "stdout.tif").string()}) {
     const auto r = test::run_ris("scene build " + scene + " -o " + q(out));
     EXPECT_EQ(r.exit_code, 1) << out << ": " << r.output;
     EXPECT_THAT(r.output, HasSubstr("a device or kernel file system")) << out;

@@ -22,10 +22,11 @@ TEST(Spelling, OnlyNearAndUniqueNamesAreSuggested) {
   const std::vector<std::string> keys{"polarisation", "frequency", "pulse_width"};
   EXPECT_EQ(nearest_name("polarization", keys), "polarisation");
   EXPECT_EQ(nearest_name("frequncy", keys), "frequency");
-  EXPECT_EQ(nearest_name("altitude", keys), std::nullopt);              // nothing near
-  EXPECT_EQ(nearest_name("frequency", keys), std::nullopt);             // the word itself
-  EXPECT_EQ(nearest_name("colour", {"color", "colon"}), std::nullopt);  // a tie
-  EXPECT_EQ(nearest_name("ab", {"xy"}), std::nullopt);                  // 2 edits in 2 letters
+  EXPECT_EQ(nearest_name("altitude", keys), std::nullopt);         // nothing near
+  EXPECT_EQ(nearest_name("frequency", keys), std::nullopt);        // the word itself
+  EXPECT_EQ(nearest_name("bat", {"cat", "hat"}), std::nullopt);    // a tie
+  EXPECT_EQ(nearest_name("colour", {"color", "colon"}), "color");  // 1 against 2
+  EXPECT_EQ(nearest_name("ab", {"xy"}), std::nullopt);             // 2 edits in 2 letters
   EXPECT_EQ(did_you_mean("simulat", {"simulate", "study"}), " (did you mean \"simulate\"?)");
   EXPECT_EQ(did_you_mean("zzz", {"simulate"}), "");
 }

@@ -23,8 +23,9 @@
 
 namespace ris {
 
-// The deepest nesting any ris file needs is 4 (a radar's [beam.pattern]
-// table holding an array of tables); 64 leaves room for every hand-written
+// The deepest nesting any ris file needs is 7 (a library's
+// [category.band.model.ground.permittivity] keys, under the [[category]]
+// array of tables); 64 leaves room for every hand-written
 // file while staying far below the depth at which the parser's recursion
 // could exhaust a thread's stack (docs/limits.md).
 constexpr std::size_t kMaxTomlNesting = 64;

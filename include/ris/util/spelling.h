@@ -6,7 +6,7 @@
 // suggestions are. A name is suggested only when it is near enough to be a
 // slip, at most a third of the word's letters (and at least one) away, and
 // nearer than every other name, so that "polarization" gives "polarisation"
-// and "colour" gives nothing when both "color" and "colon" are candidates.
+// and "bat" gives nothing when both "cat" and "hat" are candidates.
 //
 // Example:
 //   did_you_mean("simulat", {"simulate", "study"})  // " (did you mean \"simulate\"?)"
