@@ -464,12 +464,21 @@ TEST_F(ServeHardening, ProductFoldersAreCapped) {
   // An earlier server's folder of a run id this one will reach: replaced,
   // not served as this run's.
   const std::filesystem::path out = tmp_->path() / "out";
+  const int next_id = state()["run"]["id"].get<int>() + 1;
+  const std::filesystem::path stale = out / fmt::format("products-run{}", next_id);
+  std::filesystem::create_directories(stale);
+  test::write_file(stale / "stale.txt", "an earlier server's run");
   std::vector<std::string> written;
   for (int seed = 101; seed <= 104; ++seed) {
     ASSERT_EQ(post_json("/api/simulate", fmt::format(R"({{"seed": {}}})", seed)).status, 200);
     const Answer a = post_json("/api/products", "{}");
     ASSERT_EQ(a.status, 200) << a.body;
     written.push_back(nlohmann::json::parse(a.body)["folder"]);
+    if (written.size() == 1) {
+      EXPECT_EQ(written[0], stale.filename().string());
+      EXPECT_FALSE(std::filesystem::exists(stale / "stale.txt"));
+      EXPECT_TRUE(std::filesystem::exists(stale / "metadata.json"));
+    }
   }
   std::vector<std::string> kept;
   for (const auto& e : std::filesystem::directory_iterator(out)) {
