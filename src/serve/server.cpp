@@ -53,6 +53,13 @@ void answer_errors(httplib::Response& res, Call&& call) {
   }
 }
 
+// The request's body is left unread (refused, or over the cap): the client
+// is told, and the connection ends after this answer.
+void close_after(httplib::Response& res) {
+  res.set_header("Connection", "close");
+  GuardedHttpServer::close_after_response();
+}
+
 template <typename Handler>
 httplib::Server::Handler guarded(Handler handler) {
   return [handler](const httplib::Request& req, httplib::Response& res) {
@@ -79,7 +86,7 @@ std::optional<std::string> read_capped_body(const httplib::ContentReader& reader
                                           cap)
                             : std::string("the request body could not be read")}},
             over ? 413 : 400);
-  GuardedHttpServer::close_after_response();  // the rest of it is unread
+  close_after(res);
   return std::nullopt;
 }
 
@@ -152,7 +159,7 @@ struct HttpServer::Impl {
       const RequestGuard::Refusal r = guard->refusal(facts_of(req));
       if (r.status == 0) return httplib::Server::HandlerResponse::Unhandled;
       send_json(res, {{"error", r.message}}, r.status);
-      GuardedHttpServer::close_after_response();
+      close_after(res);
       return httplib::Server::HandlerResponse::Handled;
     });
     http.set_error_handler([](const httplib::Request&, httplib::Response& res) {
