@@ -2,7 +2,8 @@
 // and build scenes with a person in the loop (docs/serve.md).
 //
 //   ris serve [--scene S] [--radar R] [--backscatter B] [--out DIR]
-//             [--host 127.0.0.1] [--port 8765] [--max-body-kib N] [--open]
+//             [--host 127.0.0.1] [--port 8765] [--max-body-kib N]
+//             [--max-product-runs N] [--max-product-mib N] [--open]
 //
 // Binds the loopback address unless --host says otherwise (the page has no
 // authentication: any other host prints a warning). Prints the URL to open;
@@ -13,6 +14,7 @@
 
 #include <pthread.h>
 #include <csignal>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -33,6 +35,7 @@ struct ServeArgs {
   ServeInputs inputs;
   ServerOptions server;
   std::size_t max_body_kib = 1024;
+  std::size_t max_product_mib = 1024;
   bool open = false;
 };
 
@@ -44,6 +47,7 @@ void run_serve(ServeArgs& a) {
   a.inputs.data_dir = data_dir();
   a.server.web_dir = data_dir() / "serve";
   a.server.max_body_bytes = a.max_body_kib * 1024;
+  a.inputs.products.max_bytes = std::uintmax_t{a.max_product_mib} << 20;
   if (!is_loopback(a.server.host)) {
     spdlog::warn(
         "listening on {}: the page has no authentication; anyone who can reach this "
@@ -100,6 +104,14 @@ void add_serve(CLI::App& app) {
   cmd->add_option("--max-body-kib", args->max_body_kib, "Largest request body, KiB")
       ->capture_default_str()
       ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--max-product-runs", in.products.max_folders,
+                  "Products folders kept under --out (the oldest removed beyond)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--max-product-mib", args->max_product_mib,
+                  "Bytes of products kept under --out, MiB (the oldest folders removed beyond)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1 << 24));
   cmd->add_flag("--open", args->open, "Open the page in the default browser");
   cmd->callback([args] { run_serve(*args); });
 }

@@ -22,9 +22,13 @@ async function api(path, options = {}) {
   if (!res.ok && res.status !== 409) throw new Error(body.error || res.statusText);
   return { status: res.status, body };
 }
-const postJson = (path, obj, signal) => api(path, {
-  method: 'POST', headers: { 'Content-Type': 'application/json' },
+// Every request that changes something says JSON: the server refuses any
+// other type there (a cross-site page cannot send it without a preflight the
+// server never approves: docs/serve.md, "Threat model").
+const sendJson = (method, path, obj, signal) => api(path, {
+  method, headers: { 'Content-Type': 'application/json' },
   body: JSON.stringify(obj), signal });
+const postJson = (path, obj, signal) => sendJson('POST', path, obj, signal);
 
 function showError(message) { $('error').textContent = message || ''; }
 function setStatus(text) { $('status').textContent = text; }
@@ -418,7 +422,7 @@ function wireSceneTools() {
   });
   $('delete-object').addEventListener('click', () => {
     if (selectedObject < 0) return;
-    editScene(() => api(`/api/scene/objects/${selectedObject}`, { method: 'DELETE' }));
+    editScene(() => sendJson('DELETE', `/api/scene/objects/${selectedObject}`, {}));
   });
   $('undo').addEventListener('click', () => editScene(() => postJson('/api/scene/undo', {})));
   $('apply-object').addEventListener('click', () => {
@@ -432,7 +436,7 @@ function wireSceneTools() {
   const save = (what) => async () => {
     try {
       const { body } = await postJson(`/api/${what}/save`, { name: $('save-name').value });
-      $('saved').textContent = `saved ${body.path}`;
+      $('saved').textContent = `saved ${body.file} in the output folder (--out)`;
       showError('');
     } catch (e) {
       showError(e.message);
@@ -443,7 +447,7 @@ function wireSceneTools() {
   $('write-products').addEventListener('click', async () => {
     try {
       const { body } = await postJson('/api/products', {});
-      $('saved').textContent = `products in ${body.folder}`;
+      $('saved').textContent = `products in ${body.folder} in the output folder (--out)`;
       $('products').innerHTML = '<li><a href="/api/products.zip" download>all, as a zip</a></li>' +
         body.files
           .map((f) => `<li><a href="/api/products/${encodeURIComponent(f)}" download>${f}</a></li>`)

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <sstream>
 
+#include "ris/serve/json_depth.h"
 #include "ris/util/error.h"
 
 namespace ris {
@@ -71,6 +72,8 @@ toml::table json_object_to_toml(const nlohmann::json& object, const std::string&
 }
 
 toml::table json_body_to_toml(const std::string& body, const std::string& source) {
+  // Before parsing: the parser recurses once per level (ris/serve/json_depth.h).
+  check_json_depth(body, source, kMaxJsonDepth);
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(body.empty() ? std::string("{}") : body);

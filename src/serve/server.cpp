@@ -6,16 +6,19 @@
 
 #include <charconv>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "ris/serve/client_paths.h"
+#include "ris/serve/request_guard.h"
 #include "ris/serve/static_files.h"
 #include "ris/util/error.h"
+#include "serve/guarded_http_server.h"
 
 namespace ris {
 namespace {
 
 constexpr const char* kJson = "application/json";
-constexpr std::size_t kWorkers = 16;
 
 void send_json(httplib::Response& res, const nlohmann::json& j, int status = 200) {
   res.status = status;
@@ -37,18 +40,74 @@ void send_text(httplib::Response& res, const std::string& text, const std::strin
 }
 
 // Bad input (InputError) is the client's: 400 with the message the command
-// line prints; anything else is ours: 500.
+// line prints; anything else is ours: 500. Messages name files, never the
+// server's folders (ris/serve/client_paths.h).
+template <typename Call>
+void answer_errors(httplib::Response& res, Call&& call) {
+  try {
+    call();
+  } catch (const InputError& e) {
+    send_json(res, {{"error", without_directories(e.what())}}, 400);
+  } catch (const std::exception& e) {
+    send_json(res, {{"error", "internal error: " + without_directories(e.what())}}, 500);
+  }
+}
+
+// The request's body is left unread (refused, or over the cap): the client
+// is told, and the connection ends after this answer.
+void close_after(httplib::Response& res) {
+  res.set_header("Connection", "close");
+  GuardedHttpServer::close_after_response();
+}
+
 template <typename Handler>
 httplib::Server::Handler guarded(Handler handler) {
   return [handler](const httplib::Request& req, httplib::Response& res) {
-    try {
-      handler(req, res);
-    } catch (const InputError& e) {
-      send_json(res, {{"error", e.what()}}, 400);
-    } catch (const std::exception& e) {
-      send_json(res, {{"error", std::string("internal error: ") + e.what()}}, 500);
-    }
+    answer_errors(res, [&] { handler(req, res); });
   };
+}
+
+// The body, taken as it arrives and refused (413) past the cap whether it
+// comes with a Content-Length or chunked (httplib caps only the former).
+std::optional<std::string> read_capped_body(const httplib::ContentReader& reader,
+                                            httplib::Response& res, std::size_t cap) {
+  std::string body;
+  bool over = false;
+  const bool read = reader([&](const char* data, std::size_t n) {
+    over = body.size() + n > cap;
+    if (!over) body.append(data, n);
+    return !over;
+  });
+  if (read) return body;
+  over = over || res.status == 413;
+  send_json(res,
+            {{"error", over ? fmt::format("request body too large (over {} bytes, the server's "
+                                          "--max-body-kib)",
+                                          cap)
+                            : std::string("the request body could not be read")}},
+            over ? 413 : 400);
+  close_after(res);
+  return std::nullopt;
+}
+
+// A state-changing route: its handler gets the body read under the cap.
+template <typename Handler>
+httplib::Server::HandlerWithContentReader with_body(Handler handler, std::size_t cap) {
+  return [handler, cap](const httplib::Request& req, httplib::Response& res,
+                        const httplib::ContentReader& reader) {
+    const std::optional<std::string> body = read_capped_body(reader, res, cap);
+    if (body) answer_errors(res, [&] { handler(req, res, *body); });
+  };
+}
+
+RequestFacts facts_of(const httplib::Request& req) {
+  return {req.method,
+          req.path,
+          req.get_header_value("Host"),
+          req.get_header_value("Origin"),
+          req.get_header_value("Referer"),
+          req.get_header_value("Content-Type"),
+          req.get_header_value("Sec-Fetch-Site")};
 }
 
 int int_param(const httplib::Request& req, const std::string& key) {
@@ -81,18 +140,33 @@ struct HttpServer::Impl {
   Session& session;
   ServerOptions options;
   StaticFiles files;
-  httplib::Server http;
+  GuardedHttpServer http;
+  std::unique_ptr<RequestGuard> guard;  // made by bind(), once the port is known
 
-  Impl(Session& s, const ServerOptions& o) : session(s), options(o), files(o.web_dir) {
+  Impl(Session& s, const ServerOptions& o)
+      : session(s), options(o), files(o.web_dir), http(o.connections) {
     http.set_payload_max_length(options.max_body_bytes);
-    // Enough workers that a browser's keep-alive connections (each holds a
-    // worker while open) and health checks never wait for each other.
-    http.new_task_queue = [] { return new httplib::ThreadPool(kWorkers); };
+    // A worker for every admitted connection and spares (a browser's
+    // keep-alive connections each hold one while open; slow clients are cut
+    // at their deadlines, ris/serve/connection_limits.h).
+    const std::size_t workers = http.worker_count();
+    http.new_task_queue = [workers] { return new httplib::ThreadPool(workers); };
     http.set_keep_alive_timeout(2);
+    // Before routing, on every request: Host, Origin and content type
+    // (ris/serve/request_guard.h). A refused request's body is left unread,
+    // so its connection closes after the answer.
+    http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+      const RequestGuard::Refusal r = guard->refusal(facts_of(req));
+      if (r.status == 0) return httplib::Server::HandlerResponse::Unhandled;
+      send_json(res, {{"error", r.message}}, r.status);
+      close_after(res);
+      return httplib::Server::HandlerResponse::Handled;
+    });
     http.set_error_handler([](const httplib::Request&, httplib::Response& res) {
       if (res.body.empty()) {
         const char* what = res.status == 413   ? "request body too large"
                            : res.status == 404 ? "not found"
+                           : res.status == 405 ? "method not allowed"
                                                : "bad request";
         send_json(res, {{"error", what}}, res.status);
       }
@@ -112,18 +186,21 @@ struct HttpServer::Impl {
 
   void add_api_routes() {
     Session& s = session;
+    const std::size_t cap = options.max_body_bytes;
     http.Get("/api/health", [](const httplib::Request&, httplib::Response& res) {
       send_json(res, {{"ok", true}, {"version", RIS_VERSION}});
     });
     http.Get("/api/state", guarded([&s](const auto&, auto& res) { send_json(res, s.state()); }));
-    http.Post("/api/simulate", guarded([&s](const httplib::Request& req, auto& res) {
-                const SimulateOutcome out = s.simulate(req.body);
-                if (out.superseded) {
-                  send_json(res, {{"superseded", true}}, 409);
-                } else {
-                  send_json(res, out.run);
-                }
-              }));
+    http.Post("/api/simulate", with_body(
+                                   [&s](const auto&, auto& res, const std::string& body) {
+                                     const SimulateOutcome out = s.simulate(body);
+                                     if (out.superseded) {
+                                       send_json(res, {{"superseded", true}}, 409);
+                                     } else {
+                                       send_json(res, out.run);
+                                     }
+                                   },
+                                   cap));
     http.Get(R"(/api/image/([a-z]+)\.png)", guarded([&s](const httplib::Request& req, auto& res) {
                send_png(res, s.image_png(req.matches[1]));
              }));
@@ -141,7 +218,9 @@ struct HttpServer::Impl {
                                         int_param(req, "y")));
              }));
     http.Post("/api/products",
-              guarded([&s](const auto&, auto& res) { send_json(res, s.write_products()); }));
+              with_body([&s](const auto&, auto& res,
+                             const std::string&) { send_json(res, s.write_products()); },
+                        cap));
     http.Get("/api/products.zip", guarded([&s](const auto&, auto& res) {
                const std::vector<std::uint8_t> zip = s.products_zip();
                res.set_header("Content-Disposition", "attachment; filename=\"products.zip\"");
@@ -163,28 +242,37 @@ struct HttpServer::Impl {
 
   void add_scene_routes() {
     Session& s = session;
-    http.Post("/api/scene/objects", guarded([&s](const httplib::Request& req, auto& res) {
-                send_json(res, s.add_object(req.body));
-              }));
+    const std::size_t cap = options.max_body_bytes;
+    http.Post("/api/scene/objects",
+              with_body([&s](const auto&, auto& res,
+                             const std::string& body) { send_json(res, s.add_object(body)); },
+                        cap));
     http.Post(R"(/api/scene/objects/(\d{1,6}))",
-              guarded([&s](const httplib::Request& req, auto& res) {
-                send_json(res, s.update_object(index_param(req), req.body));
-              }));
-    http.Delete(R"(/api/scene/objects/(\d{1,6}))",
-                guarded([&s](const httplib::Request& req, auto& res) {
-                  send_json(res, s.delete_object(index_param(req)));
-                }));
-    http.Post("/api/scene/paint", guarded([&s](const httplib::Request& req, auto& res) {
-                send_json(res, s.paint(req.body));
-              }));
-    http.Post("/api/scene/undo",
-              guarded([&s](const auto&, auto& res) { send_json(res, s.undo()); }));
-    http.Post("/api/scene/save", guarded([&s](const httplib::Request& req, auto& res) {
-                send_json(res, s.save_scene(req.body));
-              }));
-    http.Post("/api/radar/save", guarded([&s](const httplib::Request& req, auto& res) {
-                send_json(res, s.save_radar(req.body));
-              }));
+              with_body(
+                  [&s](const httplib::Request& req, auto& res, const std::string& body) {
+                    send_json(res, s.update_object(index_param(req), body));
+                  },
+                  cap));
+    http.Delete(
+        R"(/api/scene/objects/(\d{1,6}))",
+        with_body([&s](const httplib::Request& req, auto& res,
+                       const std::string&) { send_json(res, s.delete_object(index_param(req))); },
+                  cap));
+    http.Post("/api/scene/paint",
+              with_body([&s](const auto&, auto& res,
+                             const std::string& body) { send_json(res, s.paint(body)); },
+                        cap));
+    http.Post("/api/scene/undo", with_body([&s](const auto&, auto& res,
+                                                const std::string&) { send_json(res, s.undo()); },
+                                           cap));
+    http.Post("/api/scene/save",
+              with_body([&s](const auto&, auto& res,
+                             const std::string& body) { send_json(res, s.save_scene(body)); },
+                        cap));
+    http.Post("/api/radar/save",
+              with_body([&s](const auto&, auto& res,
+                             const std::string& body) { send_json(res, s.save_radar(body)); },
+                        cap));
     http.Get("/api/scene.toml", guarded([&s](const auto&, auto& res) {
                send_text(res, s.scene_toml(), "scene.toml");
              }));
@@ -213,10 +301,13 @@ int HttpServer::bind() {
                                  "machine)",
                                  o.host, o.port));
   }
+  impl_->http.widen_listen_queue();
+  impl_->guard = std::make_unique<RequestGuard>(o.host, port);
   return port;
 }
 
 void HttpServer::run() {
+  RIS_CHECK(impl_->guard != nullptr);  // bind() first: the checks need the port
   impl_->http.listen_after_bind();
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <regex>
 #include <sstream>
@@ -17,6 +18,7 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_json.h"
 #include "ris/serve/category_paint.h"
+#include "ris/serve/client_paths.h"
 #include "ris/serve/json_toml.h"
 #include "ris/serve/pixel_inspector.h"
 #include "ris/serve/radar_overrides.h"
@@ -42,6 +44,11 @@ std::map<std::string, std::string> files_by_name(const std::filesystem::path& fo
     }
   }
   return out;
+}
+
+// The file's name without its folders (what answers tell a client).
+std::string file_name(const std::string& path) {
+  return std::filesystem::path(path).filename().string();
 }
 
 std::string toml_text(const toml::table& doc) {
@@ -164,20 +171,27 @@ nlohmann::json Session::state() const {
   nlohmann::json libraries = nlohmann::json::array();
   for (const auto& [name, path] : backscatter_files_) libraries.push_back(name);
   const Scene& s = *scene_.scene;
-  nlohmann::json scene = {{"path", scene_.path}, {"editable", scene_.editable},
-                          {"rows", s.rows},      {"cols", s.cols},
-                          {"cell_m", s.dx_m},    {"undo_depth", undo_.size()}};
+  nlohmann::json scene = {{"file", file_name(scene_.path)},
+                          {"editable", scene_.editable},
+                          {"rows", s.rows},
+                          {"cols", s.cols},
+                          {"cell_m", s.dx_m},
+                          {"undo_depth", undo_.size()}};
   if (scene_.editable) scene["description"] = toml_to_json(scene_.doc);
   // The library's categories, for painting.
   nlohmann::json categories = nlohmann::json::array();
   for (const std::uint16_t c : sigma0_->category_ids()) {
     categories.push_back({{"id", c}, {"name", sigma0_->category_name(c)}});
   }
+  nlohmann::json radar = {{"file", file_name(radar_path_)},
+                          {"description", toml_to_json(radar_doc_)},
+                          {"params", radar_to_json(radar_)}};
+  // Names, never the server's folders (the parsed radar keeps its source
+  // path; a description may name a file).
+  strip_directories_in(scene);
+  strip_directories_in(radar);
   return {{"scene", scene},
-          {"radar",
-           {{"path", radar_path_},
-            {"description", toml_to_json(radar_doc_)},
-            {"params", radar_to_json(radar_)}}},
+          {"radar", radar},
           {"radar_presets", presets},
           {"backscatter", backscatter_name_},
           {"categories", categories},
@@ -372,7 +386,7 @@ std::filesystem::path Session::save_path(const std::string& body, const std::str
   // A plain name only: no folder, no "..", nothing a shell or a file system
   // reads specially; the file always lands in out_dir.
   static const std::regex plain("[A-Za-z0-9][A-Za-z0-9_-]{0,63}");
-  if (!std::regex_match(name, plain)) {
+  if (name.size() > 64 || !std::regex_match(name, plain)) {
     t.fail("name", "expected a plain " + what +
                        " name (letters, digits, '-' and '_', at most 64, no extension), got \"" +
                        name + "\"");
@@ -389,14 +403,14 @@ nlohmann::json Session::save_scene(const std::string& body) {
   } else {
     write_scene_geotiff(*scene_.scene, path);
   }
-  return {{"path", std::filesystem::absolute(path).string()}};
+  return {{"file", path.filename().string()}};
 }
 
 nlohmann::json Session::save_radar(const std::string& body) {
   const std::filesystem::path path = save_path(body, "radar", ".toml");
   std::lock_guard lock(mutex_);
   write_text_file_atomic(path, toml_text(radar_doc_));
-  return {{"path", std::filesystem::absolute(path).string()}};
+  return {{"file", path.filename().string()}};
 }
 
 std::string Session::scene_toml() const {
@@ -414,7 +428,20 @@ nlohmann::json Session::write_products() {
   std::lock_guard lock(mutex_);
   std::filesystem::create_directories(inputs_.out_dir);
   const std::filesystem::path dir = inputs_.out_dir / fmt::format("products-run{}", run_id_);
-  if (!path_exists(dir)) write_run_products(result_, dir);
+  const bool mine = std::find(written_product_dirs_.begin(), written_product_dirs_.end(), dir) !=
+                    written_product_dirs_.end();
+  if (!mine || !path_exists(dir)) {
+    // Run ids restart with every server: a folder of this name from an
+    // earlier one holds another run's products.
+    std::filesystem::remove_all(dir);
+    write_run_products(result_, dir);
+    written_product_dirs_.push_back(dir);
+  }
+  for (const std::string& gone : prune_product_folders(inputs_.out_dir, dir, inputs_.products)) {
+    spdlog::info("removed {} (over --max-product-runs {} or --max-product-mib {})", gone,
+                 inputs_.products.max_folders, inputs_.products.max_bytes >> 20);
+    std::erase(written_product_dirs_, inputs_.out_dir / gone);
+  }
   products_.clear();
   nlohmann::json names = nlohmann::json::array();
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
@@ -422,7 +449,7 @@ nlohmann::json Session::write_products() {
     products_[e.path().filename().string()] = e.path();
   }
   for (const auto& [name, path] : products_) names.push_back(name);
-  return {{"folder", std::filesystem::absolute(dir).string()}, {"files", names}};
+  return {{"folder", dir.filename().string()}, {"files", names}};
 }
 
 std::optional<std::filesystem::path> Session::product_file(const std::string& name) const {

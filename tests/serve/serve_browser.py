@@ -160,7 +160,8 @@ def main():
         driver.find_element("id", "save-scene").click()
         saved = wait_until(lambda: (t := driver.find_element("id", "saved").text)
                            .startswith("saved ") and t, 30, "the saved scene")
-        path = saved[len("saved "):]
+        # Answers name files relative to --out, never by absolute paths.
+        path = os.path.join(work, "out", saved.split()[1])
         info = subprocess.run([ris_exe, "scene", "info", path], capture_output=True, text=True)
         print(info.stdout.strip().splitlines()[0] if info.stdout else info.stderr)
         assert info.returncode == 0, info.stderr

@@ -19,8 +19,9 @@ namespace ris {
 
 // Parses `body` as a JSON object and converts it (objects to tables, arrays,
 // strings, integers, floating-point numbers, booleans). Throws InputError
-// naming `source` for text that is not JSON, a top level that is not an
-// object, or a null (TOML has none).
+// naming `source` for text that is not JSON, nested deeper than kMaxJsonDepth
+// (checked before parsing), a top level that is not an object, or a null
+// (TOML has none).
 toml::table json_body_to_toml(const std::string& body, const std::string& source);
 
 // The same for a parsed JSON object.

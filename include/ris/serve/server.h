@@ -3,9 +3,16 @@
 // session's lock one at a time; /api/health takes none, so a slow render
 // never blocks a health check.
 //
-// Errors: bad input gives HTTP 400 and {"error": "<the CLI's message>"}; a
-// body over the cap 413; an unknown path 404; a simulate request overtaken by
-// a newer one 409 {"superseded": true}.
+// Only the server's own page and non-browser clients are obeyed
+// (ris/serve/request_guard.h): a foreign Host, Origin, Referer or
+// Sec-Fetch-Site gives 403, a state-changing request that is not JSON 415.
+// Connections are bounded in number and time (ris/serve/connection_limits.h):
+// over the bound 503.
+//
+// Errors: bad input gives HTTP 400 and {"error": "<the CLI's message>"}
+// (files named without their folders); a body over the cap 413, chunked or
+// not; an unknown path 404; a simulate request overtaken by a newer one 409
+// {"superseded": true}.
 //
 // Example:
 //   ris::HttpServer server(session, {.host = "127.0.0.1", .port = 0, .web_dir = dir});
@@ -18,6 +25,7 @@
 #include <memory>
 #include <string>
 
+#include "ris/serve/connection_limits.h"
 #include "ris/serve/session.h"
 
 namespace ris {
@@ -27,6 +35,7 @@ struct ServerOptions {
   int port = 8765;                       // 0: any free port (bind() returns it)
   std::size_t max_body_bytes = 1 << 20;  // request bodies above: HTTP 413
   std::filesystem::path web_dir;         // the page's files (ris/serve/static_files.h)
+  ConnectionLimits connections;
 };
 
 class HttpServer {
@@ -39,7 +48,7 @@ class HttpServer {
   // Binds the address; returns the port. Throws InputError (key --host or
   // --port) when the address cannot be bound.
   int bind();
-  // Serves until stop() (from any thread); returns then.
+  // Serves until stop() (from any thread); returns then. After bind().
   void run();
   void stop();
 

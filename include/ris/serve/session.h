@@ -32,6 +32,7 @@
 
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/scene/scene.h"
+#include "ris/serve/product_folders.h"
 #include "ris/sim/run.h"
 
 namespace ris {
@@ -46,6 +47,8 @@ struct ServeInputs {
   // The shipped data: its radars/ and backscatter/ files are offered by name.
   std::filesystem::path data_dir;
   std::uint64_t seed = 1;
+  // The products folders kept under out_dir (the oldest removed beyond).
+  ProductFolderCap products;
 };
 
 struct SimulateOutcome {
@@ -80,14 +83,19 @@ class Session {
 
   // Writes the scene or radar description as <out_dir>/<name>.toml (a
   // raster scene, painted or not, as <name>.tif, a ris scene GeoTIFF); body
-  // {"name": "..."} (letters, digits, '-', '_', at most 64).
+  // {"name": "..."} (letters, digits, '-', '_', at most 64). Returns
+  // {"file": "<name>.toml"}: answers name files relative to out_dir, never by
+  // the server's absolute paths (state() likewise names files only).
   nlohmann::json save_scene(const std::string& body);
   nlohmann::json save_radar(const std::string& body);
   std::string scene_toml() const;
   std::string radar_toml() const;
 
   // Writes the run's products (as `ris simulate` does) into a new folder
-  // under out_dir; returns their names, each then served by product_file.
+  // under out_dir, products-run<N> (one an earlier server left under that
+  // name is replaced), then prunes the oldest folders beyond
+  // inputs.products; returns {"folder": "products-run<N>", "files": [...]},
+  // each file then served by product_file.
   nlohmann::json write_products();
   std::optional<std::filesystem::path> product_file(const std::string& name) const;
   // All of them as one zip archive (InputError before write_products).
@@ -144,6 +152,7 @@ class Session {
   double last_seconds_ = 0.0;  // the last run or re-render, request parsing included
   std::vector<std::string> warnings_;
   std::map<std::string, std::filesystem::path> products_;
+  std::vector<std::filesystem::path> written_product_dirs_;  // by this session
   std::uint64_t scene_versions_ = 0;
   // The scene picture of scene_.version (it changes only with an edit; the
   // page shows it beside every run).
