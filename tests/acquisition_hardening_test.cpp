@@ -5,15 +5,20 @@
 // file and the dataset or XML element; a Sentinel-1 GRD annotation is refused
 // naming productType; a huge declared dataset is refused before any big
 // allocation; a FIFO acquisition and a NaN --point are refused.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <functional>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "acquisition_paths.h"
@@ -288,18 +293,52 @@ TEST(AcquisitionHardening, HugeDeclaredImageRefusedBeforeAllocation) {
 
 // --- Any acquisition: FIFOs, --point -----------------------------------------
 
+// While alive, opens `fifo` for writing whenever a reader is blocked on it,
+// so that a reader which opened it (a regression) gets end-of-file and the
+// test fails instead of hanging; says whether that happened.
+class FifoUnblocker {
+ public:
+  explicit FifoUnblocker(const fs::path& fifo)
+      : thread_([this, fifo] {
+          while (!stop_) {
+            // Succeeds only when a reader has the FIFO open.
+            const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+            if (fd >= 0) {
+              blocked_ = true;
+              ::close(fd);
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+          }
+        }) {}
+  ~FifoUnblocker() {
+    stop_ = true;
+    thread_.join();
+  }
+  FifoUnblocker(const FifoUnblocker&) = delete;
+  FifoUnblocker& operator=(const FifoUnblocker&) = delete;
+  bool reader_blocked() const { return blocked_; }
+
+ private:
+  std::atomic<bool> stop_{false}, blocked_{false};
+  std::thread thread_;
+};
+
 TEST(AcquisitionHardening, FifoAcquisitionRefusedBeforeOpening) {
   test::TempDir dir;
   for (const char* name : {"fifo.h5", "fifo.xml", "fifo.toml"}) {
+    SCOPED_TRACE(name);
     const fs::path p = dir / name;
     ASSERT_EQ(::mkfifo(p.c_str(), 0600), 0);
-    // Opening would block forever; refused at once instead.
+    const FifoUnblocker unblocker(p);
+    // Opening would block until a writer came; refused at once instead.
     try {
       read_acquisition(p);
       ADD_FAILURE() << name << " was read";
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("FIFO"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("is a FIFO (named pipe)"), std::string::npos)
+          << e.what();
     }
+    EXPECT_FALSE(unblocker.reader_blocked()) << "the reader opened the FIFO";
   }
   const auto r =
       test::run_ris("geo2rdr -a " + test::q(dir / "fifo.h5") + " --point 49.45,-97.77,240");
