@@ -14,6 +14,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -340,11 +341,18 @@ TEST(AcquisitionHardening, FifoAcquisitionRefusedBeforeOpening) {
     }
     EXPECT_FALSE(unblocker.reader_blocked()) << "the reader opened the FIFO";
   }
-  const auto r =
-      test::run_ris("geo2rdr -a " + test::q(dir / "fifo.h5") + " --point 49.45,-97.77,240");
-  EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("is a FIFO (named pipe); expected a regular file"), std::string::npos)
-      << r.output;
+  // The command line too, under a time limit (a regression would block it
+  // for good: exit status 124 then).
+  const fs::path log = dir / "geo2rdr.txt";
+  const std::string cmd = "timeout 20 " + std::string(test::ris_exe()) + " geo2rdr -a " +
+                          test::q(dir / "fifo.h5") + " --point 49.45,-97.77,240 > " + test::q(log) +
+                          " 2>&1";
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1) << test::read_file(log);
+  EXPECT_NE(test::read_file(log).find("is a FIFO (named pipe); expected a regular file"),
+            std::string::npos)
+      << test::read_file(log);
 }
 
 TEST(AcquisitionHardening, Geo2rdrPointsChecked) {
