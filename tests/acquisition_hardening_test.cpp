@@ -141,6 +141,37 @@ TEST(AcquisitionHardening, Sentinel1BurstElementsChecked) {
   EXPECT_NE(m.find("strictly increasing"), std::string::npos) << m;
 }
 
+// The annotation as a stripmap product: no bursts, linesPerBurst 0 (as
+// ESA's stripmap annotations give it), numberOfLines set to `lines`.
+fs::path stripmap_annotation(const test::TempDir& dir, const std::string& lines) {
+  const fs::path xml = damaged_annotation(dir, {{"<swathTiming>", "linesPerBurst", "0"},
+                                                {"<imageInformation>", "numberOfLines", lines}});
+  std::string text = test::read_file(xml);
+  const auto open = text.find("<burstList count=");
+  const std::string end = "</burstList>";
+  const auto close = text.find(end, open);
+  EXPECT_NE(close, std::string::npos);
+  text.replace(open, close + end.size() - open, "<burstList count=\"0\"></burstList>");
+  test::write_file(xml, text);
+  return xml;
+}
+
+TEST(AcquisitionHardening, Sentinel1StripmapReadsFromTheFirstLineTime) {
+  test::TempDir dir;
+  const fs::path xml = stripmap_annotation(dir, "13509");
+  const Acquisition a = read_acquisition(xml);
+  EXPECT_EQ(a.grid.lines, 13509);  // numberOfLines
+  // productFirstLineUtcTime, 17:05:58.268589, against midnight.
+  EXPECT_NEAR(a.grid.sensing_start_s, 17 * 3600.0 + 5 * 60.0 + 58.268589, 1e-6);
+  for (const char* bad : {"0", "-3", "1e300", "nan"}) {
+    SCOPED_TRACE(bad);
+    test::TempDir d;
+    const fs::path b = stripmap_annotation(d, bad);
+    expect_refused([&] { read_acquisition(b); }, b,
+                   "imageAnnotation.imageInformation.numberOfLines");
+  }
+}
+
 TEST(AcquisitionHardening, Sentinel1StateVectorsChecked) {
   const std::string orbit = "generalAnnotation.orbitList.orbit.";
   for (const char* v : {"nan", "inf"}) {
