@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libgdal-dev gdal-bin
+  # The HDF5 C library: the tests damage copies of NISAR products (tests/hdf5_edit.h)
+  libhdf5-dev
   # PROJ's grids: EGM96 geoid heights to ellipsoidal heights (ris topo, docs/geometry.md)
   proj-data
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev

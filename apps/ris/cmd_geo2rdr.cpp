@@ -6,7 +6,10 @@
 //
 // Points come from --point/--pixel (repeatable) or a CSV file (--csv: lines
 // "lat,lon,height" or "line,bin"; '#' starts a comment). The output is CSV
-// on standard output, one row per point, with a header.
+// on standard output, one row per point, with a header. Each point is checked
+// before any work: a latitude in [-90, 90], a longitude in [-180, 360], a
+// height in [-12, 100] km, a line or bin finite and within 10^7 of the grid
+// (ris/sensor/product_values.h); the error names the option or CSV line.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -20,6 +23,7 @@
 #include "ris/geometry/zero_doppler.h"
 #include "ris/io/ellipsoidal_dem.h"
 #include "ris/io/safe_paths.h"
+#include "ris/sensor/product_values.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -54,10 +58,36 @@ std::vector<double> numbers(const std::string& text, std::size_t n, const std::s
   return v;
 }
 
+// Checks one point's values; file and key name where it came from.
+using PointCheck = void (*)(const std::vector<double>& v, const std::string& file,
+                            const std::string& key);
+
+// lat, lon, height: finite and on the Earth (ris/sensor/product_values.h).
+void check_ground_point(const std::vector<double>& v, const std::string& file,
+                        const std::string& key) {
+  require_in_range(v[0], kLatitudeRange, file, key);
+  require_in_range(v[1], kLongitudeRange, file, key);
+  require_in_range(v[2], kGroundHeightRange, file, key);
+}
+
+// line, bin: finite and within the largest grid's size of it (a time or
+// range computed from them stays finite).
+void check_radar_pixel(const std::vector<double>& v, const std::string& file,
+                       const std::string& key) {
+  constexpr auto kMax = static_cast<double>(kMaxGridLines);
+  const ValueRange r{-kMax, 2.0 * kMax, "", "a line or bin"};
+  require_in_range(v[0], r, file, key);
+  require_in_range(v[1], r, file, key);
+}
+
 std::vector<std::vector<double>> read_points(const PointArgs& a, std::size_t n,
-                                             const std::string& option, const std::string& what) {
+                                             const std::string& option, const std::string& what,
+                                             PointCheck check) {
   std::vector<std::vector<double>> out;
-  for (const std::string& p : a.points) out.push_back(numbers(p, n, "", option, what));
+  for (const std::string& p : a.points) {
+    out.push_back(numbers(p, n, "", option, what));
+    check(out.back(), "", option);
+  }
   if (!a.csv.empty()) {
     require_regular_input(a.csv, "--csv");
     std::ifstream f(a.csv);
@@ -69,7 +99,9 @@ std::vector<std::vector<double>> read_points(const PointArgs& a, std::size_t n,
       const auto hash = line.find('#');
       if (hash != std::string::npos) line.resize(hash);
       if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-      out.push_back(numbers(line, n, a.csv, fmt::format("line {}", no), what));
+      const std::string key = fmt::format("line {}", no);
+      out.push_back(numbers(line, n, a.csv, key, what));
+      check(out.back(), a.csv, key);
     }
   }
   if (out.empty()) throw InputError("", option, "no points: give " + option + " or --csv");
@@ -104,8 +136,9 @@ constexpr const char* kColumns =
     "incidence_deg,incidence_geocentric_deg,look_deg,doppler_hz,status";
 
 void run_geo2rdr(const PointArgs& a) {
+  const auto pts =
+      read_points(a, 3, "--point", "lat,lon,height (degrees, degrees, metres)", check_ground_point);
   const Acquisition acq = read_acquisition(a.acq.path, a.acq.options());
-  const auto pts = read_points(a, 3, "--point", "lat,lon,height (degrees, degrees, metres)");
   print_header(acq);
   fmt::print("{}\n", kColumns);
   const double t_mid = 0.5 * (acq.grid.sensing_start_s + acq.grid.end_s());
@@ -121,9 +154,10 @@ void run_rdr2geo(const PointArgs& a) {
   if (a.dem.empty() == std::isnan(a.height_m)) {
     throw InputError("", "--dem", "give exactly one of --dem and --height");
   }
+  if (a.dem.empty()) require_in_range(a.height_m, kGroundHeightRange, "", "--height");
   EllipsoidalDem dem;
   if (!a.dem.empty()) dem = read_ellipsoidal_dem(a.dem);
-  const auto pts = read_points(a, 2, "--pixel", "line,bin (may be fractional)");
+  const auto pts = read_points(a, 2, "--pixel", "line,bin (may be fractional)", check_radar_pixel);
   print_header(acq);
   if (!a.dem.empty()) fmt::print("# DEM {}: {}\n", a.dem, dem.vertical_note);
   fmt::print("{}\n", kColumns);

@@ -4,12 +4,14 @@
 #include <gdal.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 
 #include "ris/io/gdal_util.h"
 #include "ris/io/safe_paths.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 
 namespace ris {
 
@@ -52,7 +54,15 @@ std::string product_layer(const std::string& path, int index) {
 // rules of the header.
 void fill_intensity(GDALRasterBandH b, PixelScale scale, const std::string& path,
                     IntensityImage& img) {
-  const std::size_t n = static_cast<std::size_t>(img.cols) * static_cast<std::size_t>(img.rows);
+  // The size the file declares, against the resource guard before anything
+  // is allocated (a small HDF5 file may declare a huge never-written
+  // dataset): 4 bytes a pixel of intensity and 8 of what is read (two
+  // floats, or a double).
+  const std::string layer = img.source == path ? "" : img.source;  // an HDF5 dataset
+  const std::int64_t pixels = checked_mul(img.cols, img.rows, path, layer);
+  require_memory(checked_mul(pixels, 12, path, layer), path, layer,
+                 fmt::format("reading the {} x {} image", img.cols, img.rows));
+  const auto n = static_cast<std::size_t>(pixels);
   const GDALDataType type = GDALGetRasterDataType(b);
   int has_nodata = 0;
   const double nodata = GDALGetRasterNoDataValue(b, &has_nodata);

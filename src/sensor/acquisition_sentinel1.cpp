@@ -8,19 +8,32 @@
 // times overlap; ris reads one burst (its own uniform grid) or the whole
 // sub-swath as one uniform "debursted" grid from the first burst's first
 // line to the last burst's last line (what ISCE3 and sarsen mosaic into).
-// Stripmap products have one grid from productFirstLineUtcTime.
+// Stripmap products have one grid from productFirstLineUtcTime (as SNAP's
+// and OTB's readers take it when there are no bursts).
+//
+// Only slant-range SLC annotations are read: a GRD product (productType GRD,
+// projection "Ground Range") has its pixels on a ground-range grid, mapped
+// to slant range by the annotation's coordinateConversionList polynomials,
+// which ris's uniform slant-range RadarGrid does not model; it is refused
+// naming productType. Every number is checked finite and in its physical
+// range where it is read (ris/sensor/product_values.h), the error naming
+// the element.
 #include <cpl_minixml.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "ris/io/safe_paths.h"
 #include "ris/sensor/acquisition.h"
+#include "ris/sensor/product_values.h"
 #include "ris/sensor/sentinel1_annotation.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 
 namespace ris {
@@ -34,6 +47,7 @@ using XmlTree = std::unique_ptr<CPLXMLNode, XmlCloser>;
 class Annotation {
  public:
   explicit Annotation(const std::filesystem::path& xml) : file_(xml.string()) {
+    require_regular_input(file_);  // a FIFO would block the parser forever
     tree_.reset(CPLParseXMLFile(file_.c_str()));
     if (!tree_) throw InputError(file_, "", "cannot parse as XML");
     product_ = CPLGetXMLNode(tree_.get(), "=product");
@@ -60,7 +74,16 @@ class Annotation {
       if (used == s.size() && std::isfinite(v)) return v;
     } catch (const std::exception&) {
     }
-    throw InputError(file_, path, fmt::format("expected a number, got '{}'", s));
+    throw InputError(file_, path, fmt::format("expected a finite number, got '{}'", s));
+  }
+  // A number within r.
+  double number(const CPLXMLNode* from, const std::string& path, const ValueRange& r) const {
+    return require_in_range(number(from, path), r, file_, path);
+  }
+  // A whole number in [lo, hi].
+  int whole(const CPLXMLNode* from, const std::string& path, std::int64_t lo,
+            std::int64_t hi) const {
+    return require_whole_number(number(from, path), lo, hi, file_, path);
   }
   UtcTime time(const CPLXMLNode* from, const std::string& path) const {
     const std::string s = text(from, path);
@@ -90,7 +113,10 @@ class Annotation {
 
 std::filesystem::path sentinel1_annotation_path(const std::filesystem::path& path,
                                                 const std::string& swath) {
-  if (std::filesystem::is_regular_file(path)) return path;
+  if (!std::filesystem::is_directory(path)) {
+    require_regular_input(path.string());  // an annotation XML, not a FIFO or device
+    return path;
+  }
   const auto dir = path / "annotation";
   if (!std::filesystem::is_directory(dir)) {
     throw InputError(path.string(), "",
@@ -113,23 +139,41 @@ std::filesystem::path sentinel1_annotation_path(const std::filesystem::path& pat
                                  : "several annotations; choose one with --swath:" + list);
 }
 
-Acquisition read_sentinel1(const std::filesystem::path& path, const AcquisitionOptions& options) {
-  const Annotation a(sentinel1_annotation_path(path, options.swath));
+namespace {
+
+// Refuses anything but a slant-range SLC (GRD: see the top of this file).
+void require_slant_range_slc(const Annotation& a) {
   const CPLXMLNode* p = a.product();
-
-  Acquisition acq;
-  acq.source = a.file();
-  acq.format = "sentinel-1-safe";
-  acq.mission = a.text(p, "adsHeader.missionId");
-  acq.polarisation = a.text(p, "adsHeader.polarisation");
+  const std::string type = a.text(p, "adsHeader.productType");
   const std::string mode = a.text(p, "adsHeader.mode");
+  const std::string projection = a.text(p, "generalAnnotation.productInformation.projection");
+  if (type != "SLC") {
+    throw InputError(
+        a.file(), "adsHeader.productType",
+        fmt::format("a Sentinel-1 {} product ({} mode, {} projection): ris reads SLC annotations "
+                    "only, whose pixels lie on a uniform slant-range grid; a GRD's pixels lie on "
+                    "a ground-range grid (the annotation's coordinateConversionList), which ris "
+                    "does not model: use the SLC product of the same acquisition",
+                    type, mode, projection));
+  }
+  if (projection != "Slant Range") {
+    throw InputError(a.file(), "generalAnnotation.productInformation.projection",
+                     fmt::format("expected \"Slant Range\" for an SLC, got \"{}\"", projection));
+  }
+}
 
-  // Orbit: the annotation's state vectors (Earth-fixed), times against the
-  // first one's date.
+// The annotation's state vectors (Earth-fixed), times against midnight of the
+// first one's day.
+Orbit read_orbit(const Annotation& a) {
   const auto orbits = a.children("generalAnnotation.orbitList", "orbit");
   if (orbits.empty()) throw InputError(a.file(), "generalAnnotation.orbitList", "no orbit");
+  if (orbits.size() > static_cast<std::size_t>(kMaxStateVectors)) {
+    throw InputError(
+        a.file(), "generalAnnotation.orbitList",
+        fmt::format("{} state vectors; expected at most {}", orbits.size(), kMaxStateVectors));
+  }
   UtcTime epoch = a.time(orbits.front(), "time");
-  epoch.seconds_of_day = 0.0;  // midnight of the first vector's day
+  epoch.seconds_of_day = 0.0;
   std::vector<StateVector> sv;
   for (const CPLXMLNode* o : orbits) {
     sv.push_back(
@@ -137,55 +181,123 @@ Acquisition read_sentinel1(const std::filesystem::path& path, const AcquisitionO
          {a.number(o, "position.x"), a.number(o, "position.y"), a.number(o, "position.z")},
          {a.number(o, "velocity.x"), a.number(o, "velocity.y"), a.number(o, "velocity.z")}});
   }
-  acq.orbit = Orbit(epoch, std::move(sv), a.file());
+  const std::string list = "generalAnnotation.orbitList.orbit.";
+  require_physical_state_vectors(sv, a.file(),
+                                 {list + "time", list + "position", list + "velocity"});
+  return Orbit(epoch, std::move(sv), a.file());
+}
 
-  // Earth model and range grid.
-  acq.ellipsoid = Ellipsoid::from_axes(
-      a.number(p, "imageAnnotation.processingInformation.ellipsoidSemiMajorAxis"),
-      a.number(p, "imageAnnotation.processingInformation.ellipsoidSemiMinorAxis"));
-  RadarGrid& g = acq.grid;
+// The ellipsoid the annotation states.
+Ellipsoid read_ellipsoid(const Annotation& a) {
+  const std::string info = "imageAnnotation.processingInformation.";
+  const double major_m =
+      a.number(a.product(), info + "ellipsoidSemiMajorAxis", kEllipsoidAxisRange);
+  const double minor_m =
+      a.number(a.product(), info + "ellipsoidSemiMinorAxis", kEllipsoidAxisRange);
+  if (minor_m > major_m) {
+    throw InputError(a.file(), info + "ellipsoidSemiMinorAxis",
+                     fmt::format("{} m exceeds the semi-major axis {} m", minor_m, major_m));
+  }
+  return Ellipsoid::from_axes(major_m, minor_m);
+}
+
+// The grid's range axis and the radar's constants (the azimuth axis is
+// read_azimuth_grid's).
+RadarGrid read_range_grid(const Annotation& a) {
+  const CPLXMLNode* p = a.product();
   const double c = kSpeedOfLight_m_per_s;
-  g.near_range_m = a.number(p, "imageAnnotation.imageInformation.slantRangeTime") * c / 2.0;
+  // The two-way time of kSlantRangeRange.
+  const ValueRange range_time{2.0 * kSlantRangeRange.lo / c, 2.0 * kSlantRangeRange.hi / c, "s",
+                              "a two-way slant range time"};
+  RadarGrid g;
+  g.near_range_m =
+      a.number(p, "imageAnnotation.imageInformation.slantRangeTime", range_time) * c / 2.0;
   g.range_spacing_m =
-      c / (2.0 * a.number(p, "generalAnnotation.productInformation.rangeSamplingRate"));
-  g.bins = static_cast<int>(a.number(p, "imageAnnotation.imageInformation.numberOfSamples"));
-  g.wavelength_m = c / a.number(p, "generalAnnotation.productInformation.radarFrequency");
+      c / (2.0 * a.number(p, "generalAnnotation.productInformation.rangeSamplingRate",
+                          kRangeSamplingRateRange));
+  g.bins = a.whole(p, "imageAnnotation.imageInformation.numberOfSamples", 1, kMaxGridLines);
+  g.wavelength_m =
+      c / a.number(p, "generalAnnotation.productInformation.radarFrequency", kRadarFrequencyRange);
   g.look_side = LookSide::right;  // every Sentinel-1 mode looks right
-  g.line_interval_s = a.number(p, "imageAnnotation.imageInformation.azimuthTimeInterval");
-  g.prf_hz = a.number(p, "generalAnnotation.downlinkInformationList.downlinkInformation.prf");
+  g.line_interval_s =
+      a.number(p, "imageAnnotation.imageInformation.azimuthTimeInterval", kLineIntervalRange);
+  g.prf_hz =
+      a.number(p, "generalAnnotation.downlinkInformationList.downlinkInformation.prf", kPrfRange);
+  return g;
+}
 
-  // Azimuth grid: bursts (TOPS) or one strip.
+// A time of the annotation in seconds since epoch, within kProductTimeRange.
+double seconds_since(const Annotation& a, const CPLXMLNode* from, const std::string& path,
+                     const UtcTime& epoch) {
+  return require_in_range(a.time(from, path).seconds_since(epoch), kProductTimeRange, a.file(),
+                          path);
+}
+
+// The azimuth axis: one strip, one burst or the debursted sub-swath.
+void read_azimuth_grid(const Annotation& a, const AcquisitionOptions& options, Acquisition& acq) {
+  const CPLXMLNode* p = a.product();
+  const std::string mode = a.text(p, "adsHeader.mode");
+  const UtcTime& epoch = acq.orbit.epoch();
+  RadarGrid& g = acq.grid;
   const auto bursts = a.children("swathTiming.burstList", "burst");
-  const int lines_per_burst = static_cast<int>(a.number(p, "swathTiming.linesPerBurst"));
   if (bursts.empty()) {
     if (options.burst) throw InputError("", "--burst", "the product has no bursts (stripmap)");
     g.sensing_start_s =
-        a.time(p, "imageAnnotation.imageInformation.productFirstLineUtcTime").seconds_since(epoch);
-    g.lines = static_cast<int>(a.number(p, "imageAnnotation.imageInformation.numberOfLines"));
-  } else if (options.burst) {
+        seconds_since(a, p, "imageAnnotation.imageInformation.productFirstLineUtcTime", epoch);
+    g.lines = a.whole(p, "imageAnnotation.imageInformation.numberOfLines", 1, kMaxGridLines);
+    return;
+  }
+  // Stripmap annotations give linesPerBurst 0: read only with bursts.
+  const int lines_per_burst = a.whole(p, "swathTiming.linesPerBurst", 1, kMaxGridLines);
+  std::vector<double> starts_s;
+  for (const CPLXMLNode* b : bursts) {
+    starts_s.push_back(seconds_since(a, b, "azimuthTime", epoch));
+  }
+  require_increasing_in_range(starts_s, kProductTimeRange, a.file(),
+                              "swathTiming.burstList.burst.azimuthTime");
+  if (options.burst) {
     const int b = *options.burst;
     if (b < 0 || b >= static_cast<int>(bursts.size())) {
       throw InputError("", "--burst",
                        fmt::format("expected 0..{} (the product has {} bursts), got {}",
                                    bursts.size() - 1, bursts.size(), b));
     }
-    g.sensing_start_s = a.time(bursts[b], "azimuthTime").seconds_since(epoch);
+    g.sensing_start_s = starts_s[static_cast<std::size_t>(b)];
     g.lines = lines_per_burst;
     acq.notes.push_back(fmt::format("{} burst {} of {}: lines {}..{} of the SLC image", mode, b,
-                                    bursts.size(), b * lines_per_burst,
-                                    (b + 1) * lines_per_burst - 1));
-  } else {
-    const double t0 = a.time(bursts.front(), "azimuthTime").seconds_since(epoch);
-    const double t1 = a.time(bursts.back(), "azimuthTime").seconds_since(epoch) +
-                      (lines_per_burst - 1) * g.line_interval_s;
-    g.sensing_start_s = t0;
-    g.lines = static_cast<int>(std::lround((t1 - t0) / g.line_interval_s)) + 1;
-    acq.notes.push_back(fmt::format(
-        "{} sub-swath of {} bursts on one debursted zero-Doppler grid ({} lines; the SLC "
-        "image stacks {} lines of overlapping bursts)",
-        mode, bursts.size(), g.lines, bursts.size() * static_cast<std::size_t>(lines_per_burst)));
+                                    bursts.size(), std::int64_t{b} * lines_per_burst,
+                                    (std::int64_t{b} + 1) * lines_per_burst - 1));
+    return;
   }
-  if (!acq.orbit.covers(g.sensing_start_s) || !acq.orbit.covers(g.end_s())) {
+  const double t0 = starts_s.front();
+  const double t1 = starts_s.back() + (lines_per_burst - 1) * g.line_interval_s;
+  g.sensing_start_s = t0;
+  g.lines =
+      static_cast<int>(checked_count(std::round((t1 - t0) / g.line_interval_s) + 1.0, kMaxGridLines,
+                                     a.file(), "swathTiming.burstList", "debursted lines"));
+  acq.notes.push_back(fmt::format(
+      "{} sub-swath of {} bursts on one debursted zero-Doppler grid ({} lines; the SLC "
+      "image stacks {} lines of overlapping bursts)",
+      mode, bursts.size(), g.lines, bursts.size() * static_cast<std::size_t>(lines_per_burst)));
+}
+
+}  // namespace
+
+Acquisition read_sentinel1(const std::filesystem::path& path, const AcquisitionOptions& options) {
+  const Annotation a(sentinel1_annotation_path(path, options.swath));
+  const CPLXMLNode* p = a.product();
+  require_slant_range_slc(a);
+
+  Acquisition acq;
+  acq.source = a.file();
+  acq.format = "sentinel-1-safe";
+  acq.mission = a.text(p, "adsHeader.missionId");
+  acq.polarisation = a.text(p, "adsHeader.polarisation");
+  acq.orbit = read_orbit(a);
+  acq.ellipsoid = read_ellipsoid(a);
+  acq.grid = read_range_grid(a);
+  read_azimuth_grid(a, options, acq);
+  if (!acq.orbit.covers(acq.grid.sensing_start_s) || !acq.orbit.covers(acq.grid.end_s())) {
     throw InputError(a.file(), "generalAnnotation.orbitList",
                      "the orbit does not cover the image's lines");
   }
@@ -201,11 +313,11 @@ std::vector<Sentinel1TiePoint> read_sentinel1_tie_points(const std::filesystem::
     Sentinel1TiePoint t;
     t.azimuth_time = a.time(n, "azimuthTime");
     t.slant_range_time_s = a.number(n, "slantRangeTime");
-    t.line = static_cast<int>(a.number(n, "line"));
-    t.pixel = static_cast<int>(a.number(n, "pixel"));
-    t.lat_deg = a.number(n, "latitude");
-    t.lon_deg = a.number(n, "longitude");
-    t.height_m = a.number(n, "height");
+    t.line = a.whole(n, "line", 0, kMaxGridLines);
+    t.pixel = a.whole(n, "pixel", 0, kMaxGridLines);
+    t.lat_deg = a.number(n, "latitude", kLatitudeRange);
+    t.lon_deg = a.number(n, "longitude", kLongitudeRange);
+    t.height_m = a.number(n, "height", kGroundHeightRange);
     t.incidence_deg = a.number(n, "incidenceAngle");
     t.elevation_deg = a.number(n, "elevationAngle");
     out.push_back(t);

@@ -10,6 +10,11 @@
 // - ris's own TOML: state vectors, or a generated circular orbit or
 //   constant-height flight line, plus the grid (acquisition_toml.cpp,
 //   docs/geometry.md, data/acquisitions/).
+// Sentinel-1 GRD annotations (ground-range pixels) are refused naming
+// adsHeader.productType. Every value the product readers take is checked
+// finite and in a physical range, and HDF5 dataset sizes before they are
+// read (ris/sensor/product_values.h, docs/limits.md); an acquisition path
+// that is a FIFO or device is refused before it is opened.
 // Doppler is zero (zero-Doppler grids: NISAR, Sentinel-1 SLC, ISCE3's
 // default); a product that declares otherwise is read as zero-Doppler and
 // says so in `notes`.
