@@ -287,8 +287,8 @@ StudyResult run_study(const Scene& scene, const RadarParams& base_radar, const S
     p.simulation = slar_metadata(scene, sim, pic, info);
     result.panels.push_back(std::move(p));
   }
-  result.incidence.bin.clear();
-  result.incidence.bin.shrink_to_fit();
+  result.incidence.bin = {};
+  result.incidence.incidence_rad = {};
   choose_best(result);
   return result;
 }

@@ -127,6 +127,7 @@ IncidenceBins incidence_bins(const SlarSimulation& sim, const PixelAttribution& 
   ib.range_lo_m = img.range.near_m + window.range_lo_fraction * extent;
   ib.range_hi_m = img.range.near_m + window.range_hi_fraction * extent;
   ib.bin.assign(at.category.size(), -1);
+  ib.incidence_rad.assign(at.category.size(), std::numeric_limits<float>::quiet_NaN());
   // Bins from 0 rad: the same edges in every band and run.
   int lo_bin = std::numeric_limits<int>::max(), hi_bin = -1;
   std::vector<int> raw(at.category.size(), -1);
@@ -148,7 +149,9 @@ IncidenceBins incidence_bins(const SlarSimulation& sim, const PixelAttribution& 
   ib.count = hi_bin - lo_bin + 1;
   ib.first_lo_rad = lo_bin * ib.width_rad;
   for (std::size_t p = 0; p < raw.size(); ++p) {
-    if (raw[p] >= 0) ib.bin[p] = raw[p] - lo_bin;
+    if (raw[p] < 0) continue;
+    ib.bin[p] = raw[p] - lo_bin;
+    ib.incidence_rad[p] = 0.5f * (at.incidence_lo_rad[p] + at.incidence_hi_rad[p]);
   }
   return ib;
 }

@@ -73,6 +73,7 @@ TEST(StudySeparability, StatisticsOfOneBin) {
   IncidenceBins ib;
   ib.count = 1;
   ib.bin.assign(labels.size(), 0);
+  ib.incidence_rad.assign(labels.size(), 0.5f);  // one incidence: no trend
   const BandSeparability s =
       band_separability(labels, ib, cal, looks, {1, 2, 3}, SeparabilityOptions{3.0, 20});
   ASSERT_EQ(s.bins.size(), 1u);
@@ -94,6 +95,36 @@ TEST(StudySeparability, StatisticsOfOneBin) {
   EXPECT_EQ(s.compared_pairs, 1);
   EXPECT_EQ(s.separated_pairs, 1);
   EXPECT_DOUBLE_EQ(s.score, b.jm);
+}
+
+// One law I = exp(20 t) (+-10 % noise) for two categories lying at the two
+// halves of one incidence bin (t 0-9 and 10-19 mrad): compared at the pair's
+// mean incidence along the bin's common trend they agree; their plain means
+// differ by 20 x 10 mrad = 0.87 dB, far beyond the sampling error.
+TEST(StudySeparability, TrendInsideABinIsRemovedBeforeComparing) {
+  std::vector<std::int32_t> labels;
+  std::vector<double> cal, looks;
+  IncidenceBins ib;
+  ib.count = 1;
+  for (int c = 1; c <= 2; ++c) {
+    for (int p = 0; p < 400; ++p) {
+      const double t = 0.01 * (c - 1) + 0.001 * (p % 10);
+      labels.push_back(c);
+      cal.push_back(std::exp(20.0 * t) * ((p / 10) % 2 == 0 ? 0.9 : 1.1));
+      looks.push_back(10.0);
+      ib.bin.push_back(0);
+      ib.incidence_rad.push_back(static_cast<float>(t));
+    }
+  }
+  const BandSeparability s =
+      band_separability(labels, ib, cal, looks, {1, 2}, SeparabilityOptions{3.0, 20});
+  ASSERT_EQ(s.pairs.size(), 1u);
+  EXPECT_NEAR(s.pairs[0].delta_db, 0.0, 0.02);
+  EXPECT_FALSE(s.pairs[0].separated) << s.pairs[0].z;
+  // The plain means: 10 log10(exp(-0.2)) = -0.869 dB apart.
+  double m1 = 0.0, m2 = 0.0;
+  for (std::size_t i = 0; i < 400; ++i) m1 += cal[i] / 400.0, m2 += cal[400 + i] / 400.0;
+  EXPECT_NEAR(10.0 * std::log10(m1 / m2), -0.869, 0.01);
 }
 
 // A flat scene of 40 x 40-cell squares (400 m) in a checkerboard of two
@@ -151,6 +182,9 @@ name = "muhleman"
   const StudyResult r = run_study(checkerboard(), radar(false), *sigma0, "lib.toml", bands);
   ASSERT_EQ(r.panels.size(), 3u);
   EXPECT_GT(r.incidence.count, 3);
+  // Bonferroni over 3 bands x 1 pair at a family error of 1 %.
+  EXPECT_DOUBLE_EQ(r.z_critical, normal_two_sided_quantile(0.01 / 3.0));
+  EXPECT_NEAR(r.z_critical, 2.935, 1e-3);
   for (const StudyPanel& p : r.panels) {
     ASSERT_EQ(p.separability.pairs.size(), 1u);
     const PairSeparability& s = p.separability.pairs[0];
@@ -213,6 +247,11 @@ gamma_db = -7.0
   for (const PairBin& b : r.panels[1].separability.bins) {
     EXPECT_DOUBLE_EQ(b.looks, 8.0);
     EXPECT_NEAR(b.jm, jm, 0.15) << b.bin;
+    // Calibrated: the means are sigma0 itself, gamma cos t at the bin's
+    // incidence (within 0.3 dB: a few standard errors and the bin's width).
+    const double t = r.incidence.first_lo_rad + (b.bin + 0.5) * r.incidence.width_rad;
+    EXPECT_NEAR(10.0 * std::log10(b.mean_a), -10.0 + 10.0 * std::log10(std::cos(t)), 0.3);
+    EXPECT_NEAR(10.0 * std::log10(b.mean_b), -7.0 + 10.0 * std::log10(std::cos(t)), 0.3);
   }
   for (int i : {0, 2}) {
     EXPECT_FALSE(r.panels[i].separability.pairs[0].separated) << r.panels[i].band.label();

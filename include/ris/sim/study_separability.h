@@ -15,7 +15,11 @@
 //      lies inside the chosen range interval (a fraction of the swath, e.g.
 //      the seed's "middle third") and every element contributing to it has
 //      its local incidence within one incidence bin (`incidence_bin_rad`
-//      wide); pairs are compared within each incidence bin.
+//      wide); pairs are compared within each incidence bin, at one
+//      incidence: each category's mean is moved to the pair's mean incidence
+//      along the bin's common trend (the pooled within-category slope of
+//      I / m on incidence, an analysis of covariance), so that categories
+//      at the two edges of a bin are not told apart by the slope of one law.
 //   3. Speckle at the radar's number of looks L (the image's N per range
 //      bin): a category's calibrated intensity in a bin is Gamma(L, m / L)
 //      with m its mean. For two such laws the Bhattacharyya distance has the
@@ -29,7 +33,8 @@
 //   4. Sampling error. m is estimated from n pixels: ln m has standard error
 //      s / (m sqrt n) (s the pixels' standard deviation: speckle and any
 //      variation left inside the bin). Per bin z = ln(m_a / m_b) / sigma,
-//      sigma^2 the sum of both squared errors; over the interval the bins'
+//      sigma^2 the sum of both squared errors and the slope's variance times
+//      the squared difference of the categories' mean incidence; over the interval the bins'
 //      log ratios are combined with inverse-variance weights into Z. A pair
 //      is separated when |Z| > z_critical (run_study: a Bonferroni bound over
 //      every pair and band, family error 1 %); otherwise its difference is
@@ -90,7 +95,8 @@ struct StudyWindow {
 };
 
 struct IncidenceBins {
-  std::vector<std::int32_t> bin;  // per pixel, or -1 (outside the window, mixed incidence)
+  std::vector<std::int32_t> bin;     // per pixel, or -1 (outside the window, mixed incidence)
+  std::vector<float> incidence_rad;  // per pixel: the middle of its contributors' span
   int count = 0;
   double first_lo_rad = 0.0;  // bin k covers [first + k w, first + (k + 1) w)
   double width_rad = 0.0;
@@ -109,7 +115,7 @@ struct PairBin {
   int bin = 0;
   std::uint16_t a = 0, b = 0;
   std::int64_t pixels_a = 0, pixels_b = 0;
-  double mean_a = 0.0, mean_b = 0.0;  // calibrated sigma0, linear
+  double mean_a = 0.0, mean_b = 0.0;  // calibrated sigma0 (linear) at the pair's mean incidence
   double looks = 0.0;
   double sigma_log = 0.0;  // standard error of ln(mean_a / mean_b)
   double z = 0.0, jm = 0.0, jm_noise = 0.0;
