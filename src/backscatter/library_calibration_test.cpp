@@ -65,10 +65,16 @@ TEST(LibraryCalibration, GenericTerrainIsWithinOneDbOfItsHandbookClass) {
 // every handbook class at L, S and C band (shrubs: L and C; its S rows are not
 // shipped), each equal to the class's ulaby_dobson model.
 TEST(LibraryCalibration, HandbookLibraryResolvesEveryClassAtLSAndC) {
+  // Every class at L, S and C band (shrubs not at S); trees at X band only.
   auto lib = load_sigma0_source(std::string(ris::test::data_dir()) +
                                 "/backscatter/ulaby-dobson-1989.toml");
   const char* classes[] = {"soil", "grass", "short_vegetation", "shrubs", "dry_snow", "wet_snow"};
-  ASSERT_EQ(lib->category_ids().size(), 6u);
+  ASSERT_EQ(lib->category_ids().size(), 7u);  // and trees (46), X band only
+  for (double f : {1.25e9, 3.2e9, 5.3e9, 13e9}) {
+    EXPECT_THROW(lib->sigma0(46, deg_to_rad(30.0), {f, Polarisation::HH}), InputError) << f;
+  }
+  EXPECT_EQ(lib->sigma0(46, deg_to_rad(30.0), {9.6e9, Polarisation::HV}),
+            handbook_class("trees")->sigma0(deg_to_rad(30.0), {9.6e9, Polarisation::HV}));
   for (std::uint16_t id = 40; id <= 45; ++id) {
     auto ref = handbook_class(classes[id - 40]);
     for (double f : {1.25e9, 3.2e9, 5.3e9}) {

@@ -33,6 +33,8 @@ constexpr std::array kModels = {
     Entry{"dubois1995", detail::make_dubois1995, "bare soil HH/VV, Dubois, van Zyl & Engman 1995"},
     Entry{"spm", detail::make_spm, "first-order small perturbation, Gaussian/exponential"},
     Entry{"i2em", detail::make_i2em, "improved integral equation model, Fung et al. 2002"},
+    Entry{"morchin", detail::make_morchin,
+          "land clutter: A sin(psi)/lambda + specular term, Morchin 1990 (0.3-8 GHz)"},
     Entry{"water_cloud", detail::make_water_cloud,
           "vegetation over a ground model, Attema & Ulaby 1978"},
 };

@@ -1,5 +1,6 @@
 // The frequency/polarisation study: band lists, category attribution,
-// contrast, and a synthetic scene whose best band is known by construction.
+// the choice of band, and a synthetic scene whose best band is known by
+// construction.
 #include "ris/sim/study.h"
 
 #include <gtest/gtest.h>
@@ -7,13 +8,17 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
 
+#include "build_paths.h"
 #include "ris/backscatter/library.h"
 #include "ris/sensor/radar_config.h"
+#include "ris/sim/study_config.h"
 #include "ris/util/error.h"
+#include "ris/util/units.h"
 #include "test_util.h"
 
 namespace ris {
@@ -68,24 +73,6 @@ TEST(StudyBands, BadListsAreInputErrorsNamingTheOption) {
             std::string::npos);
 }
 
-CategoryStats stats(std::uint16_t c, std::int64_t n, double mean, double sd, double p) {
-  return CategoryStats{c, "c" + std::to_string(c), n, mean, sd, p};
-}
-
-TEST(StudyContrast, PooledSeparabilityAndPowerRatio) {
-  // |100 - 120| / sqrt((10^2 + 20^2) / 2) = 20 / 15.811 = 1.26491
-  const PairContrast c = study_contrast(stats(3, 10, 100, 10, 4e-12), stats(1, 10, 120, 20, 1e-12));
-  EXPECT_EQ(c.a, 1);
-  EXPECT_EQ(c.b, 3);
-  EXPECT_NEAR(c.contrast, 1.26491, 1e-5);
-  EXPECT_NEAR(c.delta_db, 6.0206, 1e-4);  // 10 log10(4)
-  // Noiseless: the quantisation floor 1/sqrt(12).
-  EXPECT_NEAR(study_contrast(stats(1, 5, 100, 0, 1), stats(2, 5, 101, 0, 1)).contrast,
-              std::sqrt(12.0), 1e-12);
-  EXPECT_TRUE(
-      std::isnan(study_contrast(stats(1, 0, NAN, NAN, NAN), stats(2, 5, 1, 1, 1)).contrast));
-}
-
 TEST(StudyContrast, CategoryStatsOverAttributedPixelsOnly) {
   const std::vector<std::int32_t> labels{1, 1, -1, 2, 2, 2, 7};
   const std::vector<std::uint8_t> grey{10, 20, 200, 50, 50, 80, 90};
@@ -102,19 +89,24 @@ TEST(StudyContrast, CategoryStatsOverAttributedPixelsOnly) {
   EXPECT_TRUE(std::isnan(s[2].mean_grey));
 }
 
-TEST(StudyContrast, ChoosesThePanelWhoseWorstPairIsBest) {
+TEST(StudyContrast, ChoosesThePanelOfLargestScoreOrNone) {
   StudyResult r;
   r.panels.resize(3);
-  r.panels[0].pairs = {{1, 2, 9.0, 0}, {1, 3, 0.1, 0}, {2, 3, 8.0, 0}};  // best pair, bad worst
-  r.panels[1].pairs = {{1, 2, 2.0, 0}, {1, 3, 1.5, 0}, {2, 3, 3.0, 0}};  // best worst pair
-  r.panels[2].pairs = {{1, 2, 1.0, 0}, {1, 3, NAN, 0}, {2, 3, 1.2, 0}};
+  r.panels[0].separability.score = 0.2;
+  r.panels[1].separability.score = 0.7;
+  r.panels[2].separability.score = 0.0;
+  r.null_check_run = true;
+  r.panels[2].null_separability.max_abs_z = 2.5;
   choose_best(r);
   EXPECT_EQ(r.best_panel, 1);
-  EXPECT_EQ(r.best_pair_panel, 0);
-  EXPECT_EQ(r.best_pair.a, 1);
-  EXPECT_EQ(r.best_pair.b, 2);
-  EXPECT_DOUBLE_EQ(r.panels[1].min_contrast, 1.5);
-  EXPECT_DOUBLE_EQ(r.panels[2].min_contrast, 1.0);  // NaN pairs ignored
+  EXPECT_TRUE(r.null_check_passed);
+  EXPECT_DOUBLE_EQ(r.null_max_abs_z, 2.5);
+  // No separated pair anywhere: no best band.
+  for (StudyPanel& p : r.panels) p.separability.score = 0.0;
+  r.panels[0].null_separability.separated_pairs = 1;
+  choose_best(r);
+  EXPECT_EQ(r.best_panel, -1);
+  EXPECT_FALSE(r.null_check_passed);
 }
 
 // A flat scene of three azimuth blocks (30 rows each): categories 1, 2, 3.
@@ -151,8 +143,7 @@ fading = false
 // Known contrast per band (constant gamma, dB): grass -10 everywhere, soil -9
 // everywhere, crop -10 at L band, -4 at X band (8-9 GHz), -9.5 at Ku band
 // (12-14 GHz). Pairs (grass, crop, soil) in dB: L 0/1/1, X 6/5/1, Ku 0.5/0.5/1;
-// the worst pair is best at X band (1 dB), and the best pair is grass/crop at
-// X band (6 dB).
+// X band separates best.
 const char* kLibrary = R"(
 [library]
 name = "three"
@@ -190,37 +181,49 @@ name = "constant_gamma"
 gamma_db = -9.0
 )";
 
+// The same radar with exact gamma fading, for the separability tests.
+std::string with_fading(std::string radar) {
+  const std::string off = "[film.terms]\nfading = false\n";
+  radar.replace(radar.find(off), off.size(), "fading = \"exact\"\n");
+  return radar;
+}
+
 struct Synthetic {
   TempDir dir;
   std::string library = (dir / "three.toml").string();
   RadarParams radar = radar_from_toml(toml::parse(kRadar), "radar.toml");
+  RadarParams speckled = radar_from_toml(toml::parse(with_fading(kRadar)), "radar.toml");
   Synthetic() { write_file(library, kLibrary); }
 };
 
-TEST(Study, SyntheticSceneTheKnownBandAndPairWin) {
+TEST(Study, SyntheticSceneTheKnownBandWins) {
   const Synthetic in;
   const auto sigma0 = load_sigma0_source(in.library);
   const Scene scene = three_blocks();
   const auto bands = parse_study_bands("1.25 GHz:HH, 8.6 GHz:HH, 13 GHz:HH", "--bands");
-  const StudyResult r = run_study(scene, in.radar, *sigma0, in.library, bands);
+  const StudyResult r = run_study(scene, in.speckled, *sigma0, in.library, bands);
   ASSERT_EQ(r.panels.size(), 3u);
   EXPECT_EQ(r.categories, (std::vector<std::uint16_t>{1, 2, 3}));
   EXPECT_EQ(r.best_panel, 1);
-  EXPECT_EQ(r.best_pair_panel, 1);
-  EXPECT_EQ(r.best_pair.a, 1);
-  EXPECT_EQ(r.best_pair.b, 2);
 
-  // Every block sees the same bins, so the mean-power ratio is the sigma0
-  // ratio exactly (float rounding only).
+  // Calibrated sigma0 at matched geometry: the ratio of the categories'
+  // sigma0 (dB, a over b), within the speckle's sampling error.
   const std::map<std::pair<int, int>, std::array<double, 3>> expected_db{
-      {{1, 2}, {0.0, 6.0, 0.5}}, {{1, 3}, {1.0, 1.0, 1.0}}, {{2, 3}, {1.0, 5.0, 0.5}}};
+      {{1, 2}, {0.0, -6.0, -0.5}}, {{1, 3}, {-1.0, -1.0, -1.0}}, {{2, 3}, {-1.0, 5.0, -0.5}}};
   for (std::size_t i = 0; i < 3; ++i) {
     const StudyPanel& p = r.panels[i];
-    ASSERT_EQ(p.pairs.size(), 3u);
+    ASSERT_EQ(p.separability.pairs.size(), 3u);
     ASSERT_EQ(p.stats.size(), 3u);
-    for (const PairContrast& c : p.pairs) {
-      EXPECT_NEAR(c.delta_db, expected_db.at({c.a, c.b})[i], 1e-3)
+    for (const PairSeparability& c : p.separability.pairs) {
+      const double want = expected_db.at({c.a, c.b})[i];
+      // Within 4 standard errors (sigma_dB = delta_db / z; L band has 1.5
+      // looks, X band 10).
+      const double sigma_db = std::abs(c.delta_db / c.z);
+      EXPECT_LT(std::abs(c.delta_db - want), 4.0 * sigma_db + 1e-3)
           << p.band.label() << " " << c.a << "/" << c.b;
+      EXPECT_LT(sigma_db, 0.2) << p.band.label();
+      // A difference of 0.5 dB or more is far beyond the sampling error here.
+      EXPECT_EQ(c.separated, std::abs(want) >= 0.5) << p.band.label() << " " << c.a << "/" << c.b;
     }
     // Every block loses its footprint's reach at both ends (a category
     // boundary or the track's end): equal counts, fewer than 28 lines' worth.
@@ -230,9 +233,10 @@ TEST(Study, SyntheticSceneTheKnownBandAndPairWin) {
     EXPECT_LE(p.stats[1].pixels, 28 * p.bins);
     EXPECT_EQ(static_cast<int>(p.slant_grey.size()), p.lines * p.bins);
   }
-  // Greytone contrast follows dB contrast: at X band grass/crop beats soil/crop.
-  EXPECT_GT(r.panels[1].pairs[0].contrast, r.panels[1].pairs[2].contrast);
-  EXPECT_NEAR(r.panels[0].pairs[0].contrast, 0.0, 1e-9);  // L band: grass = crop
+  // At X band crop is told from both others by more than they from each other.
+  const auto& x = r.panels[1].separability.pairs;
+  EXPECT_GT(x[0].jm, x[1].jm);
+  EXPECT_GT(x[2].jm, x[1].jm);
 }
 
 TEST(Study, AttributionLeavesBlockBoundariesOut) {
@@ -277,6 +281,24 @@ TEST(Study, BandOutsideTheLibraryNamesBandAndCategory) {
   EXPECT_NE(e.find("20 GHz VV"), std::string::npos) << e;
   EXPECT_NE(e.find("grass"), std::string::npos) << e;
   EXPECT_NE(e.find("--bands"), std::string::npos) << e;
+}
+
+// The shipped seed case: inputs that exist, the six bands, the middle third.
+TEST(Study, SeedFigure7StudyFileIsComplete) {
+  const StudyConfig c =
+      read_study_config(std::string(test::data_dir()) + "/studies/seed-fig7.toml");
+  EXPECT_EQ(c.name, "seed figure 7");
+  for (const auto& f : {c.scene, c.radar, c.backscatter}) {
+    ASSERT_TRUE(f.has_value());
+    EXPECT_TRUE(std::filesystem::exists(*f)) << *f;
+  }
+  ASSERT_TRUE(c.bands.has_value());
+  EXPECT_EQ(parse_study_bands(*c.bands, "bands"), default_study_bands());
+  EXPECT_NEAR(*c.range_lo_fraction, 1.0 / 3.0, 1e-9);
+  EXPECT_NEAR(*c.range_hi_fraction, 2.0 / 3.0, 1e-9);
+  EXPECT_NEAR(*c.incidence_bin_rad, deg_to_rad(1.0), 1e-12);
+  const RadarParams radar = load_radar(*c.radar);
+  EXPECT_NEAR(radar.track.altitude_m, 4000 * 0.3048, 1e-6);
 }
 
 }  // namespace

@@ -1,43 +1,40 @@
 // The frequency/polarisation study (the seed's figure 7): one scene and one
-// track imaged at several (frequency, polarisation) pairs, with per-category
-// greytone statistics and the contrast between categories in each panel, to
-// choose the band that best separates the scene's categories.
+// track imaged at several (frequency, polarisation) pairs, to find the band
+// that best tells the scene's categories apart.
 //
 // Each panel is a full SLAR run through the public pipeline (simulate_slar,
-// render_slar) with the radar file re-read with its `frequency` and
-// `polarisation` keys replaced, so every frequency-dependent default (the
-// reference cell's wavelength, the seed's equation-16 N = 2 R phi^2 / lambda)
-// follows the band. The geometry does not depend on the band, but
-// simulate_slar offers no way to pass one in, so it is recomputed per panel.
+// render_slar) with the radar at the band (radar_at_band: every
+// frequency-dependent default follows it, e.g. the seed's equation-16
+// N = 2 R phi^2 / lambda). Categories are compared by calibrated sigma0 at
+// matched geometry, with speckle at the radar's number of looks, pair by pair
+// (ris/sim/study_separability.h): per band, two more runs of the same
+// geometry give each pixel's radar-equation factor (sigma0 = 1 everywhere)
+// and the null check (one backscatter, Muhleman's law, for every category:
+// no pair may then be separated beyond its sampling error).
 //
-// Category attribution (pure_category_map): a slant-range pixel is given to
-// category c when every visible scene element that contributes power to it
-// is of category c. An element contributes to the range bins its slant-range
-// span [min(R_near_end, R, R_far_end), max(...)] overlaps (slar_image.h) on
-// every azimuth line within the footprint half-width w(R)/2 = R phi / 2 of
-// its own line, plus one line (conservative: the image counts partial line
-// overlaps), and every line of that footprint window lies inside the image
-// and has such elements (a footprint that reaches past the track's ends, or
-// over a line with nothing in the bin, would lower the power). Pixels
-// flagged shadow, layover or no data are never attributed.
-// Statistics are taken on the panel's greytones (after speckle, as an
-// interpreter sees them) and on the mean power before speckle.
+// Category attribution (attribute_pixels, pure_category_map): a slant-range
+// pixel is given to category c when every visible scene element that
+// contributes power to it is of category c. An element contributes to the
+// range bins its slant-range span [min(R_near_end, R, R_far_end), max(...)]
+// overlaps (slar_image.h) on every azimuth line within the footprint
+// half-width w(R)/2 = R phi / 2 of its own line, plus one line
+// (conservative: the image counts partial line overlaps), and every line of
+// that footprint window lies inside the image and has such elements (a
+// footprint that reaches past the track's ends, or over a line with nothing
+// in the bin, would lower the power). Pixels flagged shadow, layover or no
+// data are never attributed. The geometry does not depend on the band, so
+// the attribution is computed once.
 //
-// Contrast between categories a and b in a panel (study_contrast):
-//   C_ab = |mean_a - mean_b| / sqrt((var_a + var_b) / 2)
-// over greytones (the two-class separability d' with a pooled standard
-// deviation; speckle and the range trend inside a category widen var), and,
-// beside it, delta_db = |10 log10(Pbar_a / Pbar_b)| where Pbar is a
-// category's mean of the mean (pre-speckle) power over its pixels.
-// The pair that discriminates best is the (panel, pair) of largest C; the
-// panel that best separates all categories is the one whose smallest C over
-// all pairs is largest (every category told from every other), ties to the
-// larger mean C.
+// Greytone statistics per category (category_stats) are kept for the
+// interpreter's view (categories.csv); they do not rank bands.
 //
 // Example:
 //   auto bands = ris::parse_study_bands("1.25 GHz:HH, 8.6 GHz:VV", "--bands");
+//   ris::StudyOptions o;
+//   o.window.range_lo_fraction = 1.0 / 3.0;   // the seed's middle third
+//   o.window.range_hi_fraction = 2.0 / 3.0;
 //   ris::StudyResult r = ris::run_study(scene, ris::load_radar("radar.toml"), *sigma0,
-//                                       "lib.toml", bands);
+//                                       "lib.toml", bands, o);
 //   ris::write_study_products("study", r, info);
 #pragma once
 
@@ -56,6 +53,7 @@
 #include "ris/image/contact_sheet.h"
 #include "ris/scene/scene.h"
 #include "ris/sim/slar_simulation.h"
+#include "ris/sim/study_separability.h"
 
 namespace ris {
 
@@ -108,15 +106,6 @@ struct CategoryStats {
   double mean_power_w = 0.0;  // mean of the pre-speckle mean power
 };
 
-struct PairContrast {
-  std::uint16_t a = 0, b = 0;  // a < b
-  double contrast = 0.0;       // C_ab; NaN when either has no pixels
-  double delta_db = 0.0;
-};
-
-// C_ab and delta_db of two categories (see the header comment).
-PairContrast study_contrast(const CategoryStats& a, const CategoryStats& b);
-
 // Greytone statistics of each category over its attributed pixels.
 // `categories` lists the categories to report (one entry each, in order).
 std::vector<CategoryStats> category_stats(const std::vector<std::int32_t>& labels,
@@ -130,24 +119,33 @@ struct StudyPanel {
   int lines = 0, bins = 0;
   std::vector<std::uint8_t> slant_grey;  // lines x bins
   std::vector<CategoryStats> stats;
-  std::vector<PairContrast> pairs;  // every a < b
-  double min_contrast = 0.0;        // NaN with fewer than two reported categories
-  double mean_contrast = 0.0;
-  nlohmann::json simulation;  // slar_metadata of the run (radar, derived, ...)
+  BandSeparability separability;       // the library's backscatter
+  BandSeparability null_separability;  // one law for all (empty without the null check)
+  nlohmann::json simulation;           // slar_metadata of the run (radar, derived, ...)
 };
 
 struct StudyResult {
   std::vector<StudyPanel> panels;
   std::vector<std::uint16_t> categories;
   std::vector<std::string> category_names;
-  int best_panel = -1;       // separates all categories best
-  int best_pair_panel = -1;  // the panel of the best pair
-  PairContrast best_pair;
+  StudyWindow window;
+  IncidenceBins incidence;  // the bins' layout (its per-pixel map is dropped)
+  double z_critical = 0.0;
+  int best_panel = -1;  // the largest score; -1: no band separates these categories
+  bool null_check_run = false;
+  bool null_check_passed = false;  // no pair separated in any band's null run
+  double null_max_abs_z = 0.0;
 };
 
 struct StudyOptions {
   std::uint64_t seed = 1;  // the same fading seed in every panel
   std::string scene_path;  // for each panel's metadata
+  StudyWindow window;
+  bool null_check = true;
+  // Family error rate of the separation tests: z_critical is the two-sided
+  // normal quantile of family_error / (bands x pairs) (Bonferroni).
+  double family_error = 0.01;
+  std::int64_t min_pixels = 20;  // per category and incidence bin
   std::function<void(std::string_view, double)> progress;
 };
 
@@ -158,8 +156,12 @@ StudyResult run_study(const Scene& scene, const RadarParams& radar, const Sigma0
                       const std::string& backscatter_file, const std::vector<StudyBand>& bands,
                       const StudyOptions& options = {});
 
-// Best panel and pair from the panels' contrasts (fills best_*).
+// Best panel from the panels' scores (fills best_panel, -1 when every score
+// is 0) and the null check's verdict from the null runs.
 void choose_best(StudyResult& result);
+
+// "best band: 8.6 GHz HH" or "no band separates these categories".
+std::string study_verdict(const StudyResult& result);
 
 struct StudyRunInfo {
   std::string scene_path;
@@ -173,8 +175,11 @@ struct StudyRunInfo {
 //   contact_sheet.png     the panels side by side, labelled (the seed's fig. 7)
 //   categories.csv        panel, band, category: pixels, greytone mean/std,
 //                         mean power (dB W)
-//   contrast.csv          panel, band, pair: C_ab, delta_db
-//   metadata.json         inputs, bands, the choices and each run's metadata
+//   separability.csv      run (library / null), panel, band, pair: bins,
+//                         delta_db, z, jm, jm_noise, separated
+//   separability_bins.csv the same per incidence bin
+//   metadata.json         inputs, window, method, the verdict, the null
+//                         check and each run's metadata
 void write_study_products(const std::filesystem::path& out_dir, const StudyResult& result,
                           const StudyRunInfo& info, const ContactSheetStyle& sheet_style = {});
 
