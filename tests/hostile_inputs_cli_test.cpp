@@ -169,8 +169,8 @@ TEST(HostileInputsCli, OutputsIntoDevAndProcAreRefused) {
   // renaming over /dev/stdout replaced the system's link.
   fs::create_symlink("/proc/self/fd/1", dir / "stdout.tif");
   const auto before = listing(dir.path());
-  for (const std::string out : {std::string("/dev/ris-hostile-test.tif"),
-                                std::string("/proc/self/fd/1"), (dir / "stdout.tif").string()}) {
+  for (const std::string& out : {std::string("/dev/ris-hostile-test.tif"),
+                                 std::string("/proc/self/fd/1"), (dir / "stdout.tif").string()}) {
     const auto r = test::run_ris("scene build " + scene + " -o " + q(out));
     EXPECT_EQ(r.exit_code, 1) << out << ": " << r.output;
     EXPECT_THAT(r.output, HasSubstr("a device or kernel file system")) << out;
