@@ -112,8 +112,8 @@ const toml::node& ConfigTable::require(const std::string& key) {
     std::string hint;
     for (const std::string& name : unread) {
       if (edit_distance(name, key) <= std::max<std::size_t>(1, key.size() / 6)) {
-        hint = fmt::format("; the table has \"{}\", which is not a key: did you mean \"{}\"?",
-                           name, key);
+        hint = fmt::format("; the table has \"{}\", which is not a key: did you mean \"{}\"?", name,
+                           key);
         break;
       }
     }
