@@ -98,9 +98,9 @@ TEST(HostileInputsCli, ObjectWorkPastTheGuardIsRefusedBeforePainting) {
   expect_refused(r, 1, "the 5000 objects' cell tests", dir.path(), before);
   EXPECT_THAT(r.output, HasSubstr("'object'"));
   EXPECT_THAT(r.output, HasSubstr("RIS_NO_RESOURCE_LIMITS"));
-  // A hundred of them is work the guard allows (9e8 tests).
+  // Twenty of them is work the guard allows (1.8e8 tests).
   text = "[grid]\nrows = 3000\ncols = 3000\ncell_size = 1\n";
-  for (int i = 0; i < 100; ++i) {
+  for (int i = 0; i < 20; ++i) {
     text +=
         "[[object]]\ntype = \"patch\"\nx = 0\ny = 0\nlength = 3000\nwidth = 3000\n"
         "category = 1\n";
