@@ -12,6 +12,7 @@
 #include <string>
 
 #include "build_paths.h"
+#include "refusal_checks.h"
 #include "test_util.h"
 
 namespace ris {
@@ -22,16 +23,9 @@ namespace fs = std::filesystem;
 
 using test::q;
 
-// Every name in a folder (to show a refused run left nothing).
-std::set<std::string> listing(const fs::path& dir) {
-  std::set<std::string> out;
-  for (const auto& e : fs::directory_iterator(dir)) out.insert(e.path().filename().string());
-  return out;
-}
-
-std::string data(const std::string& relative) {
-  return std::string(test::data_dir()) + "/" + relative;
-}
+using test::data;
+using test::expect_refused;
+using test::listing;
 
 // A copy of a shipped radar file with `line` added before its [track] table.
 fs::path radar_with(const test::TempDir& dir, const std::string& shipped, const std::string& line,
@@ -43,14 +37,6 @@ fs::path radar_with(const test::TempDir& dir, const std::string& shipped, const 
   const fs::path out = dir / "radar.toml";
   test::write_file(out, text);
   return out;
-}
-
-// The run failed with `status`, said `text`, and left the folder as it was.
-void expect_refused(const test::RunResult& r, int status, const std::string& text,
-                    const fs::path& dir, const std::set<std::string>& before) {
-  EXPECT_EQ(r.exit_code, status) << r.output;
-  EXPECT_THAT(r.output, HasSubstr(text));
-  EXPECT_EQ(listing(dir), before) << r.output;
 }
 
 TEST(HardeningCli, ThreadCountAboveTheCapIsRefused) {

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "build_paths.h"
+#include "refusal_checks.h"
 #include "test_util.h"
 
 namespace ris {
@@ -25,22 +26,9 @@ using ::testing::Not;
 namespace fs = std::filesystem;
 using test::q;
 
-std::set<std::string> listing(const fs::path& dir) {
-  std::set<std::string> out;
-  for (const auto& e : fs::directory_iterator(dir)) out.insert(e.path().filename().string());
-  return out;
-}
-
-std::string data(const std::string& relative) {
-  return std::string(test::data_dir()) + "/" + relative;
-}
-
-void expect_refused(const test::RunResult& r, int status, const std::string& text,
-                    const fs::path& dir, const std::set<std::string>& before) {
-  EXPECT_EQ(r.exit_code, status) << r.output;
-  EXPECT_THAT(r.output, HasSubstr(text));
-  EXPECT_EQ(listing(dir), before) << r.output;
-}
+using test::data;
+using test::expect_refused;
+using test::listing;
 
 std::string repeat(const std::string& s, int n) {
   std::string out;

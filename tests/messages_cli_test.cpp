@@ -9,6 +9,7 @@
 #include <string>
 
 #include "build_paths.h"
+#include "refusal_checks.h"
 #include "test_util.h"
 
 namespace ris {
@@ -19,9 +20,7 @@ using ::testing::Not;
 namespace fs = std::filesystem;
 using test::q;
 
-std::string data(const std::string& relative) {
-  return std::string(test::data_dir()) + "/" + relative;
-}
+using test::data;
 
 // The shipped seed-fig4-5 radar with `from` replaced by `to` (once).
 fs::path radar_edited(const test::TempDir& dir, const std::string& from, const std::string& to) {
