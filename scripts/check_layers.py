@@ -12,12 +12,14 @@ import pathlib
 import re
 import sys
 
-# Lowest first (src/kernels/: see KERNEL_LAYER). perf holds the bench scene set-up (builds a scene, a radar
-# and runs the simulation), so it sits beside sim: it may include sim, and
-# only apps and benches include it. serve is the HTTP server of `ris serve`
+# Lowest first (src/kernels/: see KERNEL_LAYER). analysis (the study and the
+# sensitivity analysis) runs simulations and compares them, so it sits above
+# sim. perf holds the bench scene set-up (builds a scene, a radar and runs the
+# simulation), so it sits above sim too: it may include sim, and only apps and
+# benches include it. serve is the HTTP server of `ris serve`
 # (it runs simulations through sim and draws through image).
 LAYERS = ["util", "io", "scene", "sensor", "backscatter", "geometry", "image",
-          "sim", "perf", "serve", "apps"]
+          "sim", "analysis", "perf", "serve", "apps"]
 RANK = {name: i for i, name in enumerate(LAYERS)}
 # The SIMD kernels (src/kernels/<folder>/, beside their portable twins) are
 # each part of the stage they serve; the SIMD helpers (simd/, and the clone

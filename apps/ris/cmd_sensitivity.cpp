@@ -1,5 +1,5 @@
 // `ris sensitivity`: how the simulated image changes as one parameter moves,
-// or as the ground truth holds less detail (ris/sim/sensitivity.h,
+// or as the ground truth holds less detail (ris/analysis/sensitivity.h,
 // docs/quality.md "ris sensitivity"): a CSV row per run, a chart per
 // parameter, and the least detail that keeps the image within a tolerance of
 // the full-detail one (the seed's "minimum level of information").
@@ -22,7 +22,7 @@
 #include "ris/scene/scene_source.h"
 #include "ris/sensor/polarisation.h"
 #include "ris/sensor/radar_config.h"
-#include "ris/sim/sensitivity.h"
+#include "ris/analysis/sensitivity.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 #include "seed_option.h"

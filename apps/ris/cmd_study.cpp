@@ -1,7 +1,7 @@
 // `ris study`: the frequency/polarisation study (the seed's figure 7): one
 // scene and track imaged at several (frequency, polarisation) pairs, with a
 // contact sheet, per-category greytone statistics and the separability of
-// every pair of categories at matched geometry (ris/sim/study.h).
+// every pair of categories at matched geometry (ris/analysis/study.h).
 //
 //   ris study [--study FILE] [--scene S] [--radar R] [--backscatter B]
 //             [--bands "1.25 GHz:HH, 8.6 GHz:VV, ..."] [--range-fraction LO,HI]
@@ -28,8 +28,8 @@
 #include "ris/scene/scene_builder.h"
 #include "ris/scene/scene_io.h"
 #include "ris/sensor/radar_config.h"
-#include "ris/sim/study.h"
-#include "ris/sim/study_config.h"
+#include "ris/analysis/study.h"
+#include "ris/analysis/study_config.h"
 #include "ris/util/error.h"
 #include "ris/util/progress.h"
 #include "ris/util/resource_guard.h"

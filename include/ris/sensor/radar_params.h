@@ -203,7 +203,7 @@ struct RadarParams {
 // SAR's real-antenna beamwidth lambda / L) follow it, everything the file
 // gave stays. Throws InputError (naming the radar file) when the retuned
 // beamwidth reaches 180 deg. The frequency/polarisation study runs each band
-// through this (ris/sim/study.h).
+// through this (ris/analysis/study.h).
 RadarParams radar_at_band(const RadarParams& radar, double frequency_hz, Polarisation polarisation);
 
 }  // namespace ris

@@ -4,8 +4,8 @@
 // pixel. The terrain is a DEM on the WGS 84 ellipsoid; the orbit and grid
 // are the product's (ris/sensor/acquisition.h).
 //
-// It runs through the one line engine (sim/slar_line_engine.h) with the
-// acquisition's line source (sim/acquisition_lines.h: each azimuth line's
+// It runs through the one line engine (sim/engine/slar_line_engine.h) with the
+// acquisition's line source (sim/sources/acquisition_lines.h: each azimuth line's
 // terrain profile in its zero-Doppler plane, look geometry on the ellipsoid
 // or the flat Earth, shadow and layover along it), then the stages every
 // SLAR / SAR run shares: radiometry, image formation into the range

@@ -1,6 +1,6 @@
 // An acquisition run (ris/sim/acquisition_simulation.h) streamed: the radar
 // grid's window in blocks of azimuth lines, each block's lines through the
-// line engine with the acquisition's source (src/sim/acquisition_lines.h),
+// line engine with the acquisition's source (src/sim/sources/acquisition_lines.h),
 // and every product written block by block into tiled GeoTIFFs in a staged
 // output folder (ris/io/atomic_file.h: a failure leaves nothing behind).
 // The products are the in-memory run's files, byte for byte
@@ -20,13 +20,13 @@
 // radar-grid layers local_incidence and layover_shadow_mask; azimuth
 // integration, fading and the slant products as lines become ready); 1b
 // the median mean power read back (automatic greytone reference); 2 the
-// greytones in slant and ground range (src/sim/slant_stream_passes.h, as a
+// greytones in slant and ground range (src/sim/stream/slant_stream_passes.h, as a
 // scene's streamed run).
 //
 // Under MPI (`mpirun -np N ris simulate --acquisition P --dem D --stream`)
 // every rank reads the inputs and sets the run up itself, and reads the DEM
 // windows of the blocks it computes; the blocks of
-// passes 1 and 2 are computed on any rank (src/sim/block_schedule.h) and
+// passes 1 and 2 are computed on any rank (src/sim/engine/block_schedule.h) and
 // consumed by rank 0 in line order, which writes every file: the products
 // are the single process's bytes.
 //

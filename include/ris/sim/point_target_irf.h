@@ -37,7 +37,7 @@ std::vector<PointTargetIrf> measure_point_targets(const SlarSimulation& sim,
 // clipped to the image: lines [line0, line0 + lines) x bins [bin0, bin0 +
 // bins). None when its range falls outside the swath (it is not measured).
 // A streamed run keeps these windows as the lines go by
-// (src/sim/slar_stream_targets.h).
+// (src/sim/stream/slar_stream_targets.h).
 struct IrfWindow {
   int line0 = 0, lines = 0, bin0 = 0, bins = 0;
 };

@@ -39,7 +39,7 @@
 // placed on the padded rays once (their base height read from the four
 // cells around each), each block's rays find theirs lit or hidden as the
 // in-memory engine does, and rank 0 folds the blocks' results in ray order
-// (src/sim/ppi_ray_targets.h): the same returns, hidden names and
+// (src/sim/targets/ppi_ray_targets.h): the same returns, hidden names and
 // metadata.json as simulate_ppi.
 //
 // Example:

@@ -41,7 +41,7 @@
 namespace ris {
 
 namespace detail {
-struct LineKeep;  // sim/slar_line_stages.h: the kept-geometry sink and point targets
+struct LineKeep;  // sim/engine/slar_line_stages.h: the kept-geometry sink and point targets
 }  // namespace detail
 
 // Whether the fused path reproduces the reference stages for this layout:

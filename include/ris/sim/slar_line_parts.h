@@ -1,5 +1,5 @@
 // The data the line engine's parts exchange (ris/sim/slar_line_blocks.h,
-// sim/slar_line_engine.h): a source's window of scene cells, a sink's window
+// sim/engine/slar_line_engine.h): a source's window of scene cells, a sink's window
 // of scene-grid maps, and the per-sample counts the stages add up. Plain
 // structs, below both the engine and its stages.
 #pragma once

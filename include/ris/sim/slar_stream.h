@@ -14,7 +14,7 @@
 // and one strip of 256 tiles per output file; GDAL's block cache is capped
 // at 256 MiB (unless GDAL_CACHEMAX is set). The coherent SAR reads a halo of
 // H lines each side of a block (H: the azimuth response's half-length + 2;
-// src/sim/sar_coherent_stream.h) and keeps each of those lines' element
+// src/sim/stream/sar_coherent_stream.h) and keeps each of those lines' element
 // power and slant range (8 bytes a cell, a sample off the axes) and
 // range-compressed lines.
 //
@@ -32,7 +32,7 @@
 //      cell row or column) the scene-grid maps, scene rows top
 //      down, from the samples' map values pass 1 spilled to temporary
 //      rasters (pass 1 then samples each block's lines from windows of the
-//      scene along them: src/sim/slar_stream_oblique.h); the median
+//      scene along them: src/sim/stream/slar_stream_oblique.h); the median
 //      elevation's second pass;
 //   1b the mean power read back for the exact median (auto greytone
 //      reference), when the radar asks for it;
@@ -44,17 +44,17 @@
 // Under MPI (`mpirun -np N ris simulate --stream`; ris/util/process_group.h,
 // docs/scale.md) every rank reads its own windows of the scene: pass 0 is
 // split by rows and reduced exactly, the blocks of passes 1, 2b and 2 are
-// computed on any rank (src/sim/block_schedule.h) and consumed by rank 0 in
+// computed on any rank (src/sim/engine/block_schedule.h) and consumed by rank 0 in
 // order (azimuth integration, fading, every write), and pass 1b and the
 // PNGs run on rank 0: the products are the single process's bytes.
 //
 // It runs SLAR and SAR tracks at any heading (along a grid axis with one
 // azimuth line per cell row or column, fused_slar_applies; off the axes
-// with any line spacing, src/sim/slar_stream_oblique.h; along an axis at
+// with any line spacing, src/sim/stream/slar_stream_oblique.h; along an axis at
 // another spacing, the line engine's per-sample map values spilled for the
 // oblique run's pass 1m), with point targets
-// (src/sim/slar_stream_targets.h) and the coherent SAR
-// (src/sim/sar_coherent_stream.h) at any heading and line spacing (PPI
+// (src/sim/stream/slar_stream_targets.h) and the coherent SAR
+// (src/sim/stream/sar_coherent_stream.h) at any heading and line spacing (PPI
 // streams through ris/sim/ppi_stream.h).
 //
 // Example:

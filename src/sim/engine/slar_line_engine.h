@@ -1,0 +1,114 @@
+// Internal: the line engine every simulation run goes through (SLAR and SAR
+// in memory along a grid axis or off it, streamed in blocks, on an
+// acquisition's grid; PPI rays):
+//
+//   line source  ->  per-line stages  ->  profile rows + scene-map sink
+//   (terrain of     (look geometry,       (SlarLineProfiles; the source's
+//    a line)         radiometry, image     own map writer) + kept-geometry
+//                    formation, point      sink (LineKeep: the per-sample
+//                    targets)              geometry and element power of
+//                                          the whole run, when asked for)
+//
+// A run supplies a thread source: made once per thread (its scratch and
+// buffers), it hands out, once per block of lines, the source that fits the
+// block as a std::variant alternative (direct grid rows, a transposed
+// column tile, cell by cell, oblique resampling, ...). The engine visits
+// the variant once per block and runs the block's lines through that
+// source's code: the choice is made per block, never per line or sample.
+// A source has
+//   LineSpan load(int line, LineScratch& s)   the line's terrain into s
+//   void store_maps(int line, const LineSpan&, const LineScratch& s)
+//   void finish_block()                        e.g. a tile's maps written back
+// A source whose terrain is not a flat-Earth line (an acquisition's radar
+// grid on the ellipsoid: sim/sources/acquisition_lines.h; a PPI ray from its site:
+// ppi_simulation.cpp's PolarSource) computes the look geometry itself in
+// load() and says so with `static constexpr bool kMakesGeometry = true`;
+// the engine then skips line_geometry. Later sources
+// (an MPI rank's block range) add a thread source, not a driver.
+//
+// Blocks go to threads dynamically; each line's profile row and each cell's
+// maps are written by one block, so the bytes do not depend on the thread
+// count or the schedule.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <type_traits>
+#include <variant>
+
+#include "sim/engine/slar_line_stages.h"
+
+namespace ris::detail {
+
+// The samples a source put in the scratch: the line's samples [first,
+// first + n) as the scratch's elements 0..n, laid out by `layout` (the
+// run's geometry, or a span of it).
+struct LineSpan {
+  int first = 0;
+  int n = 0;
+  const SlarGeometry* layout = nullptr;
+};
+
+// Whether a source computes its lines' look geometry itself (kMakesGeometry).
+template <class Source>
+constexpr bool makes_geometry() {
+  if constexpr (requires { Source::kMakesGeometry; }) {
+    return Source::kMakesGeometry;
+  } else {
+    return false;
+  }
+}
+
+// The per-line stages' fixed parts for a run.
+struct LineStages {
+  const SlarElementContext& ctx;
+  LineLookFrame look;
+  bool need_incidence = false;  // true when keep->geometry (the kept geometry holds it)
+  double range_window_bins = 0.0;
+  // The kept-geometry sink and point targets (null: none): each line's
+  // geometry, element power and point returns, as the stage path
+  // (compute_slar_geometry + form_slar_image) keeps and adds them.
+  const LineKeep* keep = nullptr;
+};
+
+// Runs lines [line0, line1) in blocks of block_lines: fills their rows of
+// `prof` (allocated), adds to counts and prof.samples_in_swath.
+// make_thread_source(LineScratch&) is called once per thread; its result's
+// block(b0, b1) returns a std::variant of sources for lines [b0, b1).
+template <class MakeThreadSource>
+void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0, int line1,
+                     int block_lines, SlarLineProfiles& prof, SlarLineCounts& counts,
+                     MakeThreadSource make_thread_source) {
+  const int blocks = (line1 - line0 + block_lines - 1) / block_lines;
+  std::int64_t in_swath = 0;
+#pragma omp parallel reduction(+ : in_swath)
+  {
+    LineScratch s(g, prof.bins);
+    SlarLineCounts local;
+    auto thread_source = make_thread_source(s);
+#pragma omp for schedule(dynamic, 1)
+    for (int block = 0; block < blocks; ++block) {
+      const int b0 = line0 + block * block_lines, b1 = std::min(line1, b0 + block_lines);
+      auto block_source = thread_source.block(b0, b1);
+      std::visit(
+          [&](auto& source) {
+            for (int line = b0; line < b1; ++line) {
+              const LineSpan span = source.load(line, s);
+              if constexpr (!makes_geometry<std::remove_cvref_t<decltype(source)>>()) {
+                line_geometry(*span.layout, stages.look, stages.need_incidence, s);
+              }
+              in_swath += accumulate_line(stages.ctx, span.n, s, prof, line, local,
+                                          stages.range_window_bins, span.first, stages.keep, &g);
+              source.store_maps(line, span, s);
+            }
+            source.finish_block();
+          },
+          block_source);
+    }
+#pragma omp critical(ris_slar_line_counts)
+    counts.add(local);
+  }
+  prof.samples_in_swath += in_swath;
+}
+
+}  // namespace ris::detail

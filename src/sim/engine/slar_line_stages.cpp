@@ -1,0 +1,129 @@
+#include "sim/engine/slar_line_stages.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+
+#include "ris/util/units.h"
+
+namespace ris::detail {
+
+// The look geometry, element ends, cast shadow and layover of a line whose
+// terrain is in the scratch (MODEL.md section 2; the code the stage path
+// runs: ris/geometry/line_scan.h).
+void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_incidence,
+                   LineScratch& s) {
+  const int samples = g.samples;
+  look_line({samples, s.u.data(), s.height.data(), s.dz_dx.data(), s.dz_dy.data()}, frame,
+            {s.range.data(), need_incidence ? s.incidence.data() : nullptr,
+             s.local_incidence.data(), s.area.data(), s.dh_du.data(), s.flags.data()});
+  const LineSamples ls{samples,         g.first_sample_u_m, g.sample_step_m,   g.altitude_m,
+                       s.height.data(), s.range.data(),     s.near_end.data(), s.far_end.data(),
+                       s.dh_du.data(),  s.flags.data()};
+  line_element_ends(ls);
+  mark_shadow_and_layover(ls);
+}
+
+LinePointTargets::LinePointTargets(std::vector<PointCandidate> candidates)
+    : by_line(std::move(candidates)), lit(by_line.size(), 0), power_w(by_line.size(), 0.0) {
+  std::stable_sort(
+      by_line.begin(), by_line.end(),
+      [](const PointCandidate& a, const PointCandidate& b) { return a.ret.line < b.ret.line; });
+}
+
+void add_line_point_returns(const SlarElementContext& ctx, const SlarGeometry& g, int line,
+                            int first, int n, const std::uint8_t* flags, const float* height_m,
+                            double* acc, LinePointTargets& t) {
+  const auto on_line =
+      std::lower_bound(t.by_line.begin(), t.by_line.end(), line,
+                       [](const PointCandidate& c, int l) { return c.ret.line < l; });
+  for (auto it = on_line; it != t.by_line.end() && it->ret.line == line; ++it) {
+    const std::size_t k = static_cast<std::size_t>(it - t.by_line.begin());
+    if (!point_lit_on_samples(g, first, n, flags, height_m, it->u_m, it->h_m)) continue;
+    const PointReturn& pr = it->ret;
+    const double r2 = pr.slant_range_m * pr.slant_range_m;
+    const double power = ctx.k_radar * ctx.gain2->at(pr.look_rad) * pr.rcs_m2 / (r2 * r2);
+    t.lit[k] = 1;
+    t.power_w[k] = power;
+    const double pos = (pr.slant_range_m - ctx.near_m) * ctx.inv_dr;
+    if (!(pos >= 0.0 && pos < ctx.bins)) continue;
+    acc[static_cast<std::size_t>(pos)] += power;
+  }
+}
+
+// Image formation's per-line step (as form_slar_image).
+std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
+                             SlarLineProfiles& prof, int line, SlarLineCounts& counts,
+                             double range_window_bins, int first_sample, const LineKeep* keep,
+                             const SlarGeometry* g) {
+  const std::size_t row = prof.index(line, 0);
+  const LineElements e{
+      samples,           s.flags.data(),     s.range.data(),           s.near_end.data(),
+      s.far_end.data(),  s.incidence.data(), s.local_incidence.data(), s.area.data(),
+      s.category.data(), first_sample};
+  const LineProfileRow out{prof.touch.data() + row, prof.mapped_count.data() + row,
+                           prof.visible_count.data() + row, s.acc.acc.data(),
+                           s.acc.acc_area.data()};
+  // The row of line in the kept arrays (from line keep->line0).
+  const std::size_t kept_at =
+      keep ? g->index(line, first_sample) - g->index(keep->line0, 0) : std::size_t{0};
+  float* element_power = keep && keep->element_power_w ? keep->element_power_w + kept_at : nullptr;
+  if (keep && keep->slant_range_m)
+    std::copy_n(s.range.data(), samples, keep->slant_range_m + kept_at);
+  const LineElementTally t = form_line_profile(ctx, e, s.elements, out, element_power);
+  counts.nodata += t.nodata;
+  counts.shadow += t.shadow;
+  counts.back_facing += t.back_facing;
+  counts.layover += t.layover;
+  counts.r_min_m = std::min(counts.r_min_m, t.r_min_m);
+  counts.r_max_m = std::max(counts.r_max_m, t.r_max_m);
+  if (keep && keep->targets) {
+    add_line_point_returns(ctx, *g, line, first_sample, samples, s.flags.data(), s.height.data(),
+                           s.acc.acc.data(), *keep->targets);
+  }
+  if (range_window_bins > 0.0) s.acc.apply_range_window(range_window_bins);
+  for (int b = 0; b < prof.bins; ++b) {
+    const std::size_t bb = static_cast<std::size_t>(b);
+    prof.power_w[row + bb] = static_cast<float>(s.acc.acc[bb]);
+    prof.area_m2[row + bb] = static_cast<float>(s.acc.acc_area[bb]);
+  }
+  if (keep && keep->geometry) keep_line_geometry(*keep->geometry, line, first_sample, samples, s);
+  return t.in_swath;
+}
+
+void keep_line_geometry(SlarGeometry& kept, int line, int first, int n, const LineScratch& s) {
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  const std::size_t row = kept.index(line, 0);
+  const auto unseen = [&](std::size_t i0, std::size_t i1) {
+    for (auto* v :
+         {&kept.height_m, &kept.slant_range_m, &kept.incidence_rad, &kept.local_incidence_rad,
+          &kept.area_m2, &kept.range_near_end_m, &kept.range_far_end_m}) {
+      std::fill(v->begin() + static_cast<std::ptrdiff_t>(i0),
+                v->begin() + static_cast<std::ptrdiff_t>(i1), kNaN);
+    }
+    std::fill(kept.category.begin() + static_cast<std::ptrdiff_t>(i0),
+              kept.category.begin() + static_cast<std::ptrdiff_t>(i1), std::uint16_t{0});
+    std::fill(kept.flags.begin() + static_cast<std::ptrdiff_t>(i0),
+              kept.flags.begin() + static_cast<std::ptrdiff_t>(i1), sample_flag::kUnseen);
+  };
+  const std::size_t at = row + static_cast<std::size_t>(first);
+  const std::size_t end = at + static_cast<std::size_t>(n);
+  unseen(row, at);
+  unseen(end, row + static_cast<std::size_t>(kept.samples));
+  const auto copy = [&](const auto& from, auto& to) {
+    std::copy_n(from.begin(), n, to.begin() + static_cast<std::ptrdiff_t>(at));
+  };
+  copy(s.height, kept.height_m);
+  copy(s.range, kept.slant_range_m);
+  copy(s.incidence, kept.incidence_rad);
+  copy(s.local_incidence, kept.local_incidence_rad);
+  copy(s.area, kept.area_m2);
+  copy(s.near_end, kept.range_near_end_m);
+  copy(s.far_end, kept.range_far_end_m);
+  copy(s.category, kept.category);
+  copy(s.flags, kept.flags);
+}
+
+}  // namespace ris::detail

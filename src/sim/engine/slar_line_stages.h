@@ -1,0 +1,132 @@
+// Internal: the line engine (sim/engine/slar_line_engine.h)'s per-line stages,
+// shared by every line source (along a grid axis: slar_line_blocks.cpp; any
+// other heading: slar_oblique_lines.cpp): per-thread line scratch, the
+// line's look geometry, and radiometry and image formation of the line's
+// elements into its range profile. They run the same code as the stage path
+// (compute_slar_geometry + form_slar_image), so the products are the same
+// bytes.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernels/image/slar_element.h"
+#include "ris/geometry/line_scan.h"
+#include "ris/geometry/scene_geometry_maps.h"
+#include "ris/geometry/slar_geometry.h"
+#include "ris/image/slar_image.h"
+#include "ris/sim/point_target.h"
+#include "ris/sim/slar_line_parts.h"
+
+namespace ris::detail {
+
+// One thread's line scratch, allocated once per run() call and thread.
+struct LineScratch {
+  std::vector<float> u, height, dz_dx, dz_dy, range, incidence, local_incidence, area, near_end,
+      far_end, dh_du;
+  std::vector<std::uint16_t> category;
+  std::vector<std::uint8_t> flags;
+  std::vector<std::uint8_t> unseen;      // kUnseen where u <= 0 (the same for every line)
+  std::vector<std::uint8_t> none_valid;  // a row of no-data cells, beyond the scene's edge
+  std::vector<float> none_z;
+  SlarLineAccumulator acc;
+  LineElementScratch elements;
+  LineScratch(const SlarGeometry& g, int bins)
+      : u(static_cast<std::size_t>(g.samples)),
+        height(u.size()),
+        dz_dx(u.size()),
+        dz_dy(u.size()),
+        range(u.size()),
+        incidence(u.size()),
+        local_incidence(u.size()),
+        area(u.size()),
+        near_end(u.size()),
+        far_end(u.size()),
+        dh_du(u.size()),
+        category(u.size()),
+        flags(u.size()),
+        unseen(u.size()),
+        none_valid(u.size(), 0),
+        none_z(u.size(), 0.0f),
+        acc(bins),
+        elements(g.samples, bins) {
+    for (int j = 0; j < g.samples; ++j) {
+      u[static_cast<std::size_t>(j)] = float(g.sample_u_m(j));
+      unseen[static_cast<std::size_t>(j)] = g.sample_u_m(j) > 0.0 ? 0 : sample_flag::kUnseen;
+    }
+  }
+};
+
+// The point targets of an engine run: the candidates (ris/sim/point_target.h)
+// sorted by line, and per candidate whether its line's terrain leaves it lit
+// and the power it returns (written by the thread that forms its line).
+struct LinePointTargets {
+  std::vector<PointCandidate> by_line;
+  std::vector<std::uint8_t> lit;
+  std::vector<double> power_w;
+  // Sorts the candidates by line (stable: target order within a line, the
+  // order the stage path adds them in) and sizes lit and power_w.
+  explicit LinePointTargets(std::vector<PointCandidate> candidates);
+};
+
+// The point targets on `line` that its terrain leaves lit (its samples
+// [first, first + n): flags and heights), their power added to the bin of
+// their range in acc (as form_slar_image adds point returns); each one's lit
+// flag and power set in t. g: the run's layout (sample positions, altitude).
+void add_line_point_returns(const SlarElementContext& ctx, const SlarGeometry& g, int line,
+                            int first, int n, const std::uint8_t* flags, const float* height_m,
+                            double* acc, LinePointTargets& t);
+
+// What a run keeps beyond the profiles and the scene maps (the kept-geometry
+// sink); a null member is not kept. Each line's part is written by the
+// thread that forms the line.
+struct LineKeep {
+  // The per-sample geometry of the whole run, as compute_slar_geometry
+  // makes it: arrays allocated (allocate_samples), one row per line.
+  SlarGeometry* geometry = nullptr;
+  // P_i of each element, lines x samples, zero-filled (the coherent SAR's
+  // input, SlarImage::element_power_w).
+  float* element_power_w = nullptr;
+  // Point targets added to their lines' profiles.
+  LinePointTargets* targets = nullptr;
+  // With element_power_w: each element's slant range too (null: not
+  // kept), in the same layout (the coherent SAR's range compression reads
+  // both; a streamed block keeps them, src/sim/stream/sar_coherent_stream.h).
+  float* slant_range_m = nullptr;
+  // The line of the arrays' first row (a block's first line; 0: the run's).
+  int line0 = 0;
+};
+
+// The look geometry, element ends, cast shadow and layover of a line whose
+// terrain is in the scratch (MODEL.md section 2; the code the stage path
+// runs: ris/geometry/line_scan.h).
+void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_incidence,
+                   LineScratch& s);
+
+// Image formation's per-line step (as form_slar_image): the line's elements
+// into its range profile row; counts into `counts`. Returns the number of
+// elements whose centre falls in a bin. first_sample: the line's sample
+// index of the scratch's element 0, when it holds a span of the line
+// (LineElements::first_index; the same bytes as the whole line then).
+// keep (optional): the run's kept-geometry sink and point targets; g: the
+// run's layout (its line numbering and samples), needed with keep.
+std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
+                             SlarLineProfiles& prof, int line, SlarLineCounts& counts,
+                             double range_window_bins, int first_sample = 0,
+                             const LineKeep* keep = nullptr, const SlarGeometry* g = nullptr);
+
+// The kept-geometry sink's step: the line's samples [first, first + n) from
+// the scratch into row `line` of `kept`, the samples outside unseen (NaN,
+// category 0, kUnseen: as the stage path leaves a sample without terrain).
+void keep_line_geometry(SlarGeometry& kept, int line, int first, int n, const LineScratch& s);
+
+// The fused run for a heading off the grid axes (slar_oblique_lines.cpp):
+// fills prof (allocated), maps (sized to the scene) and counts.
+// keep (optional): the kept-geometry sink and point targets.
+void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
+                       const SlarImagingParams& p, const std::string& radar_file,
+                       SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts,
+                       const LineKeep* keep = nullptr);
+
+}  // namespace ris::detail

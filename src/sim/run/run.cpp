@@ -1,0 +1,445 @@
+#include "ris/sim/run.h"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+
+#include "ris/backscatter/library.h"
+#include "ris/io/ellipsoidal_dem.h"
+#include "ris/io/safe_paths.h"
+#include "ris/scene/dem_import.h"
+#include "ris/scene/scene_source.h"
+#include "ris/scene/scene_stream.h"
+#include "ris/sensor/radar_config.h"
+#include "ris/sim/acquisition_products.h"
+#include "ris/sim/acquisition_stream.h"
+#include "ris/sim/ppi_products.h"
+#include "ris/sim/sar_coherent.h"
+#include "ris/sim/slar_products.h"
+#include "ris/util/error.h"
+#include "ris/util/process_group.h"
+#include "ris/util/resource_guard.h"
+#include "sim/modes/acquisition_frame.h"
+
+namespace ris {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+void warn(const RunCallbacks& cb, const std::string& message) {
+  if (cb.warning) {
+    cb.warning(message);
+  } else {
+    spdlog::warn("{}", message);
+  }
+}
+
+// Whether to stream: asked for, or a scene raster too large for memory
+// (only its header is read to decide).
+void check_block_lines(const RunRequest& r) {
+  if (r.block_lines < 0) {
+    throw InputError("", "--block-lines",
+                     fmt::format("expected a positive number of lines, got {}", r.block_lines));
+  }
+}
+
+bool should_stream(const RunRequest& r, const RunCallbacks& cb) {
+  check_block_lines(r);
+  const bool is_raster = std::filesystem::path(r.scene_path).extension() != ".toml";
+  if (r.stream || r.block_lines > 0) {
+    if (r.scene != nullptr || !is_raster) {
+      throw InputError(r.scene_path, "--stream",
+                       "a streamed run reads a scene raster; build the description first with: "
+                       "ris scene build " +
+                           r.scene_path + " -o scene.tif");
+    }
+    return true;
+  }
+  if (r.scene != nullptr || !is_raster || dem_needs_import(r.scene_path)) return false;
+  const SceneStreamReader probe(r.scene_path);
+  if (!scene_needs_streaming(probe.grid().rows, probe.grid().cols)) return false;
+  warn(cb, fmt::format("{}: {} x {} cells is too large for an in-memory run; streaming it in "
+                       "blocks of azimuth lines",
+                       r.scene_path, probe.grid().cols, probe.grid().rows));
+  return true;
+}
+
+// The backscatter source, loaded unless given (default: the standard
+// library).
+struct LoadedSigma0 {
+  std::string path;
+  std::shared_ptr<const Sigma0Source> source;
+};
+
+// The backscatter source, loaded unless given: --backscatter, else the
+// library a scene raster names (RIS_BACKSCATTER_LIBRARY: `ris scene import`
+// and `ris scene fractal` write it), else the standard library.
+LoadedSigma0 load_sigma0(const RunRequest& r) {
+  LoadedSigma0 in;
+  in.path = r.backscatter_path;
+  if (r.backscatter_path.empty() && r.sigma0 == nullptr) {
+    const std::string named = r.scene == nullptr ? scene_backscatter_library(r.scene_path) : "";
+    if (!named.empty()) {
+      spdlog::info(
+          "{}: backscatter from {}, the library the scene names (--backscatter to "
+          "choose another)",
+          r.scene_path, named);
+    }
+    in.path = named.empty() ? default_sigma0_library_path() : named;
+  }
+  in.source = r.sigma0 != nullptr ? r.sigma0 : load_sigma0_source(in.path);
+  return in;
+}
+
+RadarParams load_radar_of(const RunRequest& r) {
+  return r.radar ? *r.radar : load_radar(r.radar_path);
+}
+
+SlarRunInfo run_info(const RunRequest& r, const std::string& backscatter_path) {
+  SlarRunInfo info{r.scene_path, r.radar_path, backscatter_path, r.seed,
+                   r.threads > 0 ? r.threads : omp_get_max_threads()};
+  info.products = r.products;
+  info.compression = r.compression;
+  info.overviews = r.overviews;
+  return info;
+}
+
+// A scene run's geometry is the flat-Earth frame's (its track is given in
+// scene coordinates); the ellipsoid needs an acquisition's orbit and grid.
+void check_scene_earth(const RunRequest& r, const RadarParams& radar) {
+  const std::optional<EarthModel> earth = r.earth ? r.earth : radar.earth;
+  if (earth.value_or(EarthModel::flat) == EarthModel::flat) return;
+  throw InputError(r.earth ? "" : radar.source_file, r.earth ? "--earth" : "earth",
+                   "\"ellipsoid\" needs an acquisition's orbit and radar grid (ris simulate "
+                   "--acquisition P --dem D); a scene run's track lies in the flat-Earth frame: "
+                   "expected \"flat\" or no earth key");
+}
+
+// About 7 bytes of products a scene cell: the streamed 40,000^2 example
+// (1.6 G cells) wrote 11 GB (README.md, "Scenes larger than memory").
+constexpr std::int64_t kProductBytesPerCell = 7;
+
+// The output folder, checked once every input is read and before any work:
+// no folder where a file is, no product over one of the run's inputs
+// (ris/io/safe_paths.h), room for the products (ris/util/resource_guard.h;
+// a PPI's are sized by its rays, bins and scope, not by the scene).
+// temporary_bytes: what a streamed run also writes there for a while
+// (streamed_temporary_bytes).
+void check_out_dir(const RunRequest& r, const RadarParams& radar, std::int64_t rows,
+                   std::int64_t cols, std::int64_t temporary_bytes = 0) {
+  if (r.out_dir.empty()) return;
+  const RadarMode mode = radar.mode;
+  std::vector<std::string> stems{"metadata"};
+  for (std::string_view s : mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems()) {
+    stems.emplace_back(s);
+  }
+  require_safe_output_folder(r.out_dir, stems, "--out");
+  if (mode == RadarMode::ppi) {  // the key of the larger part named
+    const PpiProductSize z = ppi_product_size(radar);
+    require_disk(z.bytes, r.out_dir, radar.source_file,
+                 z.scope_bytes >= z.bscope_bytes ? "scan.pixel" : "scan.ray_spacing",
+                 fmt::format("the products of a PPI run ({:.0f} rays x {:.0f} range bins, a "
+                             "scope of {:.0f} x {:.0f} pixels)",
+                             z.rays, z.bins, z.scope_pixels, z.scope_pixels));
+    return;
+  }
+  const std::int64_t cells = checked_mul(rows, cols, r.scene_path, "");
+  const std::int64_t products = checked_mul(cells, kProductBytesPerCell, r.scene_path, "");
+  require_disk(checked_add(products, temporary_bytes, r.scene_path, ""), r.out_dir, "", "--out",
+               fmt::format("the products of a {} x {} cell scene{}", cols, rows,
+                           temporary_bytes > 0
+                               ? fmt::format(" and {:.0f} MiB of temporary files (a streamed "
+                                             "track off the grid axes)",
+                                             double(temporary_bytes) / double(1 << 20))
+                               : std::string()));
+}
+
+void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
+  res.kind = RunKind::streamed;
+  res.radar = load_radar_of(r);
+  check_scene_earth(r, res.radar);
+  // As the in-memory run (the streams honour the selection and res.info's
+  // compression).
+  check_product_selection(
+      r.products, res.radar.mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems(),
+      "--products");
+  const LoadedSigma0 sigma0 = load_sigma0(r);
+  res.info = run_info(r, sigma0.path);
+  require_regular_input(r.scene_path, "--scene");
+  {
+    const SceneStreamReader probe(r.scene_path);  // the header only
+    check_out_dir(r, res.radar, probe.grid().rows, probe.grid().cols,
+                  streamed_temporary_bytes(probe.grid(), res.radar));
+  }
+  std::vector<PointTarget> targets;
+  if (r.targets) {
+    targets = *r.targets;
+  } else if (!r.targets_path.empty()) {
+    targets = load_point_targets(r.targets_path);
+  }
+  res.has_targets = !targets.empty();
+  res.targets_path = r.targets_path;
+  if (res.radar.mode == RadarMode::ppi) {  // rays in blocks (ris/sim/ppi_stream.h)
+    PpiStreamOptions o;
+    o.block_rays = r.block_lines;
+    o.quiet = r.quiet;
+    o.targets = std::move(targets);
+    res.ppi_streamed =
+        simulate_ppi_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
+    return;
+  }
+  SlarStreamOptions o;
+  o.block_lines = r.block_lines;
+  o.quiet = r.quiet;
+  o.targets = std::move(targets);
+  o.targets_file = r.targets_path;
+  res.streamed =
+      simulate_slar_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
+  res.irfs = res.streamed->irfs;
+  // Once, by rank 0, in an MPI run (every rank sets up the same stages).
+  if (process_group().rank() == 0)
+    for (const std::string& w : res.streamed->sim.warnings) warn(cb, w);
+}
+
+// Speckle, greytones and point-target measurements of a kept SLAR/SAR run.
+void render_slar_run(RunResult& res, std::uint64_t seed) {
+  const SlarSimulation& sim = *res.slar;
+  const bool coherent = res.kind == RunKind::coherent_sar;
+  res.slar_pictures =
+      coherent ? render_slar(sim, seed, coherent_sar_intensity(sim, seed)) : render_slar(sim, seed);
+  res.irfs.clear();
+  if (res.has_targets) {
+    res.irfs = measure_point_targets(sim, *res.slar_pictures, coherent);
+  }
+}
+
+// Whether an acquisition run streams: on request (--stream, --block-lines),
+// or when its window is over the in-memory run's cap and the run writes
+// products (as a scene too large for memory streams, should_stream). An
+// in-memory run's DEM is read whole into `dem`; a streamed run reads it in
+// windows.
+bool should_stream_acquisition(const RunRequest& r, const RunCallbacks& cb, const Acquisition& acq,
+                               const EllipsoidalDemFile& file, std::optional<EllipsoidalDem>& dem) {
+  check_block_lines(r);
+  if (r.stream || r.block_lines > 0) return true;
+  if (!r.out_dir.empty()) {
+    // The window from the DEM read in bands (never whole: it may not fit).
+    const GridWindow w =
+        detail::acquisition_frame(acq, file.grid(), file.summarise(256), r.full_grid).window;
+    if (w.size() > detail::kMaxInMemoryPixels) {
+      warn(cb, fmt::format("{}: a window of {} lines x {} bins is too large for an in-memory run; "
+                           "streaming it in blocks of azimuth lines",
+                           r.acquisition_path, w.lines, w.bins));
+      return true;
+    }
+  }
+  dem = file.read(0, file.grid().rows, 0, file.grid().cols);
+  return false;
+}
+
+// The simulation on an acquisition's radar grid (ris/sim/acquisition_simulation.h).
+void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
+  if (!r.targets_path.empty() || (r.targets && !r.targets->empty())) {
+    throw InputError(r.targets_path, "--targets",
+                     "point targets are not placed on an acquisition's grid yet; drop --targets");
+  }
+  if (r.dem_path.empty()) {
+    throw InputError(r.acquisition_path, "--dem",
+                     "an acquisition run needs a DEM of the terrain (geographic WGS 84, as for "
+                     "ris topo)");
+  }
+  if (cb.progress) cb.progress("reading inputs", 0.0);
+  res.radar = load_radar_of(r);
+  check_product_selection(r.products, acquisition_product_stems(), "--products");
+  const Acquisition acq = read_acquisition(r.acquisition_path, r.acquisition);
+  require_regular_input(r.dem_path, "--dem");
+  const EllipsoidalDemFile dem_file(r.dem_path);  // its grid: the heights are read below
+  if (!r.out_dir.empty()) {  // checked before any work, as a scene run's (check_out_dir)
+    std::vector<std::string> stems{"metadata"};
+    for (std::string_view s : acquisition_product_stems()) stems.emplace_back(s);
+    require_safe_output_folder(r.out_dir, stems, "--out");
+  }
+  const LoadedSigma0 sigma0 = load_sigma0(r);
+  res.info = run_info(r, sigma0.path);
+  res.info.scene_path = r.dem_path;
+  AcquisitionSimOptions o;
+  o.earth = r.earth ? *r.earth : res.radar.earth.value_or(EarthModel::ellipsoid);
+  o.category = r.category;
+  o.full_grid = r.full_grid;
+  std::optional<Scene> land_cover;
+  if (!r.land_cover_path.empty()) {
+    land_cover = load_scene_source(r.land_cover_path).scene;
+    o.land_cover = &*land_cover;
+    o.land_cover_source = r.land_cover_path;
+  }
+  o.backscatter_file = sigma0.path;
+  std::optional<EllipsoidalDem> dem;
+  if (should_stream_acquisition(r, cb, acq, dem_file, dem)) {  // ris/sim/acquisition_stream.h
+    SlarStreamOptions so;
+    so.block_lines = r.block_lines;
+    so.quiet = r.quiet;
+    AcquisitionStreamSummary s = simulate_acquisition_streamed(
+        acq, dem_file, res.radar, *sigma0.source, o, res.info, r.out_dir, so);
+    res.kind = RunKind::streamed;
+    SlarStreamSummary& summary = res.streamed.emplace();
+    summary.sim = s.acquisition.sim;
+    summary.block_lines = s.block_lines;
+    summary.blocks = s.blocks;
+    summary.stage_seconds = std::move(s.stage_seconds);
+    summary.stage_cpu_seconds = std::move(s.stage_cpu_seconds);
+    summary.cpu_parts = std::move(s.cpu_parts);
+    res.acquisition = std::make_shared<AcquisitionSimulation>(std::move(s.acquisition));
+    // Once, by rank 0, in an MPI run (every rank sets up the same stages).
+    if (process_group().rank() == 0)
+      for (const std::string& w : summary.sim.warnings) warn(cb, w);
+    return;
+  }
+  if (cb.progress) cb.progress("geometry + image formation on the acquisition's grid", 0.1);
+  auto a = std::make_shared<AcquisitionSimulation>(
+      simulate_acquisition(acq, *dem, res.radar, *sigma0.source, o));
+  res.kind = res.radar.mode == RadarMode::sar ? RunKind::sar : RunKind::slar;
+  res.slar = std::move(a->sim);
+  res.acquisition = std::move(a);
+  for (const std::string& w : res.slar->warnings) warn(cb, w);
+  if (cb.progress) cb.progress("speckle and greytones", 0.9);
+  render_slar_run(res, r.seed);
+}
+
+}  // namespace
+
+RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
+  // Checked against the cap before OpenMP sees it (libgomp crashes on
+  // 100000 threads; ris/util/resource_guard.h).
+  if (checked_thread_count(r.threads, "--threads") > 0 && r.threads > 0) {
+    omp_set_num_threads(r.threads);
+  }
+  const Clock::time_point t0 = Clock::now();
+  RunResult res;
+  if (process_group().size() > 1 && !(r.stream || r.block_lines > 0)) {
+    // Else every rank would run the whole simulation and write the same folder.
+    throw InputError(r.acquisition_path.empty() ? r.scene_path : r.acquisition_path, "--stream",
+                     fmt::format("a run over {} MPI ranks is a streamed run (docs/scale.md); add "
+                                 "--stream, or run without mpirun",
+                                 process_group().size()));
+  }
+  if (!r.acquisition_path.empty()) {
+    run_acquisition(r, cb, res);
+    if (res.kind != RunKind::streamed && !r.out_dir.empty()) {
+      if (cb.progress) cb.progress("writing products", 0.95);
+      res.write_seconds = write_run_products(res, r.out_dir);
+    }
+    if (cb.progress && res.kind != RunKind::streamed) cb.progress("done", 1.0);
+    res.seconds = seconds_since(t0);
+    return res;
+  }
+  if (!r.dem_path.empty() || r.full_grid || !r.land_cover_path.empty()) {
+    throw InputError(r.dem_path,
+                     r.full_grid                  ? "--full-grid"
+                     : !r.land_cover_path.empty() ? "--land-cover"
+                                                  : "--dem",
+                     "goes with --acquisition (a run on a product's radar grid); a scene run "
+                     "reads its terrain from --scene");
+  }
+  if (should_stream(r, cb)) {
+    run_streamed(r, cb, res);
+    res.seconds = seconds_since(t0);
+    return res;
+  }
+  const auto stage = [&](std::string_view name, double fraction) {
+    if (cb.progress) cb.progress(name, fraction);
+  };
+  stage("reading inputs", 0.0);
+  // In the order the command line has always read them (the first bad input
+  // is the one reported).
+  const RadarParams radar = load_radar_of(r);
+  res.radar = radar;
+  check_scene_earth(r, radar);
+  check_product_selection(r.products,
+                          radar.mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems(),
+                          "--products");
+  res.scene = r.scene != nullptr
+                  ? r.scene
+                  : std::make_shared<const Scene>(load_scene_source(r.scene_path).scene);
+  const LoadedSigma0 sigma0 = load_sigma0(r);
+  res.info = run_info(r, sigma0.path);
+  SlarOptions options;
+  options.backscatter_file = sigma0.path;
+  options.progress = cb.progress;
+  if (r.targets) {
+    options.targets = *r.targets;
+  } else if (!r.targets_path.empty()) {
+    options.targets = load_point_targets(r.targets_path);
+  }
+  res.has_targets = !options.targets.empty();
+  res.targets_path = r.targets_path;
+  check_out_dir(r, radar, res.scene->rows, res.scene->cols);
+
+  if (radar.mode == RadarMode::ppi) {
+    res.kind = RunKind::ppi;
+    res.ppi = simulate_ppi(*res.scene, radar, *sigma0.source, options);
+    for (const std::string& w : res.ppi->warnings) warn(cb, w);
+    stage("speckle and greytones", 0.9);
+    res.ppi_pictures = render_ppi(*res.ppi, r.seed);
+  } else {
+    const bool coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
+    res.kind = radar.mode == RadarMode::slar ? RunKind::slar
+               : coherent                    ? RunKind::coherent_sar
+                                             : RunKind::sar;
+    res.slar = simulate_slar(*res.scene, radar, *sigma0.source, options);
+    for (const std::string& w : res.slar->warnings) warn(cb, w);
+    stage("speckle and greytones", 0.9);
+    render_slar_run(res, r.seed);
+  }
+  if (!r.out_dir.empty()) {
+    stage("writing products", 0.95);
+    res.write_seconds = write_run_products(res, r.out_dir);
+  }
+  stage("done", 1.0);
+  res.seconds = seconds_since(t0);
+  return res;
+}
+
+void rerender(RunResult& res, std::uint64_t seed, const FilmParams* film) {
+  if (res.kind == RunKind::streamed) {
+    throw InputError(res.info.scene_path, "",
+                     "a streamed run keeps no images in memory to render again");
+  }
+  res.info.seed = seed;
+  if (res.kind == RunKind::ppi) {
+    if (film != nullptr) res.ppi->radar.film = *film;
+    res.ppi_pictures = render_ppi(*res.ppi, seed);
+    return;
+  }
+  if (film != nullptr) res.slar->radar.film = *film;
+  render_slar_run(res, seed);
+}
+
+double write_run_products(const RunResult& res, const std::filesystem::path& out_dir) {
+  if (res.kind == RunKind::streamed) {
+    throw InputError(res.info.scene_path, "",
+                     "a streamed run writes its products while it runs; none are kept");
+  }
+  const Clock::time_point t0 = Clock::now();
+  if (res.acquisition) {
+    write_acquisition_products(out_dir, *res.acquisition, *res.slar, *res.slar_pictures, res.info);
+  } else if (res.kind == RunKind::ppi) {
+    write_ppi_products(out_dir, *res.scene, *res.ppi, *res.ppi_pictures, res.info);
+  } else {
+    nlohmann::json extra = nlohmann::json::object();
+    if (res.has_targets) {
+      extra["point_targets"] = point_target_irf_json(res.irfs, *res.slar, res.targets_path,
+                                                     res.kind == RunKind::coherent_sar);
+    }
+    write_slar_products(out_dir, *res.scene, *res.slar, *res.slar_pictures, res.info, extra);
+  }
+  return seconds_since(t0);
+}
+
+}  // namespace ris
