@@ -26,6 +26,13 @@ RANK = {name: i for i, name in enumerate(LAYERS)}
 # macros in include/ris/kernels/) are utilities.
 KERNEL_LAYER = {"simd": "util", "util": "util", "gather": "geometry", "geometry": "geometry",
                 "image": "image", "sim": "sim"}
+# Inside sim, its rooms (src/sim/<room>/, docs/design.md "The rooms of
+# src/sim"), lowest first: a room's files include its own room or lower ones
+# through "sim/<room>/..."; the public headers (include/ris/sim/) are the
+# layer's face and are not ranked.
+SIM_ROOMS = ["engine", "targets", "sources", "modes", "stream", "run"]
+SIM_ROOM_RANK = {name: i for i, name in enumerate(SIM_ROOMS)}
+SIM_ROOM_INCLUDE = re.compile(r'^\s*#\s*include\s*"sim/([a-z_]+)/')
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]ris/([a-z_]+)/(?:([a-z_]+)/)?')
 LOCAL_INCLUDE = re.compile(r'^\s*#\s*include\s*"(?:\.\./)*(?:src/)?([a-z_]+)/(?:([a-z_]+)/)?[^"]+"')
 
@@ -62,7 +69,20 @@ def main() -> int:
             errors.append(f"{path.relative_to(root)}: layer '{own}' is not in the "
                           f"order {' < '.join(LAYERS)} (scripts/check_layers.py)")
             continue
+        parts = path.relative_to(root).parts
+        room = parts[2] if parts[:2] == ("src", "sim") and len(parts) > 3 else None
+        if parts[:2] == ("src", "sim") and len(parts) == 3:
+            errors.append(f"{path.relative_to(root)}: a file of src/sim outside its rooms "
+                          f"({', '.join(SIM_ROOMS)})")
+        if room is not None and room not in SIM_ROOM_RANK:
+            errors.append(f"{path.relative_to(root)}: room '{room}' is not in the order "
+                          f"{' < '.join(SIM_ROOMS)} (scripts/check_layers.py)")
+            room = None
         for n, line in enumerate(path.read_text().splitlines(), 1):
+            r = SIM_ROOM_INCLUDE.match(line) if room is not None else None
+            if r and r.group(1) in SIM_ROOM_RANK and SIM_ROOM_RANK[r.group(1)] > SIM_ROOM_RANK[room]:
+                errors.append(f"{path.relative_to(root)}:{n}: sim/{room} includes sim/"
+                              f"{r.group(1)} (a room above): {line.strip()}")
             m = INCLUDE.match(line)
             if m and m.group(1) == "kernels":
                 target = "util"  # include/ris/kernels/: the clone macros
@@ -83,7 +103,7 @@ def main() -> int:
     if errors:
         print(f"{len(errors)} upward include(s); order: {' < '.join(LAYERS)}")
         return 1
-    print(f"layers ok: {' < '.join(LAYERS)}")
+    print(f"layers ok: {' < '.join(LAYERS)}; sim's rooms: {' < '.join(SIM_ROOMS)}")
     return 0
 
 

@@ -91,6 +91,32 @@ run sar-coarse-lines --threads 2 --radar sar-coarse.toml
 run ppi-targets --threads 2 --radar "$data/radars/ppi-ground-mast-30m.toml" --targets "$targets"
 run ppi-air-targets --threads 1 --radar "$data/radars/ppi-airborne-nav-10000ft.toml" \
   --targets "$targets"
+# Streamed runs of every mode the stream runs (scene windows, rays in blocks,
+# an acquisition's lines in blocks), with targets and off the axes.
+run stream16-targets --threads 2 --scene scene.tif --block-lines 16 --targets "$targets"
+run stream16-h30 --threads 2 --scene scene.tif --block-lines 16 --radar fig45-h30.toml
+run stream16-sar-coherent --threads 2 --scene scene.tif --block-lines 16 \
+  --radar "$data/radars/sar-x-band-stripmap.toml" --targets "$targets"
+run ppi-stream64 --threads 2 --scene scene.tif --block-lines 64 \
+  --radar "$data/radars/ppi-ground-mast-30m.toml"
+run ppi-stream64-targets --threads 1 --scene scene.tif --block-lines 64 \
+  --radar "$data/radars/ppi-ground-mast-30m.toml" --targets "$targets"
+acq=(--acquisition "$here/tests/data/real/winnipeg.h5" --dem "$dem/winnipeg_dem.tif")
+run acquisition --threads 2 "${acq[@]}"
+run acquisition-stream7 --threads 2 "${acq[@]}" --block-lines 7
+# Under MPI (when the binary has it and mpirun is there): 1, 2 and 3 ranks.
+if command -v mpirun > /dev/null && ldd "$ris" | grep -q libmpi; then
+  for np in 1 2 3; do
+    name=mpi$np
+    OMPI_MCA_btl_vader_single_copy_mechanism=none \
+      mpirun --allow-run-as-root --oversubscribe -np $np "$ris" simulate --quiet --threads 1 \
+      --scene scene.tif --block-lines 16 --out "$name" > "$name.log" 2>&1 || {
+      echo "run $name failed:" >&2
+      cat "$name.log" >&2
+      exit 1
+    }
+  done
+fi
 "$ris" study --out study --bands "8.6 GHz:HH, 1.25 GHz:VV" --threads 2 > study.log 2>&1 || {
   echo "run study failed:" >&2
   cat study.log >&2

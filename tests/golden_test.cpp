@@ -14,9 +14,10 @@
 //                          exact (paths written as {root}, {tmp} and {out})
 //   anything else          a hash of its bytes
 //
-// A file that appears or disappears fails too. With RIS_GOLDEN_UPDATE=1 the
-// test writes expected.json instead of comparing (scripts/golden-update.sh),
-// so a deliberate change of output shows as a diff in review.
+// A step may also be a command that must fail (exit status and key words
+// of its message, see run_step). A file that appears or disappears fails too. With
+// RIS_GOLDEN_UPDATE=1 the test writes expected.json instead of comparing
+// (scripts/golden-update.sh), so a deliberate change of output shows as a diff in review.
 #include <fmt/format.h>
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
@@ -276,6 +277,35 @@ std::vector<std::string> case_names() {
   return names;
 }
 
+// One step of a case: an array of arguments, which must succeed, or an
+// object {"args": [...], "env": {"VAR": "value"}, "expect_failure":
+// {"exit_status": N, "message_has": ["key word", ...]}} (PROJ's .gie
+// `expect failure`): the command must exit with that status and its output
+// name every key word. What a failed step leaves is checked with the
+// products: nothing the case's expected.json does not list.
+void run_step(const json& step, const Paths& paths) {
+  const json& argv = step.is_array() ? step : step.at("args");
+  std::string args, env;
+  for (const json& a : argv) args += " " + shell_quote(paths.expand(a.get<std::string>()));
+  if (step.is_object() && step.contains("env")) {
+    for (const auto& [k, v] : step["env"].items()) {
+      env += " " + k + "=" + shell_quote(paths.expand(v.get<std::string>()));
+    }
+  }
+  const test::RunResult r = test::run_ris_env(env, args);
+  if (!step.is_object() || !step.contains("expect_failure")) {
+    ASSERT_EQ(r.exit_code, 0) << env << " ris" << args << "\n" << r.output;
+    return;
+  }
+  const json& want = step["expect_failure"];
+  EXPECT_EQ(r.exit_code, want.at("exit_status").get<int>()) << env << " ris" << args << "\n"
+                                                            << r.output;
+  for (const json& word : want.value("message_has", json::array())) {
+    EXPECT_NE(r.output.find(paths.expand(word.get<std::string>())), std::string::npos)
+        << "the message lacks \"" << word.get<std::string>() << "\": " << r.output;
+  }
+}
+
 class Golden : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Golden, ProductsMatchExpected) {
@@ -286,13 +316,8 @@ TEST_P(Golden, ProductsMatchExpected) {
   Paths paths{kRoot.string(), tmp.path().string(), (tmp.path() / "out").string()};
   fs::create_directories(paths.out);
 
-  // The case's commands, each of which must succeed.
-  for (const json& step : spec.at("steps")) {
-    std::string args;
-    for (const json& a : step) args += " " + shell_quote(paths.expand(a.get<std::string>()));
-    const test::RunResult r = test::run_ris(args);
-    ASSERT_EQ(r.exit_code, 0) << "ris" << args << "\n" << r.output;
-  }
+  // The case's commands, in order.
+  for (const json& step : spec.at("steps")) run_step(step, paths);
 
   // Every file of the output folder, by its path under it.
   std::vector<fs::path> files;

@@ -1,6 +1,6 @@
 // `ris simulate --stream --targets` end to end: point targets in a streamed
-// SLAR or SAR run (src/sim/slar_stream_targets.h), incoherent or coherent
-// (src/sim/sar_coherent_stream.h), give the in-memory run's files byte for
+// SLAR or SAR run (src/sim/stream/slar_stream_targets.h), incoherent or coherent
+// (src/sim/stream/sar_coherent_stream.h), give the in-memory run's files byte for
 // byte, measurements in metadata.json and the printed summary included; so
 // does a streamed PPI (seen and hidden targets).
 #include <gtest/gtest.h>
@@ -136,7 +136,7 @@ std::string ppi_target_line(const std::string& output) {
   return output.substr(at, output.find('\n', at) - at);
 }
 
-// A streamed PPI takes point targets (src/sim/ppi_ray_targets.h): the
+// A streamed PPI takes point targets (src/sim/targets/ppi_ray_targets.h): the
 // in-memory run's files byte for byte (metadata.json's seen and hidden
 // included) and the same printed count, in blocks of 7 rays and the
 // default, on 1 and 2 threads.

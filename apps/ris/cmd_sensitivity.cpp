@@ -16,13 +16,13 @@
 #include <vector>
 
 #include "command_registry.h"
+#include "ris/analysis/sensitivity.h"
 #include "ris/backscatter/library.h"
 #include "ris/image/line_chart.h"
 #include "ris/io/atomic_file.h"
 #include "ris/scene/scene_source.h"
 #include "ris/sensor/polarisation.h"
 #include "ris/sensor/radar_config.h"
-#include "ris/analysis/sensitivity.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 #include "seed_option.h"

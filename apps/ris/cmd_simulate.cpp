@@ -183,6 +183,8 @@ void run_simulate(SimulateArgs& a) {
     r.acquisition = a.acquisition.options();
   }
   if (!a.earth.empty()) r.earth = a.earth == "flat" ? EarthModel::flat : EarthModel::ellipsoid;
+  // The tests' injected failures (ris/sim/fault_plan.h), read here only.
+  r.faults = fault_plan_from_environment();
   // Progress unless --quiet (ris/util/progress.h): a bar on a terminal,
   // plain lines in a log; percent of the run by stage, rate, time remaining.
   auto bar = std::make_shared<ProgressBar>("simulate", 100, "%", r.quiet);

@@ -24,12 +24,12 @@
 #include <string>
 
 #include "command_registry.h"
+#include "ris/analysis/study.h"
+#include "ris/analysis/study_config.h"
 #include "ris/backscatter/library.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/scene/scene_io.h"
 #include "ris/sensor/radar_config.h"
-#include "ris/analysis/study.h"
-#include "ris/analysis/study_config.h"
 #include "ris/util/error.h"
 #include "ris/util/progress.h"
 #include "ris/util/resource_guard.h"

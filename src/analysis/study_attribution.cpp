@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
-#include "ris/image/slar_image.h"
 #include "ris/analysis/study.h"
 #include "ris/analysis/study_separability.h"
+#include "ris/image/slar_image.h"
 #include "ris/util/error.h"
 
 namespace ris {

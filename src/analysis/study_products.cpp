@@ -6,10 +6,10 @@
 #include <cmath>
 #include <string>
 
+#include "ris/analysis/study.h"
 #include "ris/image/contact_sheet.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/raster_io.h"
-#include "ris/analysis/study.h"
 #include "ris/util/units.h"
 
 namespace ris {

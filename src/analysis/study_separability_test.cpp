@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "ris/analysis/study.h"
 #include "ris/backscatter/library.h"
 #include "ris/sensor/radar_config.h"
-#include "ris/analysis/study.h"
 #include "test_inputs.h"
 #include "test_util.h"
 

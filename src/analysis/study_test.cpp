@@ -14,9 +14,9 @@
 #include <string>
 
 #include "build_paths.h"
+#include "ris/analysis/study_config.h"
 #include "ris/backscatter/library.h"
 #include "ris/sensor/radar_config.h"
-#include "ris/analysis/study_config.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 #include "test_util.h"

@@ -48,12 +48,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ris/analysis/study_separability.h"
 #include "ris/backscatter/polarisation.h"
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/image/contact_sheet.h"
 #include "ris/scene/scene.h"
 #include "ris/sim/slar_simulation.h"
-#include "ris/analysis/study_separability.h"
 
 namespace ris {
 

@@ -57,6 +57,7 @@
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/radar_params.h"
+#include "ris/sim/fault_plan.h"
 #include "ris/sim/point_target.h"
 #include "ris/sim/ppi_simulation.h"
 #include "ris/sim/run_info.h"
@@ -78,6 +79,8 @@ struct PpiStreamOptions {
   // Point targets (ris/sim/point_target.h); InputError for one off the
   // scene or on a no-data cell, as simulate_ppi.
   std::vector<PointTarget> targets;
+  // Failures injected for the tests of the failure paths (none by default).
+  FaultPlan faults;
 };
 
 struct PpiStreamSummary {

@@ -34,6 +34,7 @@
 #include "ris/sensor/acquisition.h"
 #include "ris/sensor/radar_params.h"
 #include "ris/sim/acquisition_simulation.h"
+#include "ris/sim/fault_plan.h"
 #include "ris/sim/point_target.h"
 #include "ris/sim/point_target_irf.h"
 #include "ris/sim/ppi_simulation.h"
@@ -90,6 +91,9 @@ struct RunRequest {
   // flat for a scene run and the ellipsoid for an acquisition. A scene run
   // takes only "flat" (its track is in the flat-Earth frame).
   std::optional<EarthModel> earth;
+  // Failures injected on purpose (ris/sim/fault_plan.h; streamed runs):
+  // none by default; `ris simulate` reads them from the environment.
+  FaultPlan faults;
 };
 
 struct RunCallbacks {

@@ -73,6 +73,7 @@
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/radar_params.h"
+#include "ris/sim/fault_plan.h"
 #include "ris/sim/point_target.h"
 #include "ris/sim/point_target_irf.h"
 #include "ris/sim/slar_products.h"
@@ -93,6 +94,8 @@ struct SlarStreamOptions {
   // SlarOptions::targets; targets_file names them in metadata.json.
   std::vector<PointTarget> targets;
   std::string targets_file;
+  // Failures injected for the tests of the failure paths (none by default).
+  FaultPlan faults;
 };
 
 struct SlarStreamSummary {

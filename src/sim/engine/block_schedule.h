@@ -51,13 +51,13 @@ inline BlockSchedule block_schedule_from_environment() {
                    fmt::format("expected dynamic or interleaved, got '{}'", v));
 }
 
-// The failure tests' hooks (tests/mpi_cli_test.cpp): `name`=b (RIS_FAIL_BLOCK,
-// RIS_FAIL_GEO_BLOCK) makes a pass's block b throw on the rank that computes
-// it; unset: -1, none.
-inline int failing_block_from_environment(const char* name) {
-  const char* v = std::getenv(name);
-  return v == nullptr ? -1 : std::atoi(v);
-}
+// How a pass hands out its blocks: the schedule, and the block whose worker
+// the run's fault plan kills (FaultPlan::kill_block, ris/sim/fault_plan.h;
+// -1: none).
+struct BlockOrder {
+  BlockSchedule schedule = BlockSchedule::dynamic;
+  int kill_block = -1;
+};
 
 namespace block_tags {
 inline constexpr int kAssign = 101;  // rank 0 -> worker: an int block, -1 = no more
@@ -69,9 +69,10 @@ inline constexpr int kError = 103;   // worker -> rank 0: int exit class (1 inpu
 // appends its bytes; unpack(const char*, std::size_t) -> Result;
 // consume(b, Result&) on rank 0, b = 0, 1, ..., n - 1.
 template <class Result, class Compute, class Pack, class Unpack, class Consume>
-void run_blocks_in_order(ProcessGroup& g, int n, BlockSchedule schedule, Compute compute, Pack pack,
-                         Unpack unpack, Consume consume) {
+void run_blocks_in_order(ProcessGroup& g, int n, const BlockOrder& order, Compute compute,
+                         Pack pack, Unpack unpack, Consume consume) {
   using namespace block_tags;
+  const BlockSchedule schedule = order.schedule;
   const int ranks = g.size();
   if (ranks == 1) {
     for (int b = 0; b < n; ++b) {
@@ -81,10 +82,10 @@ void run_blocks_in_order(ProcessGroup& g, int n, BlockSchedule schedule, Compute
     return;
   }
   if (g.rank() != 0) {
-    // A worker: its blocks, computed and sent in turn. RIS_KILL_BLOCK=b (a
-    // test's hook: a rank killed from outside, docs/scale.md) makes the
-    // worker given block b die of SIGKILL before computing it.
-    const int kill_block = failing_block_from_environment("RIS_KILL_BLOCK");
+    // A worker: its blocks, computed and sent in turn. The fault plan's
+    // kill_block (a test's hook: a rank killed from outside, docs/scale.md)
+    // makes the worker given block b die of SIGKILL before computing it.
+    const int kill_block = order.kill_block;
     int next_static = g.rank();
     for (;;) {
       int b = -1;

@@ -21,7 +21,8 @@
 //   void finish_block()                        e.g. a tile's maps written back
 // A source whose terrain is not a flat-Earth line (an acquisition's radar
 // grid on the ellipsoid: sim/sources/acquisition_lines.h; a PPI ray from its site:
-// ppi_simulation.cpp's PolarSource) computes the look geometry itself in
+// sim/sources/polar_lines.h, in memory or from a streamed block's sampled
+// terrain) computes the look geometry itself in
 // load() and says so with `static constexpr bool kMakesGeometry = true`;
 // the engine then skips line_geometry. Later sources
 // (an MPI rank's block range) add a thread source, not a driver.

@@ -16,9 +16,9 @@
 #include "ris/sensor/acquisition.h"
 #include "ris/sim/acquisition_simulation.h"
 #include "ris/sim/radiometry_setup.h"
-#include "sim/modes/acquisition_frame.h"
-#include "sim/sources/acquisition_lines.h"
 #include "sim/engine/slar_line_engine.h"
+#include "sim/sources/acquisition_frame.h"
+#include "sim/sources/acquisition_lines.h"
 
 namespace ris::detail {
 

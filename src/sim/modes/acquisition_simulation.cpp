@@ -2,9 +2,9 @@
 
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/sim/slar_run_setup.h"
-#include "sim/modes/acquisition_frame.h"
-#include "sim/sources/acquisition_lines.h"
 #include "sim/modes/acquisition_setup.h"
+#include "sim/sources/acquisition_frame.h"
+#include "sim/sources/acquisition_lines.h"
 
 namespace ris {
 

@@ -15,8 +15,9 @@
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
-#include "sim/targets/ppi_ray_targets.h"
 #include "sim/engine/slar_line_engine.h"
+#include "sim/sources/polar_lines.h"
+#include "sim/targets/ppi_ray_targets.h"
 
 namespace ris {
 
@@ -38,36 +39,6 @@ SlarImage crop_lines(const SlarImage& in, int first, int count) {
   cut(out.visible_count, in.visible_count);
   return out;
 }
-
-// ---- The polar line source: one ray from the site per line ----------------
-// The ray's terrain and look geometry (ppi_ray_geometry, as
-// compute_ppi_geometry fills a ray) straight into the engine's scratch.
-struct PolarSource {
-  static constexpr bool kMakesGeometry = true;
-  const Scene& scene;
-  const TerrainTexels& tex;
-  const PpiGeometry& pg;
-  PpiRayScratch& ray;
-
-  detail::LineSpan load(int line, detail::LineScratch& s) {
-    const PpiRayOut out{
-        s.height.data(), s.range.data(),    s.incidence.data(), s.local_incidence.data(),
-        s.area.data(),   s.near_end.data(), s.far_end.data(),   s.category.data(),
-        s.flags.data(),  s.dh_du.data()};
-    ppi_ray_geometry(scene, tex, pg, line, out, ray);
-    return {0, pg.rays.samples, &pg.rays};
-  }
-  void store_maps(int, const detail::LineSpan&, const detail::LineScratch&) const {}
-  void finish_block() const {}
-};
-
-struct PolarThreadSource {
-  const Scene& scene;
-  const TerrainTexels& tex;
-  const PpiGeometry& pg;
-  PpiRayScratch ray;
-  std::variant<PolarSource> block(int, int) { return PolarSource{scene, tex, pg, ray}; }
-};
 
 // The padded rays' image through the line engine (the polar source), the
 // rays' geometry kept (pg.rays allocated) and the targets added on their
@@ -94,7 +65,7 @@ SlarImage form_ppi_rays(const Scene& scene, PpiGeometry& pg, const Sigma0Lut& lu
   const detail::LineStages stages{ctx, LineLookFrame{}, true, p.range_window_bins, &keep};
   SlarLineCounts counts;
   detail::run_line_blocks(g, stages, 0, g.lines, 16, prof, counts, [&](detail::LineScratch&) {
-    return PolarThreadSource{scene, tex, pg, PpiRayScratch(g.samples)};
+    return detail::PolarThreadSource{scene, tex, pg, PpiRayScratch(g.samples)};
   });
   set_sample_counts(g, counts);
   g.nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));

@@ -21,7 +21,7 @@
 #include "ris/util/error.h"
 #include "ris/util/process_group.h"
 #include "ris/util/resource_guard.h"
-#include "sim/modes/acquisition_frame.h"
+#include "sim/sources/acquisition_frame.h"
 
 namespace ris {
 
@@ -190,6 +190,7 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
     PpiStreamOptions o;
     o.block_rays = r.block_lines;
     o.quiet = r.quiet;
+    o.faults = r.faults;
     o.targets = std::move(targets);
     res.ppi_streamed =
         simulate_ppi_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
@@ -198,6 +199,7 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   SlarStreamOptions o;
   o.block_lines = r.block_lines;
   o.quiet = r.quiet;
+  o.faults = r.faults;
   o.targets = std::move(targets);
   o.targets_file = r.targets_path;
   res.streamed =
@@ -285,6 +287,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
     SlarStreamOptions so;
     so.block_lines = r.block_lines;
     so.quiet = r.quiet;
+    so.faults = r.faults;
     AcquisitionStreamSummary s = simulate_acquisition_streamed(
         acq, dem_file, res.radar, *sigma0.source, o, res.info, r.out_dir, so);
     res.kind = RunKind::streamed;

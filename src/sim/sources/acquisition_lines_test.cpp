@@ -6,7 +6,7 @@
 
 #include "acquisition_test_dems.h"
 #include "ris/geometry/terrain_profile.h"
-#include "sim/modes/acquisition_frame.h"
+#include "sim/sources/acquisition_frame.h"
 
 namespace ris::detail {
 namespace {

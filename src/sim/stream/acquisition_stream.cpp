@@ -23,8 +23,8 @@
 #include "ris/util/process_group.h"
 #include "ris/util/progress.h"
 #include "ris/util/resource_guard.h"
-#include "sim/modes/acquisition_setup.h"
 #include "sim/engine/block_schedule.h"
+#include "sim/modes/acquisition_setup.h"
 #include "sim/stream/slant_stream_passes.h"
 
 namespace ris {
@@ -57,8 +57,8 @@ class AcquisitionStream {
                     const SlarStreamOptions& stream)
       : dem_(dem),
         options_(options),
-        schedule_(detail::block_schedule_from_environment()),
-        fail_block_(detail::failing_block_from_environment("RIS_FAIL_BLOCK")),
+        order_{detail::block_schedule_from_environment(), stream.faults.kill_block},
+        fail_block_(stream.faults.line_block),
         info_(info),
         out_dir_(out_dir),
         stream_(stream) {
@@ -142,7 +142,7 @@ class AcquisitionStream {
   void stage_done() { clock_.done(); }
 
   detail::SlantImagePasses passes() {
-    return {group_,        schedule_,
+    return {group_,        order_,
             sim(),         info_,
             block_lines(), dir_ ? &*dir_ : nullptr,
             &*bar_,        acquisition_grid_metadata(s_.out)};
@@ -189,7 +189,7 @@ class AcquisitionStream {
     double compute_cpu = 0.0, consume_cpu = 0.0;
     int computed = 0;
     detail::run_blocks_in_order<LineBlock>(
-        group_, blocks, schedule_,
+        group_, blocks, order_,
         [&](int b) {
           const double t0 = detail::process_cpu_seconds();
           LineBlock k = compute_block(b);
@@ -314,8 +314,8 @@ class AcquisitionStream {
   const EllipsoidalDemFile& dem_;
   const AcquisitionSimOptions& options_;
   ProcessGroup& group_ = process_group();
-  const detail::BlockSchedule schedule_;
-  const int fail_block_;  // RIS_FAIL_BLOCK, -1: none
+  const detail::BlockOrder order_;  // schedule, and the fault plan's kill_block
+  const int fail_block_;            // FaultPlan::line_block, -1: none
   const SlarRunInfo& info_;
   const std::filesystem::path out_dir_;
   const SlarStreamOptions& stream_;

@@ -36,11 +36,12 @@
 #include "ris/util/progress.h"
 #include "ris/util/rank_select.h"
 #include "sim/engine/block_schedule.h"
-#include "sim/targets/ppi_ray_targets.h"
-#include "sim/stream/slant_stream_passes.h"
-#include "sim/engine/slar_line_stages.h"
-#include "sim/stream/slar_stream_targets.h"
+#include "sim/engine/slar_line_engine.h"
 #include "sim/engine/texel_window.h"
+#include "sim/sources/polar_lines.h"
+#include "sim/stream/slant_stream_passes.h"
+#include "sim/stream/slar_stream_targets.h"
+#include "sim/targets/ppi_ray_targets.h"
 
 namespace ris {
 
@@ -154,8 +155,8 @@ class PpiStreamRun {
                const SlarRunInfo& info, const std::filesystem::path& out_dir,
                const PpiStreamOptions& options)
       : in_(scene_path),
-        schedule_(detail::block_schedule_from_environment()),
-        fail_block_(detail::failing_block_from_environment("RIS_FAIL_BLOCK")),
+        order_{detail::block_schedule_from_environment(), options.faults.kill_block},
+        fail_block_(options.faults.line_block),
         options_(options),
         info_(info),
         out_dir_(out_dir) {
@@ -479,85 +480,32 @@ class PpiStreamRun {
     }
   }
 
-  // Rays [k0, k1): geometry from the sampled terrain, then each ray's range
-  // profile (form_slar_image's per-line step).
+  // Rays [k0, k1) through the line engine: the windowed polar source's
+  // geometry from the sampled terrain, then each ray's range profile and
+  // point returns (the in-memory run's per-line stages,
+  // sim/sources/polar_lines.h), a ray per engine block as the threads take
+  // them.
   void block_profiles(int k0, int k1, SlarLineProfiles& prof, RayCounts& counts,
                       detail::LinePointTargets* targets) {
-    const int n = k1 - k0, samples = pg().rays.samples;
-    SlarGeometry& g = geom_;
-    g = SlarGeometry{};
-    g.lines = n;
-    g.samples = samples;
-    g.sample_step_m = pg().rays.sample_step_m;
-    g.first_sample_u_m = pg().rays.first_sample_u_m;
-    g.altitude_m = pg().altitude_m;
-    g.allocate_samples();
-    prof.allocate(n, bins(), k0);
-    std::int64_t in_swath = 0;
-    std::int64_t shadow = 0, layover = 0, back = 0, nodata = 0;
-    float r_min = counts.r_min, r_max = counts.r_max;
-#pragma omp parallel reduction(+ : in_swath, shadow, layover, back, nodata) \
-    reduction(min : r_min) reduction(max : r_max)
-    {
-      std::vector<float> dh_du(sz(samples));
-      SlarLineAccumulator scratch(bins());
-      detail::LineElementScratch elements(samples, bins());
-#pragma omp for schedule(dynamic, 1)
-      for (int k = 0; k < n; ++k) {
-        const auto [begin, end] = span_[sz(k)];
-        const std::size_t at = sz(k) * sz(samples);
-        const SampledTerrain terrain{t_height_.data() + at, t_dzdx_.data() + at,
-                                     t_dzdy_.data() + at, t_cat_.data() + at, t_flags_.data() + at};
-        const std::size_t i = g.index(k, 0);
-        const PpiRayOut ray_out{&g.height_m[i],        &g.slant_range_m[i],
-                                &g.incidence_rad[i],   &g.local_incidence_rad[i],
-                                &g.area_m2[i],         &g.range_near_end_m[i],
-                                &g.range_far_end_m[i], &g.category[i],
-                                &g.flags[i],           dh_du.data()};
-        ppi_ray_geometry_from_terrain(pg(), k0 + k, begin, end, terrain, ray_out);
-        for (std::size_t s = i; s < i + sz(samples); ++s) {
-          const std::uint8_t f = g.flags[s];
-          nodata += (f & sample_flag::kNoData) ? 1 : 0;
-          shadow += (f & sample_flag::kShadow) ? 1 : 0;
-          back += (f & sample_flag::kBackFacing) ? 1 : 0;
-          layover += (f & sample_flag::kLayover) ? 1 : 0;
-          if (f & (sample_flag::kNoData | sample_flag::kUnseen)) continue;
-          r_min = std::min(r_min, g.slant_range_m[s]);
-          r_max = std::max(r_max, g.slant_range_m[s]);
-        }
-        const std::size_t row = prof.index(k0 + k, 0);
-        const detail::LineElements e{samples,
-                                     g.flags.data() + i,
-                                     g.slant_range_m.data() + i,
-                                     g.range_near_end_m.data() + i,
-                                     g.range_far_end_m.data() + i,
-                                     g.incidence_rad.data() + i,
-                                     g.local_incidence_rad.data() + i,
-                                     g.area_m2.data() + i,
-                                     g.category.data() + i};
-        const detail::LineProfileRow out{prof.touch.data() + row, prof.mapped_count.data() + row,
-                                         prof.visible_count.data() + row, scratch.acc.data(),
-                                         scratch.acc_area.data()};
-        in_swath += detail::form_line_profile(*ctx_, e, elements, out, nullptr).in_swath;
-        if (targets != nullptr) {  // as the in-memory engine adds them (accumulate_line)
-          detail::add_line_point_returns(*ctx_, pg().rays, k0 + k, 0, samples, g.flags.data() + i,
-                                         g.height_m.data() + i, scratch.acc.data(), *targets);
-        }
-        if (rs_.imaging.range_window_bins > 0.0)
-          scratch.apply_range_window(rs_.imaging.range_window_bins);
-        for (int bb = 0; bb < bins(); ++bb) {
-          prof.power_w[row + sz(bb)] = static_cast<float>(scratch.acc[sz(bb)]);
-          prof.area_m2[row + sz(bb)] = static_cast<float>(scratch.acc_area[sz(bb)]);
-        }
-      }
-    }
-    counts.in_swath += in_swath;
-    counts.shadow += shadow;
-    counts.layover += layover;
-    counts.back_facing += back;
-    counts.nodata += nodata;
-    counts.r_min = r_min;
-    counts.r_max = r_max;
+    prof.allocate(k1 - k0, bins(), k0);
+    prof.samples_in_swath = 0;
+    const detail::LineKeep keep{nullptr, nullptr, targets};
+    const detail::LineStages stages{*ctx_, LineLookFrame{}, false, rs_.imaging.range_window_bins,
+                                    targets != nullptr ? &keep : nullptr};
+    const detail::SampledRays rays{
+        pg(),           k0, span_, t_height_.data(), t_dzdx_.data(), t_dzdy_.data(), t_cat_.data(),
+        t_flags_.data()};
+    SlarLineCounts c;
+    detail::run_line_blocks(pg().rays, stages, k0, k1, 1, prof, c, [&](detail::LineScratch&) {
+      return detail::WindowedPolarThreadSource{rays};
+    });
+    counts.in_swath += prof.samples_in_swath;
+    counts.shadow += c.shadow;
+    counts.layover += c.layover;
+    counts.back_facing += c.back_facing;
+    counts.nodata += c.nodata;
+    counts.r_min = std::min(counts.r_min, c.r_min_m);
+    counts.r_max = std::max(counts.r_max, c.r_max_m);
   }
 
   struct Sinks {
@@ -601,7 +549,7 @@ class PpiStreamRun {
     const int blocks = (all_rays() + summary_.block_rays - 1) / summary_.block_rays;
     RayCounts counts;
     detail::run_blocks_in_order<RayBlock>(
-        group_, blocks, schedule_, [&](int k) { return compute_block(k); }, pack_ray_block,
+        group_, blocks, order_, [&](int k) { return compute_block(k); }, pack_ray_block,
         unpack_ray_block,
         [&](int, RayBlock& k) {
           counts.add(k.counts);
@@ -881,8 +829,8 @@ class PpiStreamRun {
 
   const SceneStreamReader in_;
   ProcessGroup& group_ = process_group();
-  const detail::BlockSchedule schedule_;
-  const int fail_block_;  // RIS_FAIL_BLOCK, -1: none
+  const detail::BlockOrder order_;  // schedule, and the fault plan's kill_block
+  const int fail_block_;            // FaultPlan::line_block, -1: none
   const PpiStreamOptions& options_;
   const SlarRunInfo& info_;
   const std::filesystem::path out_dir_;
@@ -917,8 +865,7 @@ class PpiStreamRun {
   std::vector<float> t_height_, t_dzdx_, t_dzdy_;
   std::vector<std::uint16_t> t_cat_;
   std::vector<std::uint8_t> t_flags_;
-  Scene ws_;  // the window
-  SlarGeometry geom_;
+  Scene ws_;                           // the window
   RayCounts* block_counts_ = nullptr;  // the block being computed
   std::vector<RayBlock> spare_;        // consumed blocks, their buffers reused
   FloatRankSelect power_;

@@ -14,10 +14,10 @@
 // arrays). Its own lines' profiles, counts, scene maps (or per-sample map
 // values off the axes) and targets go on as in the incoherent stream; the
 // halo's are dropped (the neighbouring blocks own them). Then per look, as coherent_sar_intensity
-// does and with the same code (src/sim/modes/sar_coherent_parts.h): range compression of every line read,
-// azimuth compression and thermal noise of its own lines, the lit point targets in target order,
-// and the looks' mean intensity (double) of its own lines: the block's result (8 bytes a line x
-// bin, sent to rank 0 under MPI).
+// does and with the same code (src/sim/modes/sar_coherent_parts.h): range compression of every line
+// read, azimuth compression and thermal noise of its own lines, the lit point targets in target
+// order, and the looks' mean intensity (double) of its own lines: the block's result (8 bytes a
+// line x bin, sent to rank 0 under MPI).
 //
 // Rank 0 keeps the blocks' intensities in line order (add) and, as the
 // azimuth integrator emits the mean image's lines (their mask and area),

@@ -49,7 +49,7 @@ void picture_blocks(const SlantImagePasses& p, const GreytoneMap& map, const std
   std::vector<std::uint8_t> mask, no_data, ground_no_data;
   const int blocks = (lines + block_lines - 1) / block_lines;
   run_blocks_in_order<PictureBlock>(
-      p.group, blocks, p.schedule,
+      p.group, blocks, p.order,
       [&](int b) {
         if (!sp_ds) {
           sp_ds.emplace(open_raster((dir / "speckled_power_slant.tif").string()));

@@ -105,7 +105,8 @@ struct StreamLineBlock {
 void pack_line_block(const StreamLineBlock& k, std::vector<char>& out);
 // Block b's lines [l0, l1) of `lines` in blocks of block_lines, its counts
 // cleared, in a consumed block's buffers when `spare` has one. Throws at
-// b == fail_block (RIS_FAIL_BLOCK: a failure injected for the tests).
+// b == fail_block (FaultPlan::line_block, ris/sim/fault_plan.h: a failure
+// injected for the tests).
 StreamLineBlock start_line_block(int b, int block_lines, int lines, int fail_block,
                                  std::vector<StreamLineBlock>& spare);
 StreamLineBlock unpack_line_block(const char* p, std::size_t n);
@@ -131,7 +132,7 @@ SlarPictures picture_metadata(const GreytoneMap& map, std::uint64_t seed,
 // acquisition's grid).
 struct SlantImagePasses {
   ProcessGroup& group;
-  const BlockSchedule& schedule;
+  const BlockOrder& order;
   const SlarSimulation& sim;  // image layout, ground grid
   const SlarRunInfo& info;
   int block_lines = 0;

@@ -239,9 +239,9 @@ class StreamRun {
             const Sigma0Source& sigma0, const SlarRunInfo& info,
             const std::filesystem::path& out_dir, const SlarStreamOptions& options)
       : in_(scene_path),
-        schedule_(detail::block_schedule_from_environment()),
-        fail_block_(detail::failing_block_from_environment("RIS_FAIL_BLOCK")),
-        fail_geo_block_(detail::failing_block_from_environment("RIS_FAIL_GEO_BLOCK")),
+        order_{detail::block_schedule_from_environment(), options.faults.kill_block},
+        fail_block_(options.faults.line_block),
+        fail_geo_block_(options.faults.geocoding_block),
         options_(options),
         info_(info),
         out_dir_(out_dir) {
@@ -496,7 +496,7 @@ class StreamRun {
     double compute_cpu = 0.0, consume_cpu = 0.0;
     int computed = 0;
     detail::run_blocks_in_order<LineBlock>(
-        group_, blocks, schedule_,
+        group_, blocks, order_,
         [&](int b) {
           const double t0 = process_cpu_seconds();
           LineBlock k = oblique ? compute_oblique_block(*oblique, b) : compute_block(*engine, b);
@@ -780,7 +780,7 @@ class StreamRun {
     }
     const std::filesystem::path dir(
         share_from_rank0(0.0, root ? dir_->path("").string() : std::string()).second);
-    const int fail = detail::failing_block_from_environment("RIS_FAIL_MAPS_BLOCK");
+    const int fail = options_.faults.maps_block;
     detail::ObliqueSceneMaps maps(grid(), sim().geometry, rs_.imaging.range.near_m,
                                   rs_.imaging.range.far_m());
     std::optional<GdalDataset> mask_ds, incidence_ds;  // at the first block (see geocoded_pass)
@@ -795,7 +795,7 @@ class StreamRun {
     cat_.resize(z_.size());
     ok_.resize(z_.size());
     detail::run_blocks_in_order<MapBand>(
-        group_, (grid().rows + block_rows - 1) / block_rows, schedule_,
+        group_, (grid().rows + block_rows - 1) / block_rows, order_,
         [&](int b) {
           if (b == fail) {
             throw std::runtime_error(
@@ -841,7 +841,7 @@ class StreamRun {
 
   // What passes 1b and 2 need (slant_stream_passes.h).
   detail::SlantImagePasses passes() {
-    return {group_, schedule_, sim(), info_, block_lines(), dir_ ? &*dir_ : nullptr, &*bar_, {}};
+    return {group_, order_, sim(), info_, block_lines(), dir_ ? &*dir_ : nullptr, &*bar_, {}};
   }
 
   // The ground-range grid over the median elevation (simulate_slar).
@@ -893,7 +893,7 @@ class StreamRun {
     const int blocks = (grid().rows + block_rows - 1) / block_rows;
     geo_.blocks = blocks;
     detail::run_blocks_in_order<GeoBlock>(
-        group_, blocks, schedule_,
+        group_, blocks, order_,
         [&](int b) {
           const double t0 = process_cpu_seconds();
           if (b == fail_geo_block_) {
@@ -991,9 +991,9 @@ class StreamRun {
 
   const SceneStreamReader in_;
   ProcessGroup& group_ = process_group();
-  const detail::BlockSchedule schedule_;
-  const int fail_block_;      // RIS_FAIL_BLOCK, -1: none
-  const int fail_geo_block_;  // RIS_FAIL_GEO_BLOCK, -1: none
+  const detail::BlockOrder order_;  // schedule, and the fault plan's kill_block
+  const int fail_block_;            // FaultPlan::line_block, -1: none
+  const int fail_geo_block_;        // FaultPlan::geocoding_block, -1: none
   const SlarStreamOptions& options_;
   const SlarRunInfo& info_;
   const std::filesystem::path out_dir_;

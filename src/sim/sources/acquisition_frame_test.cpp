@@ -1,4 +1,4 @@
-#include "sim/modes/acquisition_frame.h"
+#include "sim/sources/acquisition_frame.h"
 
 #include <gtest/gtest.h>
 
