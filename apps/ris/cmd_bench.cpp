@@ -38,6 +38,7 @@
 #include "ris/perf/topo_bench.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/sensor/radar_config.h"
+#include "ris/sim/slar_channels.h"
 #include "ris/sim/slar_products.h"
 #include "ris/sim/slar_simulation.h"
 #include "ris/sim/slar_stream.h"
@@ -271,6 +272,37 @@ void run_bench(const BenchArgs& a) {
     print_stages(t2);
     fmt::print("  speed-up 1 -> 2 threads: {:.2f}x\n", t1.total_s / t2.total_s);
     if (tc.heading_deg == 0.0) cells_per_s_2 = cells / t2.total_s;
+  }
+
+  // The channel axis (ris/sim/slar_channels.h): 4 channels over the
+  // along-axis track's geometry against 1 (the simulation only; the
+  // geometry is shared, each channel's profiles and image are its own).
+  {
+    const RadarParams radar = bench_radar(base, scene, 0.0);
+    const std::vector<SlarChannel> four{
+        {radar_at_band(radar, 1.25e9, Polarisation::HH), sigma0.get(), sigma0_path},
+        {radar_at_band(radar, 5.3e9, Polarisation::HH), sigma0.get(), sigma0_path},
+        {radar_at_band(radar, 5.3e9, Polarisation::VV), sigma0.get(), sigma0_path},
+        {radar_at_band(radar, 9.6e9, Polarisation::HH), sigma0.get(), sigma0_path}};
+    const int threads = std::min(2, max_threads);
+    omp_set_num_threads(threads);
+    std::vector<double> one_s, four_s;
+    for (int i = 0; i < a.repeats; ++i) {
+      auto c0 = Clock::now();
+      (void)simulate_slar_channels(scene, std::span(four).first(1), {});
+      one_s.push_back(seconds_since(c0));
+      c0 = Clock::now();
+      (void)simulate_slar_channels(scene, four, {});
+      four_s.push_back(seconds_since(c0));
+    }
+    std::sort(one_s.begin(), one_s.end());
+    std::sort(four_s.begin(), four_s.end());
+    const double t1 = one_s[one_s.size() / 2], t4 = four_s[four_s.size() / 2];
+    fmt::print(
+        "\nchannels (along-axis, {} threads, simulation only): 1 channel (L HH) {:.1f} ms; "
+        "4 channels (L HH, C HH, C VV, X HH) {:.1f} ms = {:.2f} x one channel\n",
+        threads, 1e3 * t1, 1e3 * t4, t4 / t1);
+    fmt::print("channels_4_over_1={:.3f}\n", t4 / t1);
   }
 
   // Bandwidth baseline on the same scene, same run.

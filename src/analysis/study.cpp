@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "ris/sensor/radar_params.h"
+#include "ris/sim/slar_channels.h"
 #include "ris/sim/slar_products.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
@@ -241,33 +242,44 @@ StudyResult run_study(const Scene& scene, const RadarParams& base_radar, const S
   const UniformSigma0 unit(sigma0, nullptr, "sigma0 = 1 (the radar-equation factor)");
   const UniformSigma0 null_law(sigma0, muhleman_sigma0, "muhleman for every category (null check)");
 
-  std::vector<std::int32_t> labels;
-  const double n_bands = double(bands.size());
+  // Every band's three simulations (speckled, the sigma0 = 1 calibration,
+  // the null check's) are channels of one run over one geometry
+  // (ris/sim/slar_channels.h): each the bytes of its own run, the geometry
+  // computed once. Channel 0 (the first band) keeps the per-sample geometry
+  // the attribution reads.
+  const std::size_t per_band = options.null_check ? 3 : 2;
+  std::vector<SlarChannel> channels;
+  for (const StudyBand& band : bands) {
+    const RadarParams radar = radar_for_band(base_radar, band);
+    channels.push_back({radar, &sigma0, backscatter_file});
+    channels.push_back({radar, &unit, backscatter_file});
+    if (options.null_check) channels.push_back({radar, &null_law, backscatter_file});
+  }
+  SlarOptions slar;
+  slar.backscatter_file = backscatter_file;
+  slar.keep_geometry = true;
+  if (options.progress) {
+    slar.progress = [&](std::string_view stage, double f) {
+      options.progress(fmt::format("{} bands ({})", bands.size(), stage), 0.8 * f);
+    };
+  }
+  const std::vector<SlarSimulation> sims = simulate_slar_channels(scene, channels, slar);
+  // The geometry, hence the attribution and the bins, is the same in every band.
+  const PixelAttribution at = attribute_pixels(sims.front());
+  result.incidence = incidence_bins(sims.front(), at, options.window);
+  const std::vector<std::int32_t> labels = at.category;
+  result.categories = sims.front().categories;
+  result.category_names = sims.front().category_names;
   for (std::size_t i = 0; i < bands.size(); ++i) {
     const StudyBand& band = bands[i];
-    SlarOptions slar;
-    slar.backscatter_file = backscatter_file;
-    slar.keep_geometry = labels.empty();  // the attribution reads the per-sample geometry
     if (options.progress) {
-      slar.progress = [&](std::string_view stage, double f) {
-        options.progress(fmt::format("{} ({})", band.label(), stage), (double(i) + f) / n_bands);
-      };
+      options.progress(fmt::format("{} (separability)", band.label()),
+                       0.8 + 0.2 * double(i) / double(bands.size()));
     }
-    const RadarParams radar = radar_for_band(base_radar, band);
-    const SlarSimulation sim = simulate_slar(scene, radar, sigma0, slar);
+    const SlarSimulation& sim = sims[i * per_band];
+    const SlarSimulation& factor = sims[i * per_band + 1];
     const SlarPictures pic = render_slar(sim, options.seed);
-    // The geometry, hence the attribution and the bins, is the same in every band.
-    if (labels.empty()) {
-      const PixelAttribution at = attribute_pixels(sim);
-      result.incidence = incidence_bins(sim, at, options.window);
-      labels = at.category;
-      result.categories = sim.categories;
-      result.category_names = sim.category_names;
-    }
     RIS_CHECK(labels.size() == pic.slant_grey.size());
-    SlarOptions plain;
-    plain.backscatter_file = backscatter_file;
-    const SlarSimulation factor = simulate_slar(scene, radar, unit, plain);
 
     StudyPanel p;
     p.band = band;
@@ -279,7 +291,7 @@ StudyResult run_study(const Scene& scene, const RadarParams& base_radar, const S
     p.separability =
         separability_of(pic, sim, factor, labels, result.incidence, result.categories, sep);
     if (options.null_check) {
-      const SlarSimulation null_sim = simulate_slar(scene, radar, null_law, plain);
+      const SlarSimulation& null_sim = sims[i * per_band + 2];
       p.null_separability = separability_of(render_slar(null_sim, options.seed), null_sim, factor,
                                             labels, result.incidence, result.categories, sep);
     }

@@ -27,6 +27,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,8 @@
 namespace ris {
 
 namespace detail {
-struct LineKeep;  // sim/engine/slar_line_stages.h: the kept-geometry sink and point targets
+struct LineKeep;      // sim/engine/slar_line_stages.h: the kept-geometry sink and point targets
+struct ExtraChannel;  // sim/engine/slar_line_engine.h: a channel beyond the first
 }  // namespace detail
 
 // Whether the fused path reproduces the reference stages for this layout:
@@ -74,11 +76,12 @@ class SlarLineEngine {
   // window_for_lines(line0, line1). keep (optional): what the run keeps
   // beyond the profiles (form_slar_image_fused's SlarEngineKeep).
   // sample_maps (optional): every sample's scene-map value of the lines,
-  // as the kept geometry gives them to scene_geometry_maps.
+  // as the kept geometry gives them to scene_geometry_maps. channels: the
+  // run's channels after the first, whose profiles the same lines fill.
   void run(int line0, int line1, const SceneWindow& in, SlarLineProfiles& prof,
            const SceneMapsWindow& maps, SlarLineCounts& counts,
-           const detail::LineKeep* keep = nullptr,
-           const SampleMapRows* sample_maps = nullptr) const;
+           const detail::LineKeep* keep = nullptr, const SampleMapRows* sample_maps = nullptr,
+           std::span<const detail::ExtraChannel> channels = {}) const;
 
  private:
   const Scene& scene_;
@@ -129,8 +132,20 @@ struct SlarEngineKeep {
 // lines are not one per cell row or column (fused_slar_image_applies false)
 // needs keep.geometry: its maps are made from the kept geometry
 // (scene_geometry_maps).
+//
+// channels (the channel axis, ris/sim/slar_channels.h): more channels over
+// the same lines, each with its own sigma0 look-up and imaging parameters
+// (radar equation, gain, SAR windows) on the first channel's range bins;
+// each channel's image is what a run of that channel alone gives (same
+// bytes), from one pass of the geometry.
+struct SlarImageChannel {
+  const Sigma0Lut* lut = nullptr;
+  const SlarImagingParams* params = nullptr;
+  SlarImage* image = nullptr;  // written
+};
 SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& layout, SceneGeometryMaps& maps,
                                 const Sigma0Lut& lut, const SlarImagingParams& params,
-                                const std::string& radar_file, const SlarEngineKeep& keep = {});
+                                const std::string& radar_file, const SlarEngineKeep& keep = {},
+                                std::span<const SlarImageChannel> channels = {});
 
 }  // namespace ris

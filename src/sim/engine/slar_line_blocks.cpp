@@ -467,14 +467,19 @@ struct DirectThreadSource {
 
 void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLineProfiles& prof,
                          const SceneMapsWindow& maps, SlarLineCounts& counts,
-                         const detail::LineKeep* keep, const SampleMapRows* sample_maps) const {
+                         const detail::LineKeep* keep, const SampleMapRows* sample_maps,
+                         std::span<const detail::ExtraChannel> channels) const {
   const SlarGeometry& g = g_;
   const Track& t = g.track;
   const int samples = g.samples;
   const detail::SlarElementContext ctx = detail::element_context(params_, gain2_, lut_, prof.bins);
   const detail::LineStages stages{
-      ctx, LineLookFrame{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m},
-      !gain2_.uniform() || (keep && keep->geometry), params_.range_window_bins, keep};
+      ctx,
+      LineLookFrame{g.altitude_m, t.cross_x, t.cross_y, g.line_spacing_m * g.sample_step_m},
+      !gain2_.uniform() || (keep && keep->geometry) || detail::channels_need_incidence(channels),
+      params_.range_window_bins,
+      keep,
+      channels};
   const DirectRun run{scene_,
                       g,
                       in,
@@ -544,7 +549,8 @@ std::int64_t count_nodata_cells(const Scene& scene) {
 
 SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeometryMaps& maps,
                                 const Sigma0Lut& lut, const SlarImagingParams& p,
-                                const std::string& radar_file, const SlarEngineKeep& keep) {
+                                const std::string& radar_file, const SlarEngineKeep& keep,
+                                std::span<const SlarImageChannel> channels) {
   // Lines not one per cell row or column leave the maps to the kept geometry.
   const bool source_maps = fused_slar_image_applies(scene, g);
   RIS_CHECK(source_maps || keep.geometry);
@@ -570,6 +576,22 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
                                    targets ? &*targets : nullptr};
   const detail::LineKeep* kept =
       line_keep.geometry || line_keep.element_power_w || line_keep.targets ? &line_keep : nullptr;
+  // The other channels: each its gain table, element context and profiles.
+  const std::size_t nc = channels.size();
+  std::vector<TwoWayGainTable> gain2;
+  gain2.reserve(nc);
+  std::vector<detail::SlarElementContext> ctx(nc);
+  std::vector<SlarLineProfiles> profs(nc);
+  std::vector<detail::ExtraChannel> extra(nc);
+  for (std::size_t c = 0; c < nc; ++c) {
+    const SlarImagingParams& pc = *channels[c].params;
+    RIS_CHECK(pc.range.count == p.range.count && pc.range.near_m == p.range.near_m &&
+              pc.range.bin_m == p.range.bin_m);
+    gain2.emplace_back(pc.elevation_gain, pc.peak_gain, radar_file);
+    profs[c].allocate(g.lines, p.range.count);
+    ctx[c] = detail::element_context(pc, gain2[c], *channels[c].lut, p.range.count);
+    extra[c] = {&ctx[c], pc.range_window_bins, &profs[c]};
+  }
   SlarLineCounts counts;
   if (g.direct_sampling) {
     const SlarLineEngine engine(scene, g, lut, p, radar_file);
@@ -583,17 +605,20 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
       maps.local_incidence_deg.resize(scene.size());
       out = {0, 0, scene.rows, scene.cols, maps.mask.data(), maps.local_incidence_deg.data()};
     }
-    engine.run(0, g.lines, SceneWindow::whole(scene), prof, out, counts, kept);
+    engine.run(0, g.lines, SceneWindow::whole(scene), prof, out, counts, kept, nullptr, extra);
   } else {
     if (keep.geometry) g.allocate_samples();
     // The oblique path sets every cell first itself.
     maps.mask.resize(scene.size());
     maps.local_incidence_deg.resize(scene.size());
-    detail::run_oblique_lines(scene, g, lut, p, radar_file, prof, maps, counts, kept);
+    detail::run_oblique_lines(scene, g, lut, p, radar_file, prof, maps, counts, kept, extra);
   }
   set_sample_counts(g, counts);
   g.nodata_cells = count_nodata_cells(scene);
   check_swath_hits_scene(prof.samples_in_swath, p.range, counts, radar_file);
+  for (std::size_t c = 0; c < nc; ++c) {
+    *channels[c].image = slar_image_from_profiles(profs[c], *channels[c].params, g.line_spacing_m);
+  }
   SlarImage img = slar_image_from_profiles(prof, p, g.line_spacing_m);
   if (keep.element_power) img.element_power_w = std::move(element_power);
   if (targets) {

@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <span>
 #include <type_traits>
 #include <variant>
 
@@ -60,6 +61,25 @@ constexpr bool makes_geometry() {
   }
 }
 
+// A channel of a run beyond its first (the channel axis: another frequency,
+// polarisation or backscatter source over the same geometry,
+// ris/sim/slar_channels.h): its element context (radar equation, gain
+// table, sigma0 look-up), its range window and its profiles, which each line
+// fills after the first channel's from the same per-line geometry in the
+// scratch. The range bins are the first channel's. No kept geometry and no
+// point targets (the first channel keeps what is kept).
+struct ExtraChannel {
+  const SlarElementContext* ctx = nullptr;
+  double range_window_bins = 0.0;
+  SlarLineProfiles* prof = nullptr;
+};
+
+// Whether a channel's gain table reads each sample's incidence.
+inline bool channels_need_incidence(std::span<const ExtraChannel> channels) {
+  return std::any_of(channels.begin(), channels.end(),
+                     [](const ExtraChannel& c) { return !c.ctx->gain2->uniform(); });
+}
+
 // The per-line stages' fixed parts for a run.
 struct LineStages {
   const SlarElementContext& ctx;
@@ -70,6 +90,8 @@ struct LineStages {
   // geometry, element power and point returns, as the stage path
   // (compute_slar_geometry + form_slar_image) keeps and adds them.
   const LineKeep* keep = nullptr;
+  // The run's channels after the first (none: a single-channel run).
+  std::span<const ExtraChannel> channels = {};
 };
 
 // Runs lines [line0, line1) in blocks of block_lines: fills their rows of
@@ -100,6 +122,13 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
               }
               in_swath += accumulate_line(stages.ctx, span.n, s, prof, line, local,
                                           stages.range_window_bins, span.first, stages.keep, &g);
+              // The other channels from the same geometry (the counts are
+              // the geometry's: the first channel's).
+              for (const ExtraChannel& c : stages.channels) {
+                SlarLineCounts same;
+                accumulate_line(*c.ctx, span.n, s, *c.prof, line, same, c.range_window_bins,
+                                span.first, nullptr, &g);
+              }
               source.store_maps(line, span, s);
             }
             source.finish_block();
@@ -110,6 +139,7 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
     counts.add(local);
   }
   prof.samples_in_swath += in_swath;
+  for (const ExtraChannel& c : stages.channels) c.prof->samples_in_swath += in_swath;
 }
 
 }  // namespace ris::detail

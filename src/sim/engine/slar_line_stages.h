@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -123,10 +124,12 @@ void keep_line_geometry(SlarGeometry& kept, int line, int first, int n, const Li
 
 // The fused run for a heading off the grid axes (slar_oblique_lines.cpp):
 // fills prof (allocated), maps (sized to the scene) and counts.
-// keep (optional): the kept-geometry sink and point targets.
+// keep (optional): the kept-geometry sink and point targets. channels: the
+// run's channels after the first (sim/engine/slar_line_engine.h).
+struct ExtraChannel;
 void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
                        const SlarImagingParams& p, const std::string& radar_file,
                        SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts,
-                       const LineKeep* keep = nullptr);
+                       const LineKeep* keep = nullptr, std::span<const ExtraChannel> channels = {});
 
 }  // namespace ris::detail

@@ -14,6 +14,7 @@
 #include "ris/image/speckle.h"
 #include "ris/sensor/elevation_gain.h"
 #include "ris/sim/radiometry_setup.h"
+#include "ris/sim/slar_channels.h"
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/sim/slar_run_setup.h"
 #include "ris/util/error.h"
@@ -40,8 +41,9 @@ double median_valid_elevation(const Scene& scene) {
 // greytone (10 bytes); per ground-range pixel power, mask and greytone (6).
 // The ground grid's spacing is the line spacing, so a 1 cm azimuth line
 // spacing once made a ground image of 10^11 pixels.
+// channels: images of that many channels (ris/sim/slar_channels.h).
 void require_run_memory(const SlarGeometry& g, bool keeps_geometry, const SlantRangeBins& range,
-                        double h_ref_m, const std::string& radar_file) {
+                        double h_ref_m, const std::string& radar_file, int channels) {
   const std::string key = "azimuth_line_spacing";
   // Terrain above the sensor or no range bins: reported by the checks that
   // follow, with their own messages.
@@ -52,8 +54,10 @@ void require_run_memory(const SlarGeometry& g, bool keeps_geometry, const SlantR
   const std::int64_t samples = checked_mul(g.lines, g.samples, radar_file, key);
   const std::int64_t slant = checked_mul(g.lines, range.count, radar_file, key);
   const std::int64_t ground_px = checked_mul(g.lines, ground.count, radar_file, key);
-  std::int64_t bytes = checked_add(checked_mul(slant, 10, radar_file, key),
-                                   checked_mul(ground_px, 6, radar_file, key), radar_file, key);
+  std::int64_t bytes =
+      checked_mul(checked_add(checked_mul(slant, 10, radar_file, key),
+                              checked_mul(ground_px, 6, radar_file, key), radar_file, key),
+                  channels, radar_file, key);
   if (keeps_geometry)
     bytes = checked_add(bytes, checked_mul(samples, 31, radar_file, key), radar_file, key);
   require_memory(bytes, radar_file, key,
@@ -103,17 +107,64 @@ std::vector<std::string> sar_resolution_warnings(const Scene& scene, const SlarG
   return out;
 }
 
-SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
+namespace {
+
+// Channel c's geometry must be channel 0's (ris/sim/slar_channels.h): its
+// track, lines and range bins.
+void check_same_geometry(const SlarSimulation& first, const SlarSimulation& other,
+                         const SlarGeometry& first_layout, const SlarGeometry& layout,
+                         std::size_t c) {
+  const std::string& file = other.radar.source_file;
+  const auto refuse = [&](const std::string& key, const std::string& what) {
+    throw InputError(file, key,
+                     fmt::format("channel {} of a multi-channel run must share channel 0's ({}) "
+                                 "geometry: {}",
+                                 c, first.radar.source_file, what));
+  };
+  if (other.radar.mode != first.radar.mode) refuse("mode", "a different mode");
+  if (layout.lines != first_layout.lines || layout.samples != first_layout.samples ||
+      layout.altitude_m != first_layout.altitude_m ||
+      layout.line_spacing_m != first_layout.line_spacing_m ||
+      layout.sample_step_m != first_layout.sample_step_m ||
+      layout.first_sample_u_m != first_layout.first_sample_u_m ||
+      layout.track.cross_x != first_layout.track.cross_x ||
+      layout.track.cross_y != first_layout.track.cross_y) {
+    refuse("track", "a different track or azimuth line spacing");
+  }
+  if (other.derived.near_slant_range_m != first.derived.near_slant_range_m ||
+      other.derived.range_bin_m != first.derived.range_bin_m ||
+      other.derived.range_bins != first.derived.range_bins) {
+    refuse("sweep_delay", "different range bins (sweep delay, pulse width or sampling)");
+  }
+}
+
+}  // namespace
+
+SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar,
                              const Sigma0Source& sigma0, const SlarOptions& options) {
-  SlarSimulation sim;
-  sim.radar = radar_in;
+  const SlarChannel one{radar, &sigma0, ""};
+  return std::move(simulate_slar_channels(scene, std::span(&one, 1), options).front());
+}
+
+std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
+                                                   std::span<const SlarChannel> channels,
+                                                   const SlarOptions& options) {
+  if (channels.empty()) throw InputError("", "channels", "a run needs at least one channel");
+  const std::size_t nc = channels.size();
+  std::vector<SlarSimulation> sims(nc);
+  std::vector<std::string> backscatter_files(nc);
+  for (std::size_t c = 0; c < nc; ++c) {
+    sims[c].radar = channels[c].radar;
+    sims[c].derived = derive(sims[c].radar);
+    backscatter_files[c] = channels[c].backscatter_file.empty()
+                               ? options.backscatter_name(*channels[c].sigma0)
+                               : channels[c].backscatter_file;
+  }
+  SlarSimulation& sim = sims.front();
   RadarParams& radar = sim.radar;
-  sim.derived = derive(radar);
-  const std::string backscatter_file = options.backscatter_name(sigma0);
   if (std::find(scene.valid.begin(), scene.valid.end(), 1) == scene.valid.end()) {
     throw InputError("scene", "", "the scene has no cell with data");
   }
-
   // Geometry (the seed's SLAR Geometry, Slope and Shadow), radiometry and
   // image formation run per line through the line engine
   // (ris/sim/slar_line_blocks.h), without whole-scene geometry buffers
@@ -124,6 +175,24 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   sim.track = resolve_track(radar.track, scene, radar.source_file);
   const SlarGeometry layout = slar_geometry_layout(scene, sim.track, radar.azimuth_line_spacing_m);
   const bool coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
+  for (std::size_t c = 1; c < nc; ++c) {
+    SlarSimulation& other = sims[c];
+    other.track = resolve_track(other.radar.track, scene, other.radar.source_file);
+    const SlarGeometry lc =
+        slar_geometry_layout(scene, other.track, other.radar.azimuth_line_spacing_m);
+    check_same_geometry(sim, other, layout, lc, c);
+    if (coherent || (other.radar.mode == RadarMode::sar && other.radar.sar.coherent)) {
+      throw InputError(other.radar.source_file, "sar.coherent",
+                       "the coherent SAR is a single-channel run for now; run each channel "
+                       "alone, or set coherent = false");
+    }
+    if (!options.targets.empty()) {
+      throw InputError(other.radar.source_file, "targets",
+                       "point targets are placed in single-channel runs only for now; run each "
+                       "channel alone with its targets");
+    }
+    other.geometry = layout;  // the layout: the counts follow from channel 0's run
+  }
   const bool keep_geometry =
       options.keep_geometry || coherent || !fused_slar_image_applies(scene, layout);
   // Memory before any large array or long loop (ris/util/resource_guard.h).
@@ -132,19 +201,22 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   require_run_memory(layout, keep_geometry,
                      SlantRangeBins{sim.derived.near_slant_range_m, sim.derived.range_bin_m,
                                     sim.derived.range_bins},
-                     h_ref, radar.source_file);
+                     h_ref, radar.source_file, static_cast<int>(nc));
   scene.validate("scene");
   check_terrain_below_sensor(scene, sim.track.altitude_m, radar.source_file);
   sim.geometry = layout;
-
   // sigma0 for every category the scene uses (and the reference's), the
-  // switched-off factors at their reference values.
+  // switched-off factors at their reference values; each channel's own.
   options.report("backscatter", 0.3);
-  RadiometrySetup rs = prepare_radiometry(scene, radar, sim.derived, sigma0, backscatter_file);
-
+  std::vector<RadiometrySetup> rs;
+  rs.reserve(nc);
+  for (std::size_t c = 0; c < nc; ++c) {
+    rs.push_back(prepare_radiometry(scene, sims[c].radar, sims[c].derived, *channels[c].sigma0,
+                                    backscatter_files[c]));
+  }
   options.report("image formation", 0.4);
   // SAR windows, resolution warnings and thermal noise (as a streamed run).
-  complete_slar_setup(sim, rs, scene);
+  for (std::size_t c = 0; c < nc; ++c) complete_slar_setup(sims[c], rs[c], scene);
   check_point_targets_on_scene(options.targets, scene);
   options.report("geometry + image formation + scene maps (line engine)", 0.4);
   SlarEngineKeep keep;
@@ -153,16 +225,29 @@ SlarSimulation simulate_slar(const Scene& scene, const RadarParams& radar_in,
   keep.targets = &options.targets;
   keep.point_returns = &sim.point_returns;
   keep.hidden_targets = &sim.hidden_targets;
-  sim.image = form_slar_image_fused(scene, sim.geometry, sim.scene_maps, rs.lut, rs.imaging,
-                                    radar.source_file, keep);
+  std::vector<SlarImageChannel> more;
+  for (std::size_t c = 1; c < nc; ++c) more.push_back({&rs[c].lut, &rs[c].imaging, &sims[c].image});
+  sim.image = form_slar_image_fused(scene, sim.geometry, sim.scene_maps, rs[0].lut, rs[0].imaging,
+                                    radar.source_file, keep, more);
+  for (std::size_t c = 1; c < nc; ++c) {
+    // The geometry's counts and scene maps are the first channel's.
+    SlarGeometry& g = sims[c].geometry;
+    g.nodata_samples = sim.geometry.nodata_samples;
+    g.shadow_samples = sim.geometry.shadow_samples;
+    g.back_facing_samples = sim.geometry.back_facing_samples;
+    g.layover_samples = sim.geometry.layover_samples;
+    g.nodata_cells = sim.geometry.nodata_cells;
+    sims[c].scene_maps = sim.scene_maps;
+  }
   // Switch corrections and SAR thermal noise (as a streamed run's blocks).
-  finish_slar_image(sim, sim.image, rs.terms);
-
+  for (std::size_t c = 0; c < nc; ++c) finish_slar_image(sims[c], sims[c].image, rs[c].terms);
   // Products on the ground-range grid.
   options.report("ground-range grid", 0.9);
-  sim.ground_grid =
-      ground_range_grid(sim.image.range, sim.geometry.altitude_m, h_ref, sim.image.line_spacing_m);
-  return sim;
+  for (SlarSimulation& s : sims) {
+    s.ground_grid =
+        ground_range_grid(s.image.range, s.geometry.altitude_m, h_ref, s.image.line_spacing_m);
+  }
+  return sims;
 }
 
 SlarPictures render_slar(const SlarSimulation& sim, std::uint64_t seed,

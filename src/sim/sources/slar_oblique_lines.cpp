@@ -237,13 +237,16 @@ SampleMapValue unseen_map_value(double near_m, double far_m) {
 
 ObliqueStages::ObliqueStages(const SlarGeometry& g, const Sigma0Lut& lut,
                              const SlarImagingParams& p, const std::string& radar_file, int bins,
-                             const LineKeep* keep)
+                             const LineKeep* keep, std::span<const ExtraChannel> channels)
     : gain2_(p.elevation_gain, p.peak_gain, radar_file),
       ctx_(element_context(p, gain2_, lut, bins)),
       stages_{ctx_,
               LineLookFrame{g.altitude_m, g.track.cross_x, g.track.cross_y,
                             g.line_spacing_m * g.sample_step_m},
-              !gain2_.uniform() || (keep && keep->geometry), p.range_window_bins, keep} {}
+              !gain2_.uniform() || (keep && keep->geometry) || channels_need_incidence(channels),
+              p.range_window_bins,
+              keep,
+              channels} {}
 
 // The fused run for any other heading, through the line engine with the
 // oblique source. The stage path samples and scans the same spans
@@ -253,10 +256,10 @@ ObliqueStages::ObliqueStages(const SlarGeometry& g, const Sigma0Lut& lut,
 void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
                        const SlarImagingParams& p, const std::string& radar_file,
                        SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts,
-                       const LineKeep* keep) {
+                       const LineKeep* keep, std::span<const ExtraChannel> channels) {
   const TerrainTexels tex = terrain_texels(scene);
   const CellSampleFrame frame = cell_sample_frame(scene, g);
-  const ObliqueStages os(g, lut, p, radar_file, prof.bins, keep);
+  const ObliqueStages os(g, lut, p, radar_file, prof.bins, keep, channels);
   const LineStages& stages = os.stages();
   const ObliqueRun run{scene, g, tex, frame, maps, p.range.near_m, p.range.far_m()};
   // Each row's cells outside the swath here, the others by the blocks

@@ -61,7 +61,8 @@ SampleMapValue unseen_map_value(double near_m, double far_m);
 class ObliqueStages {
  public:
   ObliqueStages(const SlarGeometry& g, const Sigma0Lut& lut, const SlarImagingParams& p,
-                const std::string& radar_file, int bins, const LineKeep* keep);
+                const std::string& radar_file, int bins, const LineKeep* keep,
+                std::span<const ExtraChannel> channels = {});
   ObliqueStages(const ObliqueStages&) = delete;
   ObliqueStages& operator=(const ObliqueStages&) = delete;
   const LineStages& stages() const { return stages_; }
