@@ -210,9 +210,13 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
   options.report("backscatter", 0.3);
   std::vector<RadiometrySetup> rs;
   rs.reserve(nc);
-  for (std::size_t c = 0; c < nc; ++c) {
-    rs.push_back(prepare_radiometry(scene, sims[c].radar, sims[c].derived, *channels[c].sigma0,
-                                    backscatter_files[c]));
+  // The scene's categories are read once (a pass over the scene), by the
+  // first channel.
+  rs.push_back(
+      prepare_radiometry(scene, radar, sim.derived, *channels[0].sigma0, backscatter_files[0]));
+  for (std::size_t c = 1; c < nc; ++c) {
+    rs.push_back(prepare_radiometry(rs[0].categories, sims[c].radar, sims[c].derived,
+                                    *channels[c].sigma0, backscatter_files[c]));
   }
   options.report("image formation", 0.4);
   // SAR windows, resolution warnings and thermal noise (as a streamed run).
