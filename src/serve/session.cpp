@@ -194,6 +194,7 @@ nlohmann::json Session::run_summary() const {
                              : fmt::format("/api/image/{}.png?run={}", v, run_id_);
   }
   j["images"] = images;
+  j["map"] = map_furniture(r, *sigma0_);
   return j;
 }
 
