@@ -143,6 +143,11 @@ async function showImages() {
     loads.push(showMap(masks));
     await setOverlay($('image-overlay'), '');
   } else {
+    // Leaving the map: its masks go too (none waits there for a later run).
+    for (const [name, layer] of Object.entries(mapLayers.masks)) {
+      layer.remove();
+      delete mapLayers.masks[name];
+    }
     loads.push(loadImage($('image'), run.images[view]));
     loads.push(setOverlay($('image-overlay'), withOverlays && overlayView
       ? `/api/overlay/${overlayView}.png?masks=${masks}&run=${run.id}` : ''));
@@ -612,7 +617,7 @@ const inspectorRows = [
   ['lat_deg', 'latitude, deg'], ['lon_deg', 'longitude, deg'], ['datum', 'datum'],
   ['x_m', 'map x (east), m'], ['y_m', 'map y (north), m'],
   ['scene_row', 'scene row'], ['scene_col', 'scene col'],
-  ['elevation_m', 'elevation, m'], ['category_name', 'category'],
+  ['elevation_m', 'elevation, m'], ['category_name', 'category'], ['category', 'category id'],
   ['local_incidence_deg', 'local incidence, deg'], ['sigma0_db', 'sigma0, dB'],
   ['slant_range_m', 'slant range, m'], ['incidence_deg', 'incidence, deg'],
   ['incidence_flat_deg', 'incidence (flat), deg'], ['looks', 'N (looks)'],
