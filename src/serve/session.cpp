@@ -78,10 +78,10 @@ const char* kind_name(RunKind k) {
 
 }  // namespace
 
-Session::SceneState Session::scene_from_doc(toml::table doc) {
+Session::SceneState Session::scene_from_doc(toml::table doc, const std::string& path) {
   SceneState s;
   s.version = ++scene_versions_;
-  s.path = inputs_.scene_path;
+  s.path = path;
   s.editable = true;
   const SceneDescription d = parse_scene_description(doc, s.path);
   s.scene = std::make_shared<const Scene>(build_scene(d));
@@ -106,7 +106,7 @@ std::filesystem::path make_private_folder(const std::filesystem::path& parent) {
 }  // namespace
 
 Session::SceneState Session::scene_from_file(const std::string& path) {
-  if (is_scene_description(path)) return scene_from_doc(parse_toml_file(path));
+  if (is_scene_description(path)) return scene_from_doc(parse_toml_file(path), path);
   SceneState s;
   s.version = ++scene_versions_;
   s.path = path;

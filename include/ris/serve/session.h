@@ -138,7 +138,7 @@ class Session {
     toml::table doc;  // editable scenes: the description
     std::shared_ptr<const Scene> scene;
   };
-  SceneState scene_from_doc(toml::table doc);
+  SceneState scene_from_doc(toml::table doc, const std::string& path);
   // A scene file (description or raster) as the command line loads it.
   SceneState scene_from_file(const std::string& path);
   // Makes `path` the current backscatter library (offered by its file name).
@@ -154,7 +154,7 @@ class Session {
   // undo stack when push_undo).
   nlohmann::json apply_scene(SceneState next, bool push_undo);
   nlohmann::json apply_scene_doc(toml::table doc) {
-    return apply_scene(scene_from_doc(std::move(doc)), true);
+    return apply_scene(scene_from_doc(std::move(doc), scene_.path), true);
   }
   std::filesystem::path save_path(const std::string& body, const std::string& what,
                                   const std::string& extension) const;
