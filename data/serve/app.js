@@ -13,6 +13,7 @@ let run = null;          // the current run's summary
 let pending = {};        // changes not yet accepted: {"radar.film.gamma": 0.8, "seed": 3}
 let inFlight = null;     // AbortController of the simulate request in flight
 let selectedObject = -1;
+let sceneView = null;    // the scene viewport's zoom (linked to the map)
 
 // ---- API ----
 async function api(path, options = {}) {
@@ -195,6 +196,14 @@ function ensureMap() {
     if (col >= 0 && row >= 0 && col < s.cols && row < s.rows) inspect('geocoded', col, row);
   });
   map.fitBounds(sceneBounds());
+  // Linked zoom: the scene view shows what the map shows (same grid).
+  map.on('moveend zoomend', () => {
+    if (!$('link-zoom').checked || $('map').hidden || !sceneView) return;
+    const b = map.getBounds();
+    const s = state.scene;
+    sceneView.showRegion(b.getWest() / s.cell_m, s.rows - b.getNorth() / s.cell_m,
+                         b.getEast() / s.cell_m, s.rows - b.getSouth() / s.cell_m);
+  });
   return map;
 }
 
@@ -350,6 +359,13 @@ function applyStretch() {
     f.setAttribute('type', 'table');
     f.setAttribute('tableValues', tables[c].join(' '));
   });
+  // The colour bar: greytones 0..255 as the picture shows them now.
+  const stops = [];
+  for (let k = 0; k <= 255; k += 15) {
+    const rgb = [0, 1, 2].map((c) => Math.round(255 * Number(tables[c][k])));
+    stops.push(`rgb(${rgb.join(',')}) ${((k / 255) * 100).toFixed(1)}%`);
+  }
+  $('colour-bar').style.background = `linear-gradient(to right, ${stops.join(', ')})`;
 }
 
 function autoStretch() {
@@ -608,6 +624,18 @@ function makeZoomable(viewport, stage, img, onClick, paint) {
     }
     drag = null;
   });
+  return {
+    // Shows image pixels x0..x1, y0..y1 (fractional) filling the viewport.
+    showRegion(x0, y0, x1, y1) {
+      if (!img.naturalWidth || !img.offsetWidth) return;
+      const kx = img.offsetWidth / img.naturalWidth, ky = img.offsetHeight / img.naturalHeight;
+      t.scale = Math.min(viewport.clientWidth / ((x1 - x0) * kx),
+                         viewport.clientHeight / ((y1 - y0) * ky));
+      t.x = viewport.clientWidth / 2 - t.scale * kx * (x0 + x1) / 2;
+      t.y = viewport.clientHeight / 2 - t.scale * ky * (y0 + y1) / 2;
+      apply();
+    },
+  };
 }
 
 // ---- the pixel inspector ----
@@ -972,7 +1000,8 @@ async function loadState() {
 async function main() {
   makeZoomable($('image-viewport'), $('image-stage'), $('image'),
                (x, y) => inspect($('image').dataset.view || 'slant', x, y));
-  makeZoomable($('scene-viewport'), $('scene-stage'), $('scene'), onSceneClick, scenePaint);
+  sceneView = makeZoomable($('scene-viewport'), $('scene-stage'), $('scene'), onSceneClick,
+                           scenePaint);
   for (const el of document.querySelectorAll('[data-radar], [data-top]')) {
     el.addEventListener(el.type === 'range' ? 'input' : 'change', onControl);
   }

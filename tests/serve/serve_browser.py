@@ -226,6 +226,49 @@ def check_overlays(driver):
     set_overlays(driver, [])
 
 
+def check_linked_zoom(driver):
+    """The geocoded map: zoomed in with its + button, the scene view shows the
+    same place (centre within two cells); the map's scale bar agrees with its
+    pixels per metre (a simple CRS in the scene's metres)."""
+    choose(driver, "presentation", "geocoded")
+    wait_until(lambda: shown(driver, "map"), 30, "the map")
+    zoom0 = driver.execute_script("return map.getZoom();")
+    for _ in range(2):
+        driver.find_element("css selector", ".leaflet-control-zoom-in").click()
+    wait_until(lambda: driver.execute_script("return map.getZoom();") >= zoom0 + 2, 10,
+               "the map to zoom in")
+    # And off the centre, as a drag would.
+    driver.execute_script("map.panBy([90, -60], {animate: false});")
+    def centres():
+        return driver.execute_script(
+            "const s = state.scene, c = map.getCenter();"
+            "const v = document.getElementById('scene-viewport').getBoundingClientRect();"
+            "const i = document.getElementById('scene'), r = i.getBoundingClientRect();"
+            "return [c.lng / s.cell_m, s.rows - c.lat / s.cell_m,"
+            "  (v.left + v.width / 2 - r.left) / r.width * i.naturalWidth,"
+            "  (v.top + v.height / 2 - r.top) / r.height * i.naturalHeight, map.getZoom()];")
+    middle = driver.execute_script("return [state.scene.cols / 2, state.scene.rows / 2];")
+    c = wait_until(lambda: (c := centres()) and abs(c[0] - middle[0]) > 20 and
+                   abs(c[0] - c[2]) <= 2 and abs(c[1] - c[3]) <= 2 and c, 10,
+                   "the scene to follow the map")
+    print(f"linked zoom: map centre ({c[0]:.1f}, {c[1]:.1f}) scene centre ({c[2]:.1f}, "
+          f"{c[3]:.1f}) cells, zoom {c[4]}")
+    bar = driver.execute_script(
+        "const b = document.querySelector('.leaflet-control-scale-line');"
+        "const a = map.latLngToContainerPoint([0, 0]), z = map.latLngToContainerPoint([0, 1000]);"
+        "return [b.textContent, b.getBoundingClientRect().width, (z.x - a.x) / 1000];")
+    text, px, px_per_m = bar
+    metres = float(text.split()[0]) * (1000 if text.endswith("km") else 1)
+    assert abs(px / metres - px_per_m) <= 0.02 * px_per_m, bar
+    choose(driver, "presentation", "slant")
+    double_click(driver, "scene-viewport")
+
+
+def double_click(driver, element_id):
+    from selenium.webdriver.common.action_chains import ActionChains
+    ActionChains(driver).double_click(driver.find_element("id", element_id)).perform()
+
+
 def check_upload(driver, out_dir):
     """A DEM uploaded from the page, imported and simulated with the library
     it names; a scene cell's latitude and longitude lie inside the DEM."""
@@ -332,6 +375,7 @@ def main():
         assert abs(int(rows["bin"]) - 120) <= tx and abs(int(rows["line"]) - 350) <= ty, rows
         check_map_furniture(driver, rows)
         check_overlays(driver)
+        check_linked_zoom(driver)
 
         # A box at the scene's centre (Add box), then its shadow: east of it,
         # as the radar looks east. Check the cell before and after.
