@@ -131,6 +131,7 @@ Session::Session(ServeInputs inputs) : inputs_(std::move(inputs)) {
   scene_ = scene_from_file(inputs_.scene_path);
   // --backscatter, else the library the scene names, as `ris simulate`.
   use_library(backscatter_library_for(inputs_.backscatter_path, inputs_.scene_path));
+  scene_.library = backscatter_name_;
   radar_path_ = inputs_.radar_path;
   radar_doc_ = parse_toml_file(radar_path_);
   radar_ = radar_from_toml(radar_doc_, radar_path_);
@@ -304,6 +305,7 @@ SimulateOutcome Session::simulate(const std::string& body) {
                   static_cast<std::uint64_t>(seed));
     sigma0_ = sigma0;
     backscatter_name_ = bs_name;
+    scene_.library = bs_name;
     allow_extrapolation_ = allow;
     last_film_only_ = false;
   }
@@ -331,6 +333,7 @@ nlohmann::json Session::apply_scene(SceneState next, bool push_undo) {
     if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
   }
   scene_ = std::move(next);
+  scene_.library = backscatter_name_;
   last_film_only_ = false;
   last_seconds_ = result_.seconds;
   ++run_id_;
@@ -413,9 +416,22 @@ nlohmann::json Session::paint(const std::string& body) {
 nlohmann::json Session::undo() {
   std::lock_guard lock(mutex_);
   if (undo_.empty()) throw InputError(scene_.path, "", "nothing to undo");
+  const std::string old_library = backscatter_name_;
+  const std::shared_ptr<const Sigma0Source> old_sigma0 = sigma0_;
+  const auto library = backscatter_files_.find(undo_.back().library);
+  if (library != backscatter_files_.end() && library->first != backscatter_name_) {
+    use_library(library->second);
+  }
   SceneState previous = std::move(undo_.back());
   undo_.pop_back();
-  return apply_scene(std::move(previous), false);
+  try {
+    return apply_scene(previous, false);
+  } catch (...) {
+    undo_.push_back(std::move(previous));
+    backscatter_name_ = old_library;
+    sigma0_ = old_sigma0;
+    throw;
+  }
 }
 
 std::filesystem::path Session::save_path(const std::string& body, const std::string& what,

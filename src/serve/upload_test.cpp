@@ -5,6 +5,7 @@
 // /etc/passwd) read nothing; the working folder holds every upload and goes
 // with the session. Also: `--scene` on an imported DEM uses the library the
 // scene names, as `ris simulate` does.
+#include <gdal.h>
 #include <gtest/gtest.h>
 #include <httplib.h>
 
@@ -136,6 +137,11 @@ TEST_F(ServeUpload, DemIsImportedAndSimulatedWithTheLibraryItNames) {
   const std::vector<std::string> files = stored();
   EXPECT_NE(std::find(files.begin(), files.end(), "SanAnd_dem.tif"), files.end());
   EXPECT_FALSE(std::filesystem::exists(tmp_ / "out" / "SanAnd_dem.tif"));
+  // Undo returns to the standard scene and its library.
+  const auto undo = c.Post("/api/scene/undo", "{}", "application/json");
+  ASSERT_EQ(undo->status, 200) << undo->body;
+  EXPECT_TRUE(state()["scene"]["editable"].get<bool>());
+  EXPECT_EQ(state()["backscatter"], "ku-geometric.toml");
 }
 
 TEST_F(ServeUpload, OverTheCapIs413AndStoresNothing) {
@@ -225,6 +231,47 @@ TEST_F(ServeUpload, HostileRastersReadNothing) {
   EXPECT_EQ(after["scene"], before["scene"]);
   EXPECT_EQ(after["backscatter"], before["backscatter"]);
   EXPECT_EQ(after["run"]["id"], before["run"]["id"]);
+}
+
+// A land-cover raster of one code (ESA WorldCover 10, tree cover) over the
+// DEM, in its own CRS (geographic): mapped through the shipped mapping.
+std::string landcover_bytes(const test::TempDir& tmp) {
+  const std::filesystem::path path = tmp / "landcover.tif";
+  GDALDriverH drv = GDALGetDriverByName("GTiff");
+  GDALDatasetH ds = GDALCreate(drv, path.c_str(), 60, 60, 1, GDT_Byte, nullptr);
+  const double gt[6] = {-118.45, 0.05 / 60, 0.0, 34.22, 0.0, -0.09 / 60};
+  GDALSetGeoTransform(ds, const_cast<double*>(gt));
+  GDALSetProjection(
+      ds,
+      R"(GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563]],PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433],AXIS["Latitude",NORTH],AXIS["Longitude",EAST],AUTHORITY["EPSG","4326"]])");
+  std::vector<std::uint8_t> codes(60 * 60, 10);
+  if (GDALRasterIO(GDALGetRasterBand(ds, 1), GF_Write, 0, 0, 60, 60, codes.data(), 60, 60, GDT_Byte,
+                   0, 0) != CE_None) {
+    ADD_FAILURE() << "cannot write the land cover";
+  }
+  GDALClose(ds);
+  return read_bytes(path);
+}
+
+TEST_F(ServeUpload, LandCoverOnTheUploadedDem) {
+  // Without a DEM first: refused, naming what to do.
+  auto r = upload("kind=landcover&name=lc.tif", landcover_bytes(tmp_));
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  EXPECT_NE(r->body.find("upload a DEM first"), std::string::npos) << r->body;
+  ASSERT_EQ(upload("kind=dem&name=SanAnd_dem.tif", dem_bytes())->status, 200);
+  r = upload("kind=landcover&name=lc.tif&mapping=nope.toml", landcover_bytes(tmp_));
+  EXPECT_EQ(r->status, 400);
+  EXPECT_NE(r->body.find("mapping"), std::string::npos) << r->body;
+  r = upload("kind=landcover&name=lc.tif&mapping=esa-worldcover.toml", landcover_bytes(tmp_));
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const nlohmann::json j = nlohmann::json::parse(r->body);
+  EXPECT_EQ(j["backscatter"], "generic-terrain.toml");
+  // Every cell with data is forest now (the mapping's 10 = "forest").
+  const nlohmann::json& legend = j["run"]["map"]["legend"];
+  ASSERT_EQ(legend.size(), 1u) << legend.dump();
+  EXPECT_EQ(legend[0]["name"], "forest");
 }
 
 TEST_F(ServeUpload, ASceneDescriptionIsEditable) {

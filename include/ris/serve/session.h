@@ -137,6 +137,9 @@ class Session {
     bool editable = false;
     toml::table doc;  // editable scenes: the description
     std::shared_ptr<const Scene> scene;
+    // The backscatter library it was run with (an undo past an upload
+    // returns to the library of the scene before).
+    std::string library;
   };
   SceneState scene_from_doc(toml::table doc, const std::string& path);
   // A scene file (description or raster) as the command line loads it.
