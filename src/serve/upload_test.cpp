@@ -237,7 +237,9 @@ TEST_F(ServeUpload, HostileRastersReadNothing) {
 // DEM, in its own CRS (geographic): mapped through the shipped mapping.
 std::string landcover_bytes(const test::TempDir& tmp) {
   const std::filesystem::path path = tmp / "landcover.tif";
+  GDALAllRegister();  // this test may run alone (ctest runs each on its own)
   GDALDriverH drv = GDALGetDriverByName("GTiff");
+  if (drv == nullptr) ADD_FAILURE() << "no GTiff driver";
   GDALDatasetH ds = GDALCreate(drv, path.c_str(), 60, 60, 1, GDT_Byte, nullptr);
   const double gt[6] = {-118.45, 0.05 / 60, 0.0, 34.22, 0.0, -0.09 / 60};
   GDALSetGeoTransform(ds, const_cast<double*>(gt));
