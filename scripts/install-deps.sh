@@ -26,6 +26,9 @@ packages=(
   libcpp-httplib-dev libpng-dev
   # ris serve's end-to-end test in a headless browser (tests/serve/serve_browser.py)
   chromium chromium-driver python3-selenium
+  # ris serve's map and charts (docs/serve.md), served from /usr/share/javascript
+  # (optional at run time: the page degrades to plain images without them)
+  libjs-leaflet libjs-chart.js
   # The Python module (import ris, docs/python.md) and its tests
   pybind11-dev python3-dev python3-numpy python3-pytest python3-gdal
   # MPI (Debian's OpenMPI): mpirun -np N ris simulate ... --stream (docs/scale.md)

@@ -3,6 +3,7 @@
 //
 //   ris serve [--scene S] [--radar R] [--backscatter B] [--out DIR]
 //             [--host 127.0.0.1] [--port 8765] [--max-body-kib N]
+//             [--max-upload-mib N] [--javascript-dir D]
 //             [--max-product-runs N] [--max-product-mib N] [--open]
 //
 // Binds the loopback address unless --host says otherwise (the page has no
@@ -36,6 +37,7 @@ struct ServeArgs {
   ServerOptions server;
   std::size_t max_body_kib = 1024;
   std::size_t max_product_mib = 1024;
+  std::size_t max_upload_mib = 64;
   bool open = false;
 };
 
@@ -47,6 +49,7 @@ void run_serve(ServeArgs& a) {
   a.inputs.data_dir = data_dir();
   a.server.web_dir = data_dir() / "serve";
   a.server.max_body_bytes = a.max_body_kib * 1024;
+  a.server.max_upload_bytes = a.max_upload_mib << 20;
   a.inputs.products.max_bytes = std::uintmax_t{a.max_product_mib} << 20;
   if (!is_loopback(a.server.host)) {
     spdlog::warn(
@@ -104,6 +107,14 @@ void add_serve(CLI::App& app) {
   cmd->add_option("--max-body-kib", args->max_body_kib, "Largest request body, KiB")
       ->capture_default_str()
       ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--max-upload-mib", args->max_upload_mib,
+                  "Largest uploaded DEM, land cover or scene file, MiB")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--javascript-dir", args->server.javascript_dir,
+                  "Where Debian's libjs-leaflet and libjs-chart.js are installed (the page "
+                  "works without them)")
+      ->capture_default_str();
   cmd->add_option("--max-product-runs", in.products.max_folders,
                   "Products folders kept under --out (the oldest removed beyond)")
       ->capture_default_str()

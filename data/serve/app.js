@@ -13,6 +13,7 @@ let run = null;          // the current run's summary
 let pending = {};        // changes not yet accepted: {"radar.film.gamma": 0.8, "seed": 3}
 let inFlight = null;     // AbortController of the simulate request in flight
 let selectedObject = -1;
+let sceneView = null;    // the scene viewport's zoom (linked to the map)
 
 // ---- API ----
 async function api(path, options = {}) {
@@ -109,33 +110,323 @@ function loadImage(img, url) {
   });
 }
 
+// Debian's Leaflet and Chart.js, when ris serve found them (docs/serve.md).
+const hasLeaflet = () => typeof window.L !== 'undefined' && !!window.L.map;
+const hasChart = () => typeof window.Chart !== 'undefined';
+
+function setOverlay(img, url) {
+  // Off means no picture at all: no stale mask of an earlier run or
+  // presentation can stay on screen.
+  if (!url) {
+    img.hidden = true;
+    img.removeAttribute('src');
+    return Promise.resolve(true);
+  }
+  img.hidden = false;
+  return loadImage(img, url);
+}
+
 async function showImages() {
   if (!run) return;
   let view = currentView();
   if (!run.images[view]) view = 'slant';
   $('image-title').textContent = `Image (${view}, run ${run.id}, ${run.kind})`;
   const masks = overlayMasks();
-  const overlayView = view === 'ground' ? '' : view;
-  const overlayImg = $('image-overlay');
-  const sceneOverlay = $('scene-overlay');
+  // Masks exist on the slant grid and the scene grid (geocoded is on the
+  // scene grid); the ground-range image and a PPI's scope have none.
+  const overlayView = run.kind === 'ppi' || view === 'ground' ? '' : view;
   const withOverlays = masks && run.kind !== 'ppi';
-  const loads = [loadImage($('image'), run.images[view])];
-  if (withOverlays && overlayView) {
-    loads.push(loadImage(overlayImg, `/api/overlay/${overlayView}.png?masks=${masks}&run=${run.id}`));
-    overlayImg.hidden = false;
+  const mapView = view === 'geocoded' && hasLeaflet();
+  $('image-viewport').hidden = mapView;
+  $('map').hidden = !mapView;
+  const loads = [];
+  if (mapView) {
+    loads.push(showMap(masks));
+    await setOverlay($('image-overlay'), '');
   } else {
-    overlayImg.hidden = true;
+    // Leaving the map: its masks go too (none waits there for a later run).
+    for (const [name, layer] of Object.entries(mapLayers.masks)) {
+      layer.remove();
+      delete mapLayers.masks[name];
+    }
+    loads.push(loadImage($('image'), run.images[view]));
+    loads.push(setOverlay($('image-overlay'), withOverlays && overlayView
+      ? `/api/overlay/${overlayView}.png?masks=${masks}&run=${run.id}` : ''));
   }
   loads.push(loadImage($('scene'), run.images.scene));
-  if (withOverlays) {
-    loads.push(loadImage(sceneOverlay, `/api/overlay/scene.png?masks=${masks}&run=${run.id}`));
-    sceneOverlay.hidden = false;
-  } else {
-    sceneOverlay.hidden = true;
-  }
+  loads.push(setOverlay($('scene-overlay'), withOverlays
+    ? `/api/overlay/scene.png?masks=${masks}&run=${run.id}` : ''));
   await Promise.all(loads);
   $('image').dataset.run = run.id;
   $('image').dataset.view = view;
+  if (view !== $('image-cursor').dataset.view) $('image-cursor').hidden = true;
+  applyAspect(view);
+  showOrientation(view);
+  applyOpacity();
+  updateScaleBars();
+}
+
+// ---- the map (Leaflet, simple CRS in the scene's metres, north up) ----
+let map = null;
+const mapLayers = { base: null, scene: null, masks: {}, marker: null };
+
+function sceneBounds() {
+  const s = state.scene;
+  return [[0, 0], [s.rows * s.cell_m, s.cols * s.cell_m]];  // [y north, x east]
+}
+
+function ensureMap() {
+  if (map) return map;
+  map = L.map('map', { crs: L.CRS.Simple, minZoom: -6, maxZoom: 6, zoomSnap: 0.25,
+                       attributionControl: false });
+  // In a simple CRS distances are in map units, here metres: a true scale bar.
+  L.control.scale({ imperial: false, metric: true, maxWidth: 160 }).addTo(map);
+  const north = L.control({ position: 'topright' });
+  north.onAdd = () => {
+    const d = L.DomUtil.create('div', 'north leaflet-north');
+    d.innerHTML = 'N<br>&#x2191;';
+    d.style.position = 'static';
+    return d;
+  };
+  north.addTo(map);
+  map.on('click', (ev) => {
+    const s = state.scene;
+    const col = Math.floor(ev.latlng.lng / s.cell_m);
+    const row = Math.floor(s.rows - ev.latlng.lat / s.cell_m);
+    if (col >= 0 && row >= 0 && col < s.cols && row < s.rows) inspect('geocoded', col, row);
+  });
+  map.fitBounds(sceneBounds());
+  // Linked zoom: the scene view shows what the map shows (same grid).
+  map.on('moveend zoomend', () => {
+    if (!$('link-zoom').checked || $('map').hidden || !sceneView) return;
+    const b = map.getBounds();
+    const s = state.scene;
+    sceneView.showRegion(b.getWest() / s.cell_m, s.rows - b.getNorth() / s.cell_m,
+                         b.getEast() / s.cell_m, s.rows - b.getSouth() / s.cell_m);
+  });
+  return map;
+}
+
+function mapImage(layer, url, opacity) {
+  if (layer) { layer.setUrl(url); layer.setOpacity(opacity); return layer; }
+  return L.imageOverlay(url, sceneBounds(), { opacity }).addTo(map);
+}
+
+async function showMap(masks) {
+  ensureMap();
+  map.invalidateSize();
+  const bounds = sceneBounds();
+  mapLayers.base = mapImage(mapLayers.base, run.images.geocoded, 1);
+  mapLayers.base.setBounds(L.latLngBounds(bounds));
+  const el = mapLayers.base.getElement();
+  if (el) { el.id = 'map-image'; el.style.filter = 'url(#stretch)'; el.dataset.run = run.id; }
+  // One layer per mask, so each toggles on its own.
+  const wanted = masks ? masks.split(',') : [];
+  for (const name of ['shadow', 'layover', 'backfacing']) {
+    const layer = mapLayers.masks[name];
+    if (wanted.includes(name)) {
+      mapLayers.masks[name] = mapImage(layer,
+        `/api/overlay/geocoded.png?masks=${name}&run=${run.id}`, overlayOpacity());
+      mapLayers.masks[name].setBounds(L.latLngBounds(bounds));
+    } else if (layer) {
+      layer.remove();
+      delete mapLayers.masks[name];
+    }
+  }
+}
+
+function overlayOpacity() { return Number($('overlay-opacity').value); }
+
+function applyOpacity() {
+  const o = overlayOpacity();
+  for (const id of ['image-overlay', 'scene-overlay']) $(id).style.opacity = o;
+  for (const layer of Object.values(mapLayers.masks)) layer.setOpacity(o);
+}
+
+// The slant image in its true aspect: a bin is range_bin_m of slant range
+// across, a line line_spacing_m of track down (4:1 for the seed's radar).
+function applyAspect(view) {
+  const img = $('image');
+  const m = run.map || {};
+  img.style.width = '';
+  img.style.height = '';
+  if (view !== 'slant' || !m.range_bin_m || !m.line_spacing_m || !img.naturalWidth) return;
+  const unit = Math.min(m.range_bin_m, m.line_spacing_m);
+  img.style.width = `${img.naturalWidth * m.range_bin_m / unit}px`;
+  img.style.height = `${img.naturalHeight * m.line_spacing_m / unit}px`;
+  img.dispatchEvent(new Event('resized'));
+}
+
+function showOrientation(view) {
+  const box = $('image-orientation');
+  const m = run.map || {};
+  box.hidden = false;
+  if (run.kind === 'ppi') {
+    box.textContent = view === 'slant' ? 'PPI scope: north up' : 'B-scope: range across';
+    return;
+  }
+  if (view === 'geocoded') { box.hidden = true; return; }
+  // Lines are in flight order (first at the top), bins near range first.
+  const h = (m.heading_deg || 0).toFixed(0);
+  box.textContent = `\u2193 flight, heading ${h}\u00b0 (top: track start)\n` +
+    `\u2192 ${view === 'slant' ? 'slant' : 'ground'} range, looking ${m.look_side || 'right'}`;
+  box.dataset.heading = h;
+}
+
+// ---- scale bars ----
+function niceLength(m) {
+  const p = Math.pow(10, Math.floor(Math.log10(m)));
+  for (const k of [5, 2, 1]) if (k * p <= m) return k * p;
+  return p;
+}
+
+function fmtLength(m) { return m >= 1000 ? `${m / 1000} km` : `${m} m`; }
+
+// A bar of a round length near 100 screen pixels; data-metres and
+// data-px say what it shows (the browser test checks them against the
+// cell size).
+function drawScaleBar(bar, img, metresPerPixel) {
+  const r = img.getBoundingClientRect();
+  if (!img.naturalWidth || !r.width || !metresPerPixel) { bar.hidden = true; return; }
+  const pxPerMetre = r.width / img.naturalWidth / metresPerPixel;
+  const metres = niceLength(100 / pxPerMetre);
+  const px = metres * pxPerMetre;
+  bar.hidden = false;
+  bar.querySelector('.bar').style.width = `${px}px`;
+  bar.querySelector('span').textContent = fmtLength(metres);
+  bar.dataset.metres = metres;
+  bar.dataset.px = px.toFixed(2);
+}
+
+function updateScaleBars() {
+  if (!run || !state) return;
+  drawScaleBar($('scene-scalebar'), $('scene'), state.scene.cell_m);
+  const view = $('image').dataset.view;
+  const m = run.map || {};
+  // Slant: metres of slant range across; geocoded (plain image): cells.
+  const across = view === 'slant' ? m.range_bin_m : view === 'geocoded' ? state.scene.cell_m : 0;
+  drawScaleBar($('image-scalebar'), $('image'), run.kind === 'ppi' ? 0 : across);
+  if (view === 'slant') $('image-scalebar').querySelector('span').textContent += ' (slant range)';
+}
+
+// ---- legend and overlay key ----
+function showLegend() {
+  const m = run.map || {};
+  $('legend').innerHTML = (m.legend || []).map((c) =>
+    `<span data-category="${c.id}" data-rgb="${c.rgb.join(',')}"><span class="swatch" ` +
+    `style="background: rgb(${c.rgb.join(',')})"></span>${c.id}: ${c.name || '?'}</span>`)
+    .join('');
+  const shown = overlayMasks().split(',').filter((x) => x);
+  $('overlay-key').innerHTML = (m.overlay_key || [])
+    .filter((k) => shown.includes(k.mask))
+    .map((k) => `<span data-mask="${k.mask}" data-rgba="${k.rgba.join(',')}"><span ` +
+      `class="swatch" style="background: rgba(${k.rgba.slice(0, 3).join(',')},` +
+      `${(k.rgba[3] / 255).toFixed(2)})"></span>${k.mask}</span>`).join('');
+}
+
+// ---- contrast stretch and colour ramps (an SVG filter on the picture) ----
+const ramps = {
+  grey: (t) => [t, t, t],
+  inverted: (t) => [1 - t, 1 - t, 1 - t],
+  // Viridis at five stops (matplotlib's), linearly between.
+  viridis: (t) => lerpStops([[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98],
+                             [253, 231, 37]], t),
+  hot: (t) => [Math.min(1, 3 * t), Math.min(1, Math.max(0, 3 * t - 1)),
+               Math.min(1, Math.max(0, 3 * t - 2))],
+};
+
+function lerpStops(stops, t) {
+  const x = t * (stops.length - 1);
+  const i = Math.min(stops.length - 2, Math.floor(x));
+  const f = x - i;
+  return [0, 1, 2].map((c) => (stops[i][c] + f * (stops[i + 1][c] - stops[i][c])) / 255);
+}
+
+function applyStretch() {
+  let lo = Number($('stretch-low').value);
+  let hi = Number($('stretch-high').value);
+  if (hi <= lo) hi = lo + 1;
+  $('stretch-low-value').textContent = lo;
+  $('stretch-high-value').textContent = hi;
+  const ramp = ramps[$('ramp').value] || ramps.grey;
+  const tables = [[], [], []];
+  for (let k = 0; k <= 255; k += 1) {
+    const t = Math.min(1, Math.max(0, (k - lo) / (hi - lo)));
+    ramp(t).forEach((v, c) => tables[c].push(v.toFixed(4)));
+  }
+  ['r', 'g', 'b'].forEach((ch, c) => {
+    const f = $(`ramp-${ch}`);
+    f.setAttribute('type', 'table');
+    f.setAttribute('tableValues', tables[c].join(' '));
+  });
+  // The colour bar: greytones 0..255 as the picture shows them now.
+  const stops = [];
+  for (let k = 0; k <= 255; k += 15) {
+    const rgb = [0, 1, 2].map((c) => Math.round(255 * Number(tables[c][k])));
+    stops.push(`rgb(${rgb.join(',')}) ${((k / 255) * 100).toFixed(1)}%`);
+  }
+  $('colour-bar').style.background = `linear-gradient(to right, ${stops.join(', ')})`;
+}
+
+function autoStretch() {
+  if (!lastHistogram) return;
+  const counts = lastHistogram.slice(1);  // 0 is shadow: left out
+  const total = counts.reduce((a, b) => a + b, 0);
+  let acc = 0, lo = 0, hi = 255;
+  for (let k = 0; k < counts.length; ++k) {
+    acc += counts[k];
+    if (acc < 0.02 * total) lo = k + 1;
+    if (acc <= 0.98 * total) hi = k + 2;
+  }
+  $('stretch-low').value = lo;
+  $('stretch-high').value = Math.max(lo + 1, Math.min(255, hi));
+  applyStretch();
+}
+
+// ---- the linked cursor ----
+function markCursor(id, x, y, img, view) {
+  const c = $(id);
+  if (!img.naturalWidth) return;
+  c.hidden = false;
+  c.style.left = `${((x + 0.5) / img.naturalWidth) * 100}%`;
+  c.style.top = `${((y + 0.5) / img.naturalHeight) * 100}%`;
+  c.dataset.col = x;
+  c.dataset.row = y;
+  c.dataset.view = view || '';
+}
+
+function markMap(col, row) {
+  if (!map) return;
+  const s = state.scene;
+  const ll = [(s.rows - row - 0.5) * s.cell_m, (col + 0.5) * s.cell_m];
+  if (!mapLayers.marker) {
+    mapLayers.marker = L.circleMarker(ll, { radius: 7, color: '#00e5ff', weight: 2, fill: false })
+      .addTo(map);
+  } else {
+    mapLayers.marker.setLatLng(ll);
+  }
+  const el = mapLayers.marker.getElement();
+  if (el) { el.dataset.col = col; el.dataset.row = row; el.id = 'map-cursor'; }
+}
+
+// An inspected place, marked in the other view(s).
+function linkCursor(view, x, y, body) {
+  const imageView = $('image').dataset.view;
+  if (view === 'scene' || view === 'geocoded') {
+    markCursor('scene-cursor', x, y, $('scene'), 'scene');
+    if (imageView === 'geocoded') {
+      if (hasLeaflet()) markMap(x, y); else markCursor('image-cursor', x, y, $('image'), 'geocoded');
+    } else if (imageView === 'slant' && body.pixel) {
+      markCursor('image-cursor', body.pixel.bin, body.pixel.line, $('image'), 'slant');
+    } else {
+      $('image-cursor').hidden = true;
+    }
+  } else {
+    markCursor('image-cursor', x, y, $('image'), view);
+    if (body.scene_col !== undefined) {
+      markCursor('scene-cursor', body.scene_col, body.scene_row, $('scene'), 'scene');
+    }
+  }
 }
 
 async function showRun(summary) {
@@ -146,6 +437,7 @@ async function showRun(summary) {
               ? `; shadow ${run.shadow_percent.toFixed(1)}%, layover ${run.layover_percent.toFixed(1)}%`
               : ''));
   await showImages();
+  showLegend();
   drawHistogram();
   if (run.kind !== 'ppi') {
     api('/api/shadowmap.txt').then(({ body }) => { $('shadow-map').textContent = body; })
@@ -160,8 +452,38 @@ async function showRun(summary) {
 const palette = ['#1f77b4', '#ff7f0e', '#2ca02c', '#d62728', '#9467bd', '#8c564b', '#e377c2',
                  '#7f7f7f', '#bcbd22', '#17becf'];
 
+let sigma0Chart = null;
+let histogramChart = null;
+let lastHistogram = null;
+
 async function drawSigma0() {
   const { body } = await api('/api/sigma0');
+  if (hasChart()) {
+    const datasets = body.curves.map((cv, i) => ({
+      label: `${cv.category}: ${cv.name}`, data: cv.sigma0_db, borderColor: palette[i % 10],
+      backgroundColor: palette[i % 10], pointRadius: 0, borderWidth: 1.5, spanGaps: false }));
+    const title = `sigma0 at ${(body.frequency_hz / 1e9).toFixed(2)} GHz`;
+    if (!sigma0Chart) {
+      sigma0Chart = new Chart($('sigma0-chart'), {
+        type: 'line', data: { labels: body.angles_deg, datasets },
+        options: { animation: false, responsive: false,
+          plugins: { title: { display: true, text: title }, legend: { labels: { boxWidth: 10 } } },
+          scales: { x: { title: { display: true, text: 'local incidence angle, deg' },
+                         ticks: { maxTicksLimit: 10 } },
+                    y: { title: { display: true, text: 'sigma0, dB' }, suggestedMin: -40 } } } });
+    } else {
+      sigma0Chart.data.labels = body.angles_deg;
+      sigma0Chart.data.datasets = datasets;
+      sigma0Chart.options.plugins.title.text = title;
+      sigma0Chart.update();
+    }
+    return;
+  }
+  drawSigma0Canvas(body);
+}
+
+// Without Chart.js: the same curves drawn by hand, with labelled axes.
+function drawSigma0Canvas(body) {
   const c = $('sigma0-chart');
   const g = c.getContext('2d');
   g.clearRect(0, 0, c.width, c.height);
@@ -198,18 +520,40 @@ async function drawSigma0() {
 
 async function drawHistogram() {
   const { body } = await api('/api/histogram');
+  lastHistogram = body.counts;
+  const labels = body.counts.map((_, k) => k);
+  if (hasChart()) {
+    if (!histogramChart) {
+      histogramChart = new Chart($('histogram'), {
+        type: 'bar', data: { labels, datasets: [{ label: 'slant pixels', data: body.counts,
+          backgroundColor: '#3d4a63', barPercentage: 1, categoryPercentage: 1 }] },
+        options: { animation: false, responsive: false, plugins: { legend: { display: false } },
+          scales: { x: { title: { display: true, text: 'greytone (0 black .. 255 white)' },
+                         ticks: { maxTicksLimit: 9 } },
+                    y: { title: { display: true, text: 'pixels' }, type: 'logarithmic' } } } });
+    } else {
+      histogramChart.data.datasets[0].data = body.counts;
+      histogramChart.update();
+    }
+    return;
+  }
   const c = $('histogram');
   const g = c.getContext('2d');
   g.clearRect(0, 0, c.width, c.height);
   // Scaled to the tallest bar between the ends: shadow (0) and saturation
   // (255) spikes would flatten the rest; they are drawn clipped.
   const max = Math.max(1, ...body.counts.slice(1, 255));
+  const bottom = c.height - 14;
   const w = c.width / 256;
   g.fillStyle = '#3d4a63';
   body.counts.forEach((n, k) => {
-    const h = Math.min(1, n / max) * (c.height - 4);
-    g.fillRect(k * w, c.height - h, Math.max(w, 1), h);
+    const h = Math.min(1, n / max) * (bottom - 4);
+    g.fillRect(k * w, bottom - h, Math.max(w, 1), h);
   });
+  g.fillStyle = '#555';
+  g.font = '10px sans-serif';
+  for (const k of [0, 64, 128, 192, 255]) g.fillText(String(k), k * w, c.height - 2);
+  g.fillText(`greytone; pixels up to ${max}`, c.width - 150, 10);
 }
 
 // ---- zoom, pan and click on a viewport ----
@@ -219,21 +563,26 @@ function makeZoomable(viewport, stage, img, onClick, paint) {
   const t = { scale: 1, x: 0, y: 0 };
   const apply = () => {
     stage.style.transform = `translate(${t.x}px, ${t.y}px) scale(${t.scale})`;
+    updateScaleBars();
   };
+  // The picture's laid-out size (its true aspect may differ from its
+  // pixels', applyAspect).
   const fit = () => {
-    if (!img.naturalWidth) return;
-    t.scale = Math.min(viewport.clientWidth / img.naturalWidth,
-                       viewport.clientHeight / img.naturalHeight);
+    if (!img.naturalWidth || !img.offsetWidth) return;
+    t.scale = Math.min(viewport.clientWidth / img.offsetWidth,
+                       viewport.clientHeight / img.offsetHeight);
     t.x = 0; t.y = 0;
     apply();
   };
   // Fit the first picture, and again when the size changes (another
   // presentation); keep the user's zoom across runs of the same size.
   let fittedSize = '';
-  img.addEventListener('load', () => {
-    const size = `${img.naturalWidth}x${img.naturalHeight}`;
+  const refit = () => {
+    const size = `${img.offsetWidth}x${img.offsetHeight}`;
     if (size !== fittedSize) { fittedSize = size; fit(); }
-  });
+  };
+  img.addEventListener('load', refit);
+  img.addEventListener('resized', refit);
   viewport.addEventListener('dblclick', fit);
   viewport.addEventListener('wheel', (ev) => {
     ev.preventDefault();
@@ -275,17 +624,33 @@ function makeZoomable(viewport, stage, img, onClick, paint) {
     }
     drag = null;
   });
+  return {
+    // Shows image pixels x0..x1, y0..y1 (fractional) filling the viewport.
+    showRegion(x0, y0, x1, y1) {
+      if (!img.naturalWidth || !img.offsetWidth) return;
+      const kx = img.offsetWidth / img.naturalWidth, ky = img.offsetHeight / img.naturalHeight;
+      t.scale = Math.min(viewport.clientWidth / ((x1 - x0) * kx),
+                         viewport.clientHeight / ((y1 - y0) * ky));
+      t.x = viewport.clientWidth / 2 - t.scale * kx * (x0 + x1) / 2;
+      t.y = viewport.clientHeight / 2 - t.scale * ky * (y0 + y1) / 2;
+      apply();
+    },
+  };
 }
 
 // ---- the pixel inspector ----
 const inspectorRows = [
   ['view', 'view'], ['row', 'row'], ['col', 'col'], ['line', 'line'], ['bin', 'bin'],
   ['ground_range_m', 'ground range, m'],
-  ['elevation_m', 'elevation, m'], ['category_name', 'category'],
+  ['lat_deg', 'latitude, deg'], ['lon_deg', 'longitude, deg'], ['datum', 'datum'],
+  ['x_m', 'map x (east), m'], ['y_m', 'map y (north), m'],
+  ['scene_row', 'scene row'], ['scene_col', 'scene col'],
+  ['elevation_m', 'elevation, m'], ['category_name', 'category'], ['category', 'category id'],
   ['local_incidence_deg', 'local incidence, deg'], ['sigma0_db', 'sigma0, dB'],
   ['slant_range_m', 'slant range, m'], ['incidence_deg', 'incidence, deg'],
   ['incidence_flat_deg', 'incidence (flat), deg'], ['looks', 'N (looks)'],
-  ['mean_power_dbw', 'mean power, dBW'], ['speckled_power_w', 'speckled power, W'],
+  ['mean_power_w', 'mean power, W'], ['mean_power_dbw', 'mean power, dBW'],
+  ['speckled_power_w', 'speckled power, W'], ['speckled_power_dbw', 'speckled power, dBW'],
   ['greytone', 'greytone'], ['flags', 'flags'],
 ];
 
@@ -299,11 +664,20 @@ function fmtValue(v) {
 async function inspect(view, x, y) {
   try {
     const { body } = await api(`/api/inspect?view=${view}&x=${x}&y=${y}`);
+    // Powers in dB beside watts (sigma0 is given in dB by the server).
+    const withDb = (o) => {
+      if (o && o.speckled_power_w > 0) o.speckled_power_dbw = 10 * Math.log10(o.speckled_power_w);
+    };
+    withDb(body);
+    withDb(body.pixel);
+    linkCursor(view, x, y, body);
     const rows = [];
     const add = (obj, prefix) => {
       for (const [key, label] of inspectorRows) {
+        const v = key.endsWith('_deg') && key.startsWith('l') && typeof obj[key] === 'number'
+          ? obj[key].toFixed(6) : fmtValue(obj[key]);
         if (key in obj) rows.push(`<tr><td>${prefix}${label}</td><td data-key="${key}">` +
-                                  `${fmtValue(obj[key])}</td></tr>`);
+                                  `${v}</td></tr>`);
       }
     };
     add(body, '');
@@ -340,7 +714,13 @@ function showObjectFields() {
   box.innerHTML = '';
   const o = objects()[selectedObject];
   if (!o) return;
-  for (const [k, v] of Object.entries(o)) {
+  // Optional keys the file left out are shown at their defaults, so they
+  // can be set (a pyramid's rotation; docs/scene-format.md).
+  const withDefaults = { ...o };
+  if (o.type !== 'hemisphere' && o.type !== 'tower' && !('rotation' in o)) {
+    withDefaults.rotation = 0;
+  }
+  for (const [k, v] of Object.entries(withDefaults)) {
     if (k === 'type') continue;
     const label = document.createElement('label');
     label.innerHTML = `<span>${k}</span>`;
@@ -379,6 +759,28 @@ async function editScene(request) {
   }
 }
 
+// The length unit the description writes its objects in ("300 ft"):
+// new objects and moves are written in it, not in metres beside feet.
+const metresPer = { m: 1, km: 1000, cm: 0.01, mm: 0.001, ft: 0.3048, mi: 1609.344,
+                    nmi: 1852 };
+function sceneUnit() {
+  const d = (state && state.scene.description) || {};
+  const samples = [...objects().flatMap((o) => [o.x, o.y, o.length, o.base]),
+                   d.grid && d.grid.cell_size, d.cell_size];
+  for (const v of samples) {
+    const m = typeof v === 'string' && v.trim().match(/^[-+0-9.eE]+\s*([a-z]+)$/);
+    if (m && metresPer[m[1]]) return m[1];
+  }
+  return 'm';
+}
+
+// A length in metres as the description writes lengths: a bare number of
+// metres, or a whole number of its unit ("984 ft").
+function lengthValue(metres) {
+  const u = sceneUnit();
+  return u === 'm' ? Math.round(metres) : `${Math.round(metres / metresPer[u])} ${u}`;
+}
+
 function sceneCentre() {
   const s = state.scene;
   return { x: 0.5 * s.cols * s.cell_m, y: 0.5 * s.rows * s.cell_m };
@@ -399,7 +801,7 @@ function onSceneClick(x, y) {
     const xm = (x + 0.5) * s.cell_m;
     const ym = (s.rows - y - 0.5) * s.cell_m;
     editScene(() => postJson(`/api/scene/objects/${selectedObject}`,
-                             { x: Math.round(xm), y: Math.round(ym) }));
+                             { x: lengthValue(xm), y: lengthValue(ym) }));
     return;
   }
   inspect(run && run.images.geocoded ? 'scene' : 'scene', x, y);
@@ -412,13 +814,13 @@ function wireSceneTools() {
   });
   $('add-box').addEventListener('click', () => {
     const c = sceneCentre();
-    addObject({ type: 'box', x: Math.round(c.x), y: Math.round(c.y), length: 300, width: 300,
-                height: 150, rotation: 0, category: 5 });
+    addObject({ type: 'box', x: lengthValue(c.x), y: lengthValue(c.y), length: lengthValue(300),
+                width: lengthValue(300), height: lengthValue(150), rotation: 0, category: 5 });
   });
   $('add-pyramid').addEventListener('click', () => {
     const c = sceneCentre();
-    addObject({ type: 'pyramid', x: Math.round(c.x), y: Math.round(c.y), base: 400, height: 200,
-                rotation: 0, category: 4 });
+    addObject({ type: 'pyramid', x: lengthValue(c.x), y: lengthValue(c.y), base: lengthValue(400),
+                height: lengthValue(200), rotation: 0, category: 4 });
   });
   $('delete-object').addEventListener('click', () => {
     if (selectedObject < 0) return;
@@ -509,6 +911,31 @@ function wirePaintTools() {
   $('paint-undo').addEventListener('click', () => editScene(() => postJson('/api/scene/undo', {})));
 }
 
+// ---- bring your own data (POST /api/upload, the file's bytes) ----
+async function uploadFile() {
+  const file = $('upload-file').files[0];
+  if (!file) { showError('choose a file to upload first'); return; }
+  const kind = $('upload-kind').value;
+  const q = new URLSearchParams({ kind, name: file.name });
+  if (kind === 'landcover') q.set('mapping', $('upload-mapping').value);
+  setStatus(`uploading ${file.name}…`);
+  try {
+    // octet-stream: like JSON, a type no other page can send without a
+    // preflight the server never approves (docs/serve.md, "Threat model").
+    const { body } = await api(`/api/upload?${q}`, {
+      method: 'POST', headers: { 'Content-Type': 'application/octet-stream' }, body: file });
+    await loadState();
+    $('upload-note').textContent =
+      `${body.uploaded}: simulated with ${body.backscatter}`;
+    if (map) { map.fitBounds(sceneBounds()); }
+    showError('');
+    await showRun(body.run);
+  } catch (e) {
+    showError(e.message);
+    setStatus('upload refused');
+  }
+}
+
 // ---- controls from the state ----
 function updateOutputs() {
   $('depression-value').textContent = $('depression').value;
@@ -537,12 +964,24 @@ function setControls() {
   $('heading').value = ((track.heading_rad || 0) * deg).toFixed(1);
   $('look-side').value = track.look_side || 'right';
   $('beamwidth').value = (p.azimuth_beamwidth_rad * 1e3).toFixed(3);
+  // A SAR's range resolution comes from its chirp, not a pulse width.
+  const sar = p.mode === 'sar';
+  $('pulse-width-label').hidden = sar;
+  $('bandwidth-label').hidden = !sar;
   $('pulse-width').value = (p.pulse_width_s * 1e9).toFixed(1);
+  if (sar && p.sar && p.sar.bandwidth_hz) $('bandwidth').value = (p.sar.bandwidth_hz / 1e6).toFixed(1);
   $('density-range').value = p.film.density_range;
   $('gamma').value = p.film.gamma;
   $('fading').checked = p.film.terms.fading;
   $('seed').value = state.seed;
-  fillSelect($('radar-preset'), state.radar_presets, '');
+  // The current radar's file is the selected preset; a changed description
+  // shows as such (the list is never blank).
+  const presets = state.radar_presets.includes(state.radar.file)
+    ? state.radar_presets : [state.radar.file, ...state.radar_presets];
+  fillSelect($('radar-preset'), presets, state.radar.file);
+  $('allow-extrapolation').checked = !!state.allow_extrapolation;
+  $('upload-mapping').innerHTML = (state.landcover_mappings || [])
+    .map((n) => `<option${n === 'esa-worldcover.toml' ? ' selected' : ''}>${n}</option>`).join('');
   fillSelect($('backscatter'), state.backscatter_libraries, state.backscatter);
   $('scene-tools').hidden = !state.scene.editable;
   $('paint-tools').hidden = state.scene.editable;
@@ -561,11 +1000,13 @@ async function loadState() {
 async function main() {
   makeZoomable($('image-viewport'), $('image-stage'), $('image'),
                (x, y) => inspect($('image').dataset.view || 'slant', x, y));
-  makeZoomable($('scene-viewport'), $('scene-stage'), $('scene'), onSceneClick, scenePaint);
+  sceneView = makeZoomable($('scene-viewport'), $('scene-stage'), $('scene'), onSceneClick,
+                           scenePaint);
   for (const el of document.querySelectorAll('[data-radar], [data-top]')) {
     el.addEventListener(el.type === 'range' ? 'input' : 'change', onControl);
   }
   $('radar-preset').addEventListener('change', async (ev) => {
+    if (ev.target.value === state.radar.file) return;
     pending = {};
     try {
       const { body } = await postJson('/api/simulate', { radar_preset: ev.target.value });
@@ -576,7 +1017,25 @@ async function main() {
     }
   });
   $('presentation').addEventListener('change', showImages);
-  for (const c of document.querySelectorAll('.overlay')) c.addEventListener('change', showImages);
+  for (const c of document.querySelectorAll('.overlay')) {
+    c.addEventListener('change', () => { showImages(); showLegend(); });
+  }
+  $('overlay-opacity').addEventListener('input', applyOpacity);
+  for (const id of ['stretch-low', 'stretch-high']) $(id).addEventListener('input', applyStretch);
+  $('ramp').addEventListener('change', applyStretch);
+  $('stretch-auto').addEventListener('click', autoStretch);
+  $('upload').addEventListener('click', uploadFile);
+  $('upload-kind').addEventListener('change', () => {
+    $('mapping-label').hidden = $('upload-kind').value !== 'landcover';
+  });
+  $('mapping-label').hidden = true;
+  window.addEventListener('resize', updateScaleBars);
+  const missing = [];
+  if (!hasLeaflet()) missing.push('Leaflet (libjs-leaflet): the geocoded view is a plain image');
+  if (!hasChart()) missing.push('Chart.js (libjs-chart.js): charts are drawn without it');
+  $('lib-note').textContent = missing.length
+    ? `Not installed: ${missing.join('; ')}. scripts/install-deps.sh installs them.` : '';
+  applyStretch();
   wireSceneTools();
   wirePaintTools();
   try {

@@ -153,7 +153,8 @@ class LibrarySource final : public Sigma0Source {
   mutable std::set<std::tuple<std::uint16_t, double, Polarisation>> checked_;
 };
 
-std::unique_ptr<Sigma0Source> load_library(const std::string& path) {
+std::unique_ptr<Sigma0Source> load_library(const std::string& path,
+                                           bool force_allow_extrapolation) {
   const toml::table doc = parse_toml_file(path);
   ConfigTable root(doc, path, "");
   std::string lib_name = std::filesystem::path(path).stem().string();
@@ -187,7 +188,8 @@ std::unique_ptr<Sigma0Source> load_library(const std::string& path) {
     ModelContext ctx;
     ctx.file = path;
     ctx.base_dir = base_dir;
-    ctx.allow_extrapolation = t.get_bool_or("allow_extrapolation", allow_extrapolation);
+    ctx.allow_extrapolation =
+        t.get_bool_or("allow_extrapolation", allow_extrapolation) || force_allow_extrapolation;
     ctx.category_id = static_cast<int>(id);
     ctx.table_cache = tables;
     if (auto m = t.subtable("model")) c.model = make_backscatter_model(*m, ctx);
@@ -236,6 +238,11 @@ std::unique_ptr<Sigma0Source> load_library(const std::string& path) {
 }  // namespace
 
 std::unique_ptr<Sigma0Source> load_sigma0_source(const std::string& path) {
+  return load_sigma0_source(path, false);
+}
+
+std::unique_ptr<Sigma0Source> load_sigma0_source(const std::string& path,
+                                                 bool force_allow_extrapolation) {
   const std::string ext = std::filesystem::path(path).extension().string();
   if (!path_exists(path)) {
     throw InputError(path, "", "backscatter file not found");
@@ -243,7 +250,7 @@ std::unique_ptr<Sigma0Source> load_sigma0_source(const std::string& path) {
   if (ext == ".csv") {
     return make_table_source(std::make_shared<const Sigma0Table>(Sigma0Table::load(path)));
   }
-  if (ext == ".toml") return load_library(path);
+  if (ext == ".toml") return load_library(path, force_allow_extrapolation);
   throw InputError(
       path, "",
       "expected a category library (.toml) or a sigma0 table (.csv), got \"" + ext + "\"");

@@ -2,10 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "ris/geometry/scene_geometry_maps.h"
 #include "ris/image/geocode.h"
+#include "ris/scene/geo_frame.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -85,11 +89,81 @@ nlohmann::json ground_pixel(const RunResult& run, int line, int j) {
   return out;
 }
 
+// The scene cell a slant pixel (line, bin) images, for the linked cursor:
+// the cells whose centres geocode into that pixel (the geometry's own
+// mapping, terrain heights included), the one nearest their mean; when none
+// does (shadow, no data), the cell geocoding nearest to it. nullopt when no
+// cell lies in the image at all.
+std::optional<std::pair<int, int>> scene_cell_of_pixel(const RunResult& run, int line, int bin) {
+  const Scene& scene = *run.scene;
+  const SlarSimulation& sim = *run.slar;
+  std::vector<std::pair<int, int>> exact;
+  std::optional<std::pair<int, int>> nearest;
+  double best = INFINITY;
+  for (int r = 0; r < scene.rows; ++r) {
+    for (int c = 0; c < scene.cols; ++c) {
+      const std::size_t i = scene.index(r, c);
+      int l = 0;
+      int b = 0;
+      if (!scene.valid[i] ||
+          !geocode_pixel(scene, sim.track, sim.image, r, c, scene.elevation_m[i], l, b)) {
+        continue;
+      }
+      const double d = double(l - line) * (l - line) + double(b - bin) * (b - bin);
+      if (d == 0.0) exact.emplace_back(r, c);
+      if (d < best) {
+        best = d;
+        nearest = std::pair{r, c};
+      }
+    }
+  }
+  if (exact.empty()) return nearest;
+  double mr = 0.0;
+  double mc = 0.0;
+  for (const auto& [r, c] : exact) {
+    mr += r;
+    mc += c;
+  }
+  mr /= double(exact.size());
+  mc /= double(exact.size());
+  return *std::min_element(exact.begin(), exact.end(), [&](const auto& a, const auto& b) {
+    return std::hypot(a.first - mr, a.second - mc) < std::hypot(b.first - mr, b.second - mc);
+  });
+}
+
+// The scene cell a slant pixel images, as {"row", "col", "cells"...} for
+// the page's linked cursor.
+void add_scene_cell(const RunResult& run, int line, int bin, nlohmann::json& j) {
+  if (const auto cell = scene_cell_of_pixel(run, line, bin)) {
+    j["scene_row"] = cell->first;
+    j["scene_col"] = cell->second;
+  }
+}
+
+// Map coordinates of a cell centre: the scene's x, y in metres, and
+// latitude/longitude on its CRS's datum when it has one.
+void add_map_position(const Scene& scene, int row, int col, nlohmann::json& j) {
+  const auto [x_m, y_m] = scene.cell_centre(row, col);
+  j["x_m"] = x_m;
+  j["y_m"] = y_m;
+  if (scene.crs_wkt.empty()) return;
+  try {
+    const GeoFrame frame(scene.crs_wkt, "scene");
+    const auto [lon, lat] = frame.lonlat_from_scene(x_m, y_m);
+    j["lat_deg"] = lat;
+    j["lon_deg"] = lon;
+    j["datum"] = frame.geographic_crs_name();
+  } catch (const InputError&) {
+    // A CRS PROJ cannot invert here: the position in metres only.
+  }
+}
+
 nlohmann::json scene_cell(const RunResult& run, const Sigma0Source& sigma0, int col, int row) {
   const Scene& scene = *run.scene;
   const SlarSimulation& sim = *run.slar;
   const std::size_t i = scene.index(row, col);
   nlohmann::json j = {{"row", row}, {"col", col}};
+  add_map_position(scene, row, col, j);
   if (!scene.valid[i]) {
     j["flags"] = flags_json(scene_flag::kNoData, true);
     return j;
@@ -145,9 +219,11 @@ nlohmann::json inspect_pixel(const RunResult& run, const Sigma0Source& sigma0,
   if (view == "slant") {
     check_inside(x, y, run.slar->image.bins, run.slar->image.lines, view);
     j = slant_pixel(run, y, x);
+    add_scene_cell(run, y, x, j);
   } else if (view == "ground") {
     check_inside(x, y, run.slar->ground_grid.count, run.slar->image.lines, view);
     j = ground_pixel(run, y, x);
+    if (j.contains("pixel")) add_scene_cell(run, y, j["pixel"]["bin"].get<int>(), j);
   } else if (view == "scene" || view == "geocoded") {
     check_inside(x, y, run.scene->cols, run.scene->rows, view);
     j = scene_cell(run, sigma0, x, y);

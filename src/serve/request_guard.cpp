@@ -50,12 +50,26 @@ bool changes_state(const std::string& method) {
 
 }  // namespace
 
-bool is_json_content_type(const std::string& content_type) {
+namespace {
+
+// The media type of a Content-Type header: lower case, parameters and
+// surrounding spaces cut.
+std::string media_type(const std::string& content_type) {
   std::string media = lower(content_type.substr(0, content_type.find(';')));
   const auto space = [](unsigned char c) { return std::isspace(c) != 0; };
   media.erase(media.begin(), std::find_if_not(media.begin(), media.end(), space));
   media.erase(std::find_if_not(media.rbegin(), media.rend(), space).base(), media.end());
-  return media == "application/json";
+  return media;
+}
+
+}  // namespace
+
+bool is_json_content_type(const std::string& content_type) {
+  return media_type(content_type) == "application/json";
+}
+
+std::string required_content_type(const std::string& path) {
+  return path == kUploadPath ? "application/octet-stream" : "application/json";
 }
 
 std::string origin_of_url(const std::string& url) {
@@ -112,10 +126,11 @@ RequestGuard::Refusal RequestGuard::refusal(const RequestFacts& r) const {
     return {403, "cross-site request refused (Sec-Fetch-Site: " + r.sec_fetch_site +
                      "): the API answers only its own page"};
   }
-  if (state_changing && !is_json_content_type(r.content_type)) {
-    return {415, fmt::format("{} {} needs \"Content-Type: application/json\" (got \"{}\"); "
-                             "with curl: -H 'Content-Type: application/json'",
-                             r.method, r.path, r.content_type)};
+  const std::string required = required_content_type(r.path);
+  if (state_changing && media_type(r.content_type) != required) {
+    return {415, fmt::format("{} {} needs \"Content-Type: {}\" (got \"{}\"); "
+                             "with curl: -H 'Content-Type: {}'",
+                             r.method, r.path, required, r.content_type, required)};
   }
   return {};
 }

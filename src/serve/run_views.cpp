@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "ris/geometry/scene_geometry_maps.h"
+#include "ris/image/category_palette.h"
 #include "ris/image/geocode.h"
 #include "ris/image/scene_preview.h"
 #include "ris/image/shadow_map.h"
@@ -150,6 +151,38 @@ nlohmann::json greytone_histogram(const RunResult& run) {
     }
   }
   return nlohmann::json{{"counts", counts}};
+}
+
+nlohmann::json map_furniture(const RunResult& run, const Sigma0Source& sigma0) {
+  nlohmann::json out;
+  const Scene& scene = *run.scene;
+  out["cell_m"] = scene.dx_m;
+  out["georeferenced"] = !scene.crs_wkt.empty();
+  nlohmann::json key = nlohmann::json::array();
+  for (const MaskColour& m : kMasks) {
+    key.push_back({{"mask", m.name}, {"rgba", m.rgba}});
+  }
+  out["overlay_key"] = key;
+  if (run.kind == RunKind::streamed) return out;
+  const bool ppi = is_ppi(run);
+  nlohmann::json legend = nlohmann::json::array();
+  for (const std::uint16_t c : ppi ? run.ppi->categories : run.slar->categories) {
+    const Rgb8 rgb = category_colour(c);
+    legend.push_back({{"id", c},
+                      {"name", sigma0.has_category(c) ? sigma0.category_name(c) : ""},
+                      {"rgb", {rgb.r, rgb.g, rgb.b}}});
+  }
+  out["legend"] = legend;
+  if (ppi) return out;
+  const SlarSimulation& sim = *run.slar;
+  out["range_bin_m"] = sim.image.range.bin_m;
+  out["line_spacing_m"] = sim.image.line_spacing_m;
+  // Heading of the flight, clockwise from north (scene y): lines run along it.
+  double heading = rad_to_deg(std::atan2(sim.track.along_x, sim.track.along_y));
+  if (heading < 0.0) heading += 360.0;
+  out["heading_deg"] = heading;
+  out["look_side"] = sim.track.look_side == LookSide::right ? "right" : "left";
+  return out;
 }
 
 nlohmann::json sigma0_curves(const RunResult& run, const Sigma0Source& sigma0) {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <optional>
@@ -70,7 +71,8 @@ httplib::Server::Handler guarded(Handler handler) {
 // The body, taken as it arrives and refused (413) past the cap whether it
 // comes with a Content-Length or chunked (httplib caps only the former).
 std::optional<std::string> read_capped_body(const httplib::ContentReader& reader,
-                                            httplib::Response& res, std::size_t cap) {
+                                            httplib::Response& res, std::size_t cap,
+                                            const char* cap_option = "--max-body-kib") {
   std::string body;
   bool over = false;
   const bool read = reader([&](const char* data, std::size_t n) {
@@ -82,8 +84,8 @@ std::optional<std::string> read_capped_body(const httplib::ContentReader& reader
   over = over || res.status == 413;
   send_json(res,
             {{"error", over ? fmt::format("request body too large (over {} bytes, the server's "
-                                          "--max-body-kib)",
-                                          cap)
+                                          "{})",
+                                          cap, cap_option)
                             : std::string("the request body could not be read")}},
             over ? 413 : 400);
   close_after(res);
@@ -145,7 +147,8 @@ struct HttpServer::Impl {
 
   Impl(Session& s, const ServerOptions& o)
       : session(s), options(o), files(o.web_dir), http(o.connections) {
-    http.set_payload_max_length(options.max_body_bytes);
+    // httplib's own cap is the larger one; each route reads under its own.
+    http.set_payload_max_length(std::max(options.max_body_bytes, options.max_upload_bytes));
     // A worker for every admitted connection and spares (a browser's
     // keep-alive connections each hold one while open; slow clients are cut
     // at their deadlines, ris/serve/connection_limits.h).
@@ -171,6 +174,7 @@ struct HttpServer::Impl {
         send_json(res, {{"error", what}}, res.status);
       }
     });
+    add_javascript_libraries();
     add_api_routes();
     add_scene_routes();
     // The page: names looked up in the table read at start-up, never opened.
@@ -182,6 +186,18 @@ struct HttpServer::Impl {
       }
       res.set_content(f->content, f->mime.c_str());
     });
+  }
+
+  // Debian's Leaflet and Chart.js, read from where their packages put them
+  // (nothing fetched, nothing copied into the repository); the page falls
+  // back to plain images and canvas charts when they are missing.
+  void add_javascript_libraries() {
+    const std::filesystem::path& js = options.javascript_dir;
+    for (const char* f :
+         {"leaflet.js", "leaflet.css", "images/layers.png", "images/layers-2x.png"}) {
+      files.add_optional(std::string("vendor/leaflet/") + f, js / "leaflet" / f);
+    }
+    files.add_optional("vendor/chart.js/chart.min.js", js / "chart.js" / "chart.min.js");
   }
 
   void add_api_routes() {
@@ -273,6 +289,19 @@ struct HttpServer::Impl {
               with_body([&s](const auto&, auto& res,
                              const std::string& body) { send_json(res, s.save_radar(body)); },
                         cap));
+    // A file's bytes (application/octet-stream, request_guard.h) under the
+    // upload cap; kind, name and mapping in the query.
+    const std::size_t upload_cap = options.max_upload_bytes;
+    http.Post(kUploadPath, [&s, upload_cap](const httplib::Request& req, httplib::Response& res,
+                                            const httplib::ContentReader& reader) {
+      const std::optional<std::string> body =
+          read_capped_body(reader, res, upload_cap, "--max-upload-mib");
+      if (!body) return;
+      answer_errors(res, [&] {
+        send_json(res, s.upload(req.get_param_value("kind"), req.get_param_value("name"),
+                                req.get_param_value("mapping"), *body));
+      });
+    });
     http.Get("/api/scene.toml", guarded([&s](const auto&, auto& res) {
                send_text(res, s.scene_toml(), "scene.toml");
              }));

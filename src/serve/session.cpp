@@ -8,6 +8,8 @@
 #include <regex>
 #include <sstream>
 
+#include <stdlib.h>
+
 #include "ris/backscatter/library.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/config_table.h"
@@ -23,6 +25,7 @@
 #include "ris/serve/pixel_inspector.h"
 #include "ris/serve/radar_overrides.h"
 #include "ris/serve/run_views.h"
+#include "ris/sim/run.h"
 #include "ris/util/error.h"
 #include "ris/util/path_exists.h"
 
@@ -75,10 +78,10 @@ const char* kind_name(RunKind k) {
 
 }  // namespace
 
-Session::SceneState Session::scene_from_doc(toml::table doc) {
+Session::SceneState Session::scene_from_doc(toml::table doc, const std::string& path) {
   SceneState s;
   s.version = ++scene_versions_;
-  s.path = inputs_.scene_path;
+  s.path = path;
   s.editable = true;
   const SceneDescription d = parse_scene_description(doc, s.path);
   s.scene = std::make_shared<const Scene>(build_scene(d));
@@ -86,32 +89,63 @@ Session::SceneState Session::scene_from_doc(toml::table doc) {
   return s;
 }
 
+namespace {
+
+// A folder of the session's own under `parent` (mode 0700, a name no
+// other process chose): mkdtemp.
+std::filesystem::path make_private_folder(const std::filesystem::path& parent) {
+  const std::filesystem::path base =
+      parent.empty() ? std::filesystem::temp_directory_path() : parent;
+  std::string name = (base / "ris-serve-XXXXXX").string();
+  if (mkdtemp(name.data()) == nullptr) {
+    throw InputError(base.string(), "", "cannot make the server's working folder for uploads");
+  }
+  return name;
+}
+
+}  // namespace
+
+Session::SceneState Session::scene_from_file(const std::string& path) {
+  if (is_scene_description(path)) return scene_from_doc(parse_toml_file(path), path);
+  SceneState s;
+  s.version = ++scene_versions_;
+  s.path = path;
+  s.scene = std::make_shared<const Scene>(load_scene_source(path).scene);
+  return s;
+}
+
+void Session::use_library(const std::string& path) {
+  std::shared_ptr<const Sigma0Source> source = load_sigma0_source(path, allow_extrapolation_);
+  backscatter_name_ = std::filesystem::path(path).filename().string();
+  backscatter_files_[backscatter_name_] = path;
+  sigma0_ = std::move(source);
+}
+
 Session::Session(ServeInputs inputs) : inputs_(std::move(inputs)) {
   radar_presets_ = files_by_name(inputs_.data_dir / "radars", {".toml"});
   backscatter_files_ = files_by_name(inputs_.data_dir / "backscatter", {".toml", ".csv"});
+  landcover_mappings_ = files_by_name(inputs_.data_dir / "landcover", {".toml"});
   // The command line's own files are offered too, under their file names.
   const std::string own_radar = std::filesystem::path(inputs_.radar_path).filename().string();
   radar_presets_[own_radar] = inputs_.radar_path;
-  const std::string bs_path =
-      inputs_.backscatter_path.empty() ? default_sigma0_library_path() : inputs_.backscatter_path;
-  backscatter_name_ = std::filesystem::path(bs_path).filename().string();
-  backscatter_files_[backscatter_name_] = bs_path;
-  sigma0_ = load_sigma0_source(bs_path);
-
-  if (is_scene_description(inputs_.scene_path)) {
-    scene_ = scene_from_doc(parse_toml_file(inputs_.scene_path));
-  } else {
-    scene_.version = ++scene_versions_;
-    scene_.path = inputs_.scene_path;
-    scene_.scene = std::make_shared<const Scene>(load_scene_source(inputs_.scene_path).scene);
-  }
+  scene_ = scene_from_file(inputs_.scene_path);
+  // --backscatter, else the library the scene names, as `ris simulate`.
+  use_library(backscatter_library_for(inputs_.backscatter_path, inputs_.scene_path));
+  scene_.library = backscatter_name_;
   radar_path_ = inputs_.radar_path;
   radar_doc_ = parse_toml_file(radar_path_);
   radar_ = radar_from_toml(radar_doc_, radar_path_);
   seed_ = inputs_.seed;
-  result_ = run(scene_, radar_, radar_path_, sigma0_, bs_path, seed_);
+  result_ =
+      run(scene_, radar_, radar_path_, sigma0_, backscatter_files_.at(backscatter_name_), seed_);
   last_seconds_ = result_.seconds;
   run_id_ = 1;
+  work_dir_ = make_private_folder(inputs_.work_parent);
+}
+
+Session::~Session() {
+  std::error_code ec;
+  if (!work_dir_.empty()) std::filesystem::remove_all(work_dir_, ec);
 }
 
 RunResult Session::run(const SceneState& scene, const RadarParams& radar,
@@ -161,6 +195,7 @@ nlohmann::json Session::run_summary() const {
                              : fmt::format("/api/image/{}.png?run={}", v, run_id_);
   }
   j["images"] = images;
+  j["map"] = map_furniture(r, *sigma0_);
   return j;
 }
 
@@ -170,6 +205,8 @@ nlohmann::json Session::state() const {
   for (const auto& [name, path] : radar_presets_) presets.push_back(name);
   nlohmann::json libraries = nlohmann::json::array();
   for (const auto& [name, path] : backscatter_files_) libraries.push_back(name);
+  nlohmann::json mappings = nlohmann::json::array();
+  for (const auto& [name, path] : landcover_mappings_) mappings.push_back(name);
   const Scene& s = *scene_.scene;
   nlohmann::json scene = {{"file", file_name(scene_.path)},
                           {"editable", scene_.editable},
@@ -194,7 +231,9 @@ nlohmann::json Session::state() const {
           {"radar", radar},
           {"radar_presets", presets},
           {"backscatter", backscatter_name_},
+          {"allow_extrapolation", allow_extrapolation_},
           {"categories", categories},
+          {"landcover_mappings", mappings},
           {"backscatter_libraries", libraries},
           {"seed", seed_},
           {"run", run_summary()}};
@@ -245,8 +284,10 @@ SimulateOutcome Session::simulate(const std::string& body) {
     }
     bs_name = *name;
   }
+  const bool allow = t.get_bool_or("allow_extrapolation", allow_extrapolation_);
   t.finish();
-  const bool same_inputs = bs_name == backscatter_name_ && result_.kind != RunKind::streamed;
+  const bool same_library = bs_name == backscatter_name_ && allow == allow_extrapolation_;
+  const bool same_inputs = same_library && result_.kind != RunKind::streamed;
   if (same_inputs && film_only_change(radar_doc_, doc, radar_, radar)) {
     // Film, fading law and switch: the image chain after the mean power.
     for (RadarParams* used :
@@ -259,11 +300,13 @@ SimulateOutcome Session::simulate(const std::string& body) {
     last_film_only_ = true;
   } else {
     std::shared_ptr<const Sigma0Source> sigma0 = sigma0_;
-    if (bs_name != backscatter_name_) sigma0 = load_sigma0_source(backscatter_files_.at(bs_name));
+    if (!same_library) sigma0 = load_sigma0_source(backscatter_files_.at(bs_name), allow);
     result_ = run(scene_, radar, radar_path, sigma0, backscatter_files_.at(bs_name),
                   static_cast<std::uint64_t>(seed));
     sigma0_ = sigma0;
     backscatter_name_ = bs_name;
+    scene_.library = bs_name;
+    allow_extrapolation_ = allow;
     last_film_only_ = false;
   }
   radar_doc_ = std::move(doc);
@@ -290,6 +333,7 @@ nlohmann::json Session::apply_scene(SceneState next, bool push_undo) {
     if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
   }
   scene_ = std::move(next);
+  scene_.library = backscatter_name_;
   last_film_only_ = false;
   last_seconds_ = result_.seconds;
   ++run_id_;
@@ -372,9 +416,22 @@ nlohmann::json Session::paint(const std::string& body) {
 nlohmann::json Session::undo() {
   std::lock_guard lock(mutex_);
   if (undo_.empty()) throw InputError(scene_.path, "", "nothing to undo");
+  const std::string old_library = backscatter_name_;
+  const std::shared_ptr<const Sigma0Source> old_sigma0 = sigma0_;
+  const auto library = backscatter_files_.find(undo_.back().library);
+  if (library != backscatter_files_.end() && library->first != backscatter_name_) {
+    use_library(library->second);
+  }
   SceneState previous = std::move(undo_.back());
   undo_.pop_back();
-  return apply_scene(std::move(previous), false);
+  try {
+    return apply_scene(previous, false);
+  } catch (...) {
+    undo_.push_back(std::move(previous));
+    backscatter_name_ = old_library;
+    sigma0_ = old_sigma0;
+    throw;
+  }
 }
 
 std::filesystem::path Session::save_path(const std::string& body, const std::string& what,

@@ -18,21 +18,32 @@ std::string mime_of(const std::filesystem::path& p) {
   return "application/octet-stream";
 }
 
+std::string read_all(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 }  // namespace
 
 StaticFiles::StaticFiles(const std::filesystem::path& folder) {
   std::error_code ec;
   for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
     if (!e.is_regular_file()) continue;
-    std::ifstream in(e.path(), std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    files_[e.path().filename().string()] = StaticFile{text.str(), mime_of(e.path())};
+    files_[e.path().filename().string()] = StaticFile{read_all(e.path()), mime_of(e.path())};
   }
   if (files_.count("index.html") == 0) {
     throw InputError(folder.string(), "",
                      "the page's folder has no index.html (set RIS_DATA to the data folder)");
   }
+}
+
+bool StaticFiles::add_optional(const std::string& name, const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  files_[name] = StaticFile{read_all(path), mime_of(path)};
+  return true;
 }
 
 const StaticFile* StaticFiles::find(const std::string& name) const {

@@ -2,15 +2,21 @@
 """End-to-end test of `ris serve` in a real headless browser (Debian's
 chromium + chromium-driver, python3-selenium): load the page on the standard
 scene, move the depression slider and wait until the image changes, click a
-pixel and read the inspector, add a box and see its shadow appear, save the
-scene and read it back with `ris scene info`. Screenshots go to OUT_DIR as
-artefacts.
+pixel and read the inspector, follow the linked cursor into the scene and
+back, check the scale bar against the cell size and the legend against the
+scene picture's colours, switch every overlay on and off (nothing drawn when
+off) and through the presentations (no stale overlay), add a box and see its
+shadow appear (written in the scene's feet), save the scene and read it back
+with `ris scene info`, upload a DEM and simulate it (latitude in the
+inspector within the DEM), and load the page without Leaflet and Chart.js
+(plain images and a note). Screenshots go to OUT_DIR as artefacts.
 
 Exit 77 (ctest: skipped) with a message when Chromium or Selenium is missing.
 
 Usage: serve_browser.py RIS_EXE OUT_DIR
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -72,10 +78,248 @@ def click_pixel(driver, img_id, col, row):
         .click().perform()
 
 
+def shown(driver, element_id):
+    """True when the element takes space on screen (not display: none)."""
+    return driver.execute_script(
+        "const e = document.getElementById(arguments[0]);"
+        "return !!e && getComputedStyle(e).display !== 'none' && e.getClientRects().length > 0;",
+        element_id)
+
+
+def aim_tolerance(driver, img_id):
+    """Image pixels per screen pixel along x and y (a click lands within one
+    screen pixel of its aim)."""
+    return driver.execute_script(
+        "const i = document.getElementById(arguments[0]); const r = i.getBoundingClientRect();"
+        "return [Math.max(1, Math.ceil(i.naturalWidth / r.width)),"
+        "        Math.max(1, Math.ceil(i.naturalHeight / r.height))];", img_id)
+
+
+def cursor(driver, cursor_id, img_id):
+    """The linked cursor's cell (data-col, data-row) and the image cell under
+    its drawn centre, or None when it is hidden."""
+    return driver.execute_script(
+        "const c = document.getElementById(arguments[0]), i = document.getElementById(arguments[1]);"
+        "if (c.hidden) return null;"
+        "const r = c.getBoundingClientRect(), q = i.getBoundingClientRect();"
+        "const x = (r.left + r.width / 2 - q.left) / q.width * i.naturalWidth;"
+        "const y = (r.top + r.height / 2 - q.top) / q.height * i.naturalHeight;"
+        "return [Number(c.dataset.col), Number(c.dataset.row), Math.floor(x), Math.floor(y)];",
+        cursor_id, img_id)
+
+
+def scene_pixel_rgb(driver, col, row):
+    """The scene picture's RGB at a cell, read back through a canvas."""
+    return driver.execute_script(
+        "const i = document.getElementById('scene'); const c = document.createElement('canvas');"
+        "c.width = i.naturalWidth; c.height = i.naturalHeight;"
+        "const g = c.getContext('2d'); g.drawImage(i, 0, 0);"
+        "return Array.from(g.getImageData(arguments[0], arguments[1], 1, 1).data.slice(0, 3));",
+        col, row)
+
+
+def overlays_drawn(driver):
+    """Every overlay picture on screen: the plain ones shown with a picture,
+    and the map's mask layers."""
+    return driver.execute_script(
+        "const out = [];"
+        "for (const e of document.querySelectorAll('.overlay-img'))"
+        "  if (getComputedStyle(e).display !== 'none' && e.getAttribute('src')) out.push(e.src);"
+        "const map = document.getElementById('map');"
+        "if (getComputedStyle(map).display !== 'none')"
+        "for (const e of map.querySelectorAll('img.leaflet-image-layer'))"
+        "  if (e.id !== 'map-image' && e.src.includes('/api/overlay/')) out.push(e.src);"
+        "return out;")
+
+
+def set_overlays(driver, names):
+    for box in driver.find_elements("css selector", ".overlay"):
+        if box.is_selected() != (box.get_attribute("value") in names):
+            box.click()
+
+
+def choose(driver, select_id, value):
+    from selenium.webdriver.support.ui import Select
+    Select(driver.find_element("id", select_id)).select_by_value(value)
+
+
 def image_run(driver):
     return driver.execute_script(
         "const i = document.getElementById('image');"
         "return i.complete && i.naturalWidth > 0 ? i.dataset.run || '' : '';")
+
+
+def check_map_furniture(driver, slant_rows):
+    """After a click on the slant image: the scene's cursor marks the cell
+    the inspector names, drawn over that cell; a click on the scene marks the
+    slant pixel; the scale bar agrees with the cell size; the legend's colours
+    are the scene picture's."""
+    at = wait_until(lambda: cursor(driver, "scene-cursor", "scene"), 10, "the scene cursor")
+    assert at[:2] == [int(slant_rows["scene col"]), int(slant_rows["scene row"])], (at, slant_rows)
+    tx, ty = aim_tolerance(driver, "scene")
+    assert abs(at[2] - at[0]) <= tx and abs(at[3] - at[1]) <= ty, f"drawn off its cell: {at}"
+    print(f"linked cursor: slant ({slant_rows['bin']}, {slant_rows['line']}) -> scene "
+          f"({at[0]}, {at[1]})")
+    # Back: the scene cell, and the slant pixel it falls in is marked.
+    driver.execute_script("document.getElementById('inspector').innerHTML = '';")
+    click_pixel(driver, "scene", 300, 300)
+    rows = wait_until(lambda: (i := inspector(driver)) and "pixel bin" in i and i, 30,
+                      "the scene inspector with its slant pixel")
+    back = wait_until(lambda: (c := cursor(driver, "image-cursor", "image"))
+                      and c[:2] == [int(rows["pixel bin"]), int(rows["pixel line"])] and c, 10,
+                      "the image cursor at the scene cell's pixel")
+    tx, ty = aim_tolerance(driver, "image")
+    assert abs(back[2] - back[0]) <= tx and abs(back[3] - back[1]) <= ty, back
+    # The scale bar: its drawn length over its metres is the scene's shown
+    # pixels per metre (shown width / cells / cell size).
+    bar = driver.execute_script(
+        "const b = document.getElementById('scene-scalebar'), i = document.getElementById('scene');"
+        "const s = state.scene;"
+        "return [Number(b.dataset.metres), b.querySelector('.bar').getBoundingClientRect().width,"
+        "        i.getBoundingClientRect().width / i.naturalWidth / s.cell_m, s.cell_m];")
+    metres, px, px_per_m, cell_m = bar
+    assert abs(px / metres - px_per_m) <= 0.01 * px_per_m + 2.0 / metres, bar
+    print(f"scale bar: {metres} m drawn {px:.1f} px (cell {cell_m:.3f} m)")
+    # The legend names the clicked cell's category with the colour the
+    # scene picture paints flat ground of it.
+    legend = driver.execute_script(
+        "return Array.from(document.querySelectorAll('#legend [data-category]'))"
+        "  .map((e) => [Number(e.dataset.category), e.dataset.rgb.split(',').map(Number)]);")
+    assert legend, "no legend"
+    category = int(rows["category id"])
+    colour = dict((c, rgb) for c, rgb in legend).get(category)
+    assert colour is not None, (category, legend)
+    rgb = scene_pixel_rgb(driver, 300, 300)
+    assert max(abs(a - b) for a, b in zip(rgb, colour)) <= 12, (rgb, colour)
+    assert driver.find_element("css selector", ".north").text.startswith("N")
+
+
+def check_overlays(driver):
+    """Every overlay on, then off: nothing drawn; through the presentations
+    with shadow on: never a slant mask over another view."""
+    set_overlays(driver, ["shadow", "layover", "backfacing"])
+    drawn = wait_until(lambda: len(overlays_drawn(driver)) == 2 and overlays_drawn(driver), 30,
+                       "the overlays")
+    key = driver.execute_script(
+        "return Array.from(document.querySelectorAll('#overlay-key [data-mask]'))"
+        "  .map((e) => e.dataset.mask);")
+    assert sorted(key) == ["backfacing", "layover", "shadow"], key
+    set_overlays(driver, [])
+    wait_until(lambda: overlays_drawn(driver) == [], 10, "every overlay off")
+    assert not shown(driver, "image-overlay") and not shown(driver, "scene-overlay")
+    print(f"overlays: {len(drawn)} pictures on, none after unchecking every box")
+    set_overlays(driver, ["shadow"])
+    wait_until(lambda: len(overlays_drawn(driver)) == 2, 30, "the shadow overlay")
+    for view, expect in (("ground", None), ("geocoded", "geocoded"), ("slant", "slant")):
+        choose(driver, "presentation", view)
+        wait_until(lambda: driver.execute_script(
+            "return document.getElementById('image').dataset.view") == view, 30, view)
+        drawn = wait_until(lambda: (d := overlays_drawn(driver)) is not None and
+                           len(d) == (1 if expect is None else 2) and d, 30,
+                           f"the overlays of {view}")
+        image_masks = [u for u in drawn if "/overlay/scene.png" not in u]
+        if expect is None:
+            assert image_masks == [], f"a stale overlay over {view}: {image_masks}"
+        else:
+            assert len(image_masks) == 1 and f"/overlay/{expect}.png" in image_masks[0], drawn
+        driver.save_screenshot(os.path.join(os.environ.get("RIS_E2E_OUT", "."), f"view-{view}.png"))
+    set_overlays(driver, [])
+
+
+def check_linked_zoom(driver):
+    """The geocoded map: zoomed in with its + button, the scene view shows the
+    same place (centre within two cells); the map's scale bar agrees with its
+    pixels per metre (a simple CRS in the scene's metres)."""
+    choose(driver, "presentation", "geocoded")
+    wait_until(lambda: shown(driver, "map"), 30, "the map")
+    zoom0 = driver.execute_script("return map.getZoom();")
+    for _ in range(2):
+        driver.find_element("css selector", ".leaflet-control-zoom-in").click()
+    wait_until(lambda: driver.execute_script("return map.getZoom();") >= zoom0 + 2, 10,
+               "the map to zoom in")
+    # And off the centre, as a drag would.
+    driver.execute_script("map.panBy([90, -60], {animate: false});")
+    def centres():
+        return driver.execute_script(
+            "const s = state.scene, c = map.getCenter();"
+            "const v = document.getElementById('scene-viewport').getBoundingClientRect();"
+            "const i = document.getElementById('scene'), r = i.getBoundingClientRect();"
+            "return [c.lng / s.cell_m, s.rows - c.lat / s.cell_m,"
+            "  (v.left + v.width / 2 - r.left) / r.width * i.naturalWidth,"
+            "  (v.top + v.height / 2 - r.top) / r.height * i.naturalHeight, map.getZoom()];")
+    middle = driver.execute_script("return [state.scene.cols / 2, state.scene.rows / 2];")
+    c = wait_until(lambda: (c := centres()) and abs(c[0] - middle[0]) > 20 and
+                   abs(c[0] - c[2]) <= 2 and abs(c[1] - c[3]) <= 2 and c, 10,
+                   "the scene to follow the map")
+    print(f"linked zoom: map centre ({c[0]:.1f}, {c[1]:.1f}) scene centre ({c[2]:.1f}, "
+          f"{c[3]:.1f}) cells, zoom {c[4]}")
+    bar = driver.execute_script(
+        "const b = document.querySelector('.leaflet-control-scale-line');"
+        "const a = map.latLngToContainerPoint([0, 0]), z = map.latLngToContainerPoint([0, 1000]);"
+        "return [b.textContent, b.getBoundingClientRect().width, (z.x - a.x) / 1000];")
+    text, px, px_per_m = bar
+    metres = float(text.split()[0]) * (1000 if text.endswith("km") else 1)
+    assert abs(px / metres - px_per_m) <= 0.02 * px_per_m, bar
+    choose(driver, "presentation", "slant")
+    double_click(driver, "scene-viewport")
+
+
+def double_click(driver, element_id):
+    from selenium.webdriver.common.action_chains import ActionChains
+    ActionChains(driver).double_click(driver.find_element("id", element_id)).perform()
+
+
+def check_upload(driver, out_dir):
+    """A DEM uploaded from the page, imported and simulated with the library
+    it names; a scene cell's latitude and longitude lie inside the DEM."""
+    dem = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "dem",
+                       "SanAnd_dem.tif")
+    run_before = image_run(driver)
+    choose(driver, "upload-kind", "dem")
+    driver.find_element("id", "upload-file").send_keys(os.path.abspath(dem))
+    driver.find_element("id", "upload").click()
+    note = wait_until(lambda: (t := driver.find_element("id", "upload-note").text) and t, 60,
+                      "the upload")
+    assert "generic-terrain.toml" in note, note
+    wait_until(lambda: (r := image_run(driver)) and r != run_before, 60, "the DEM's image")
+    driver.execute_script("document.getElementById('inspector').innerHTML = '';")
+    click_pixel(driver, "scene", 50, 120)
+    rows = wait_until(lambda: (i := inspector(driver)) and "latitude, deg" in i and i, 30,
+                      "the inspector on the DEM")
+    lat, lon = float(rows["latitude, deg"]), float(rows["longitude, deg"])
+    # SanAnd_dem.tif: 34.140..34.210 N, 118.440..118.410 W (gdalinfo).
+    assert 34.140 <= lat <= 34.211 and -118.441 <= lon <= -118.410, rows
+    print(f"uploaded DEM: {note}; cell at {lat:.5f} N, {lon:.5f} E")
+    driver.save_screenshot(os.path.join(out_dir, "5-uploaded-dem.png"))
+    errors = driver.find_element("id", "error").text
+    assert errors == "", f"the page shows an error: {errors}"
+
+
+def check_without_libraries(ris_exe, out_dir):
+    """Without Leaflet and Chart.js the page still shows the images, says
+    what is missing, and the geocoded view is a plain picture."""
+    work = tempfile.mkdtemp(prefix="ris-serve-e2e-nolib-")
+    server = Server(ris_exe, os.path.join(work, "out"),
+                    ("--javascript-dir", os.path.join(work, "none")))
+    driver = None
+    try:
+        driver = make_driver(os.path.join(work, "profile"))
+        driver.get(server.url + "/")
+        wait_until(lambda: image_run(driver), 60, "the first image without libraries")
+        note = driver.find_element("id", "lib-note").text
+        assert "libjs-leaflet" in note and "libjs-chart.js" in note, note
+        choose(driver, "presentation", "geocoded")
+        wait_until(lambda: driver.execute_script(
+            "return document.getElementById('image').dataset.view") == "geocoded", 30,
+            "the plain geocoded image")
+        assert shown(driver, "image") and not shown(driver, "map")
+        driver.save_screenshot(os.path.join(out_dir, "6-without-libraries.png"))
+        print(f"without libraries: {note}")
+    finally:
+        if driver is not None:
+            driver.quit()
+        server.stop()
+        shutil.rmtree(work, ignore_errors=True)
 
 
 def main():
@@ -93,8 +337,12 @@ def main():
         print("SKIP: python3-selenium not installed (scripts/install-deps.sh)")
         return SKIP
     os.makedirs(out_dir, exist_ok=True)
+    os.environ["RIS_E2E_OUT"] = out_dir
     work = tempfile.mkdtemp(prefix="ris-serve-e2e-")
-    server = Server(ris_exe, os.path.join(work, "out"))
+    # The server's working folder (uploads) under a folder of the test's.
+    tmp = os.path.join(work, "tmp")
+    os.makedirs(tmp)
+    server = Server(ris_exe, os.path.join(work, "out"), env={"TMPDIR": tmp})
     driver = None
     try:
         driver = make_driver(os.path.join(work, "profile"))
@@ -120,8 +368,14 @@ def main():
         rows = wait_until(lambda: (i := inspector(driver)) and "slant range, m" in i and i, 30,
                           "the inspector")
         print(f"inspector: slant range {rows['slant range, m']} m, greytone {rows['greytone']}")
-        # Shown at about one screen pixel per image pixel: within one of the aim.
-        assert abs(int(rows["bin"]) - 120) <= 1 and abs(int(rows["line"]) - 350) <= 1, rows
+        # A click lands within one screen pixel of its aim: in image pixels,
+        # within the image pixels per screen pixel (the slant image is shown
+        # in its true aspect, so lines may be narrower than bins).
+        tx, ty = aim_tolerance(driver, "image")
+        assert abs(int(rows["bin"]) - 120) <= tx and abs(int(rows["line"]) - 350) <= ty, rows
+        check_map_furniture(driver, rows)
+        check_overlays(driver)
+        check_linked_zoom(driver)
 
         # A box at the scene's centre (Add box), then its shadow: east of it,
         # as the radar looks east. Check the cell before and after.
@@ -152,6 +406,7 @@ def main():
         assert "shadow" not in flags_before, flags_before
         assert "shadow" in flags_after, flags_after
         driver.save_screenshot(os.path.join(out_dir, "3-box-shadow.png"))
+        set_overlays(driver, [])
 
         # Save the scene and read it back with the command line.
         name = driver.find_element("id", "save-name")
@@ -165,16 +420,25 @@ def main():
         info = subprocess.run([ris_exe, "scene", "info", path], capture_output=True, text=True)
         print(info.stdout.strip().splitlines()[0] if info.stdout else info.stderr)
         assert info.returncode == 0, info.stderr
-        assert "box" in open(path).read()
+        saved_text = open(path).read()
+        assert "box" in saved_text
+        # The new box is written in the scene's unit (feet), not metres.
+        last = saved_text.rsplit("[[object]]", 1)[1]
+        assert re.search(r"length = [\"']\d+ ft[\"']", last), last
         driver.save_screenshot(os.path.join(out_dir, "4-saved.png"))
+        check_upload(driver, out_dir)
         errors = driver.find_element("id", "error").text
         assert errors == "", f"the page shows an error: {errors}"
     finally:
         if driver is not None:
             driver.quit()
         code, out = server.stop()
+        left = [n for n in os.listdir(tmp) if n.startswith("ris-serve-")]
         shutil.rmtree(work, ignore_errors=True)
     assert code == 0, f"ris serve exit code {code} after SIGINT:\n{out}"
+    # The uploads lived in the server's own working folder, gone with it.
+    assert not left, f"the server left its working folder behind: {left}"
+    check_without_libraries(ris_exe, out_dir)
     print(f"ok; screenshots in {out_dir}")
     return 0
 

@@ -4,6 +4,7 @@ the benchmark (tests/serve/, bench/serve_bench.py): a free loopback port
 SIGINT to stop (as Ctrl-C does), and HTTP helpers on urllib (no packages).
 """
 import json
+import os
 import re
 import signal
 import subprocess
@@ -13,10 +14,11 @@ import urllib.request
 
 
 class Server:
-    def __init__(self, ris_exe, out_dir, extra_args=()):
+    def __init__(self, ris_exe, out_dir, extra_args=(), env=None):
         self.proc = subprocess.Popen(
             [ris_exe, "serve", "--port", "0", "--out", str(out_dir), *extra_args],
-            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+            env=None if env is None else {**os.environ, **env})
         line = self.proc.stdout.readline()
         m = re.search(r"open (http://\S+)", line)
         if not m:

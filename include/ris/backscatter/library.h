@@ -43,6 +43,13 @@ namespace ris {
 // call for each category and band.
 std::unique_ptr<Sigma0Source> load_sigma0_source(const std::string& path);
 
+// The same, with every model of a library (.toml) allowed outside its
+// validity (as if each said allow_extrapolation = true; a warning per
+// category and band instead of a refusal): `ris serve`'s switch for the
+// message that asks for it. A .csv table has no validity to lift.
+std::unique_ptr<Sigma0Source> load_sigma0_source(const std::string& path,
+                                                 bool force_allow_extrapolation);
+
 // The library the simulation uses when none is given:
 // <data>/backscatter/ku-geometric.toml.
 std::string default_sigma0_library_path();

@@ -19,6 +19,9 @@
 //   that type cross-origin only after a CORS preflight, which this server
 //   never approves (it sends no CORS headers), so no form, no sendBeacon and
 //   no "simple" fetch from another page can reach a state-changing route.
+//   The one exception is the upload route (kUploadPath), whose body is a
+//   file's bytes: it must say application/octet-stream, which is no more a
+//   CORS-safelisted type than JSON is, so the same preflight rule holds.
 //
 // Example:
 //   ris::RequestGuard guard("127.0.0.1", 8765);
@@ -73,6 +76,13 @@ class RequestGuard {
 // True when `content_type`'s media type is application/json (case-insensitive,
 // parameters after ';' ignored).
 bool is_json_content_type(const std::string& content_type);
+
+// The route that takes a file's bytes (POST /api/upload?kind=...&name=...).
+inline constexpr const char* kUploadPath = "/api/upload";
+
+// The media type a state-changing request to `path` must carry:
+// application/octet-stream for kUploadPath, application/json elsewhere.
+std::string required_content_type(const std::string& path);
 
 // "scheme://authority" of a URL (lower case), or "" when it has none.
 std::string origin_of_url(const std::string& url);

@@ -52,6 +52,14 @@ nlohmann::json greytone_histogram(const RunResult& run);
 
 // sigma0 in dB of each category the run used, at local incidence 0..89 deg
 // (1 deg steps), at the run's band.
+// The page's map furniture for a run: the category legend (every category
+// the run's scene uses, with the colour its scene picture paints it,
+// ris/image/category_palette.h, and the library's name), the overlay key
+// (each mask's RGBA in overlay_png) and the geometry the page draws scale
+// bars and orientation labels from (cell size, slant bin and line spacing,
+// heading of the track, look side).
+nlohmann::json map_furniture(const RunResult& run, const Sigma0Source& sigma0);
+
 nlohmann::json sigma0_curves(const RunResult& run, const Sigma0Source& sigma0);
 
 }  // namespace ris

@@ -32,9 +32,13 @@ namespace ris {
 
 struct ServerOptions {
   std::string host = "127.0.0.1";
-  int port = 8765;                       // 0: any free port (bind() returns it)
-  std::size_t max_body_bytes = 1 << 20;  // request bodies above: HTTP 413
-  std::filesystem::path web_dir;         // the page's files (ris/serve/static_files.h)
+  int port = 8765;                                       // 0: any free port (bind() returns it)
+  std::size_t max_body_bytes = 1 << 20;                  // request bodies above: HTTP 413
+  std::size_t max_upload_bytes = std::size_t{64} << 20;  // POST /api/upload bodies above: 413
+  // Where Debian's libjs-leaflet and libjs-chart.js put their files; the page
+  // is served without them (plain images, a note) when they are missing.
+  std::filesystem::path javascript_dir = "/usr/share/javascript";
+  std::filesystem::path web_dir;  // the page's files (ris/serve/static_files.h)
   ConnectionLimits connections;
 };
 

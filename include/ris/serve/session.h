@@ -49,6 +49,9 @@ struct ServeInputs {
   std::uint64_t seed = 1;
   // The products folders kept under out_dir (the oldest removed beyond).
   ProductFolderCap products;
+  // Uploaded files go into a private folder made here (mode 0700, a fresh
+  // name) and removed with the session; empty: the system's temporary folder.
+  std::filesystem::path work_parent;
 };
 
 struct SimulateOutcome {
@@ -60,14 +63,19 @@ class Session {
  public:
   // Loads the inputs and runs once; InputError for bad input.
   explicit Session(ServeInputs inputs);
+  // Removes the working folder and every upload in it.
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
 
   nlohmann::json state() const;
 
   // POST /api/simulate. Body keys: seed, depression, swath, radar (radar-file keys
   // overriding the current description), radar_preset, backscatter (names
-  // from state()). A film-only change re-renders from the kept mean power.
-  // When a newer simulate call arrives while this one waits for the lock,
-  // this one is dropped (latest request wins).
+  // from state()), allow_extrapolation (every model of the library used
+  // outside its validity, with a warning: the switch its refusal names). A film-only change
+  // re-renders from the kept mean power. When a newer simulate call arrives while this one waits
+  // for the lock, this one is dropped (latest request wins).
   SimulateOutcome simulate(const std::string& body);
 
   // Scene editing (scene descriptions only): each re-simulates, and an edit
@@ -80,6 +88,19 @@ class Session {
   nlohmann::json paint(const std::string& body);
   // Undoes the last edit or paint stroke.
   nlohmann::json undo();
+
+  // POST /api/upload: a file's bytes, written into the session's working
+  // folder under a plain name (folder and odd characters refused), opened
+  // through the checks the command line applies (regular file, VRT sources
+  // and side files beside it, grid size against memory) and made the scene.
+  // kind: "dem" (imported as `ris scene import` does: every cell the default
+  // category, its library), "landcover" (a categorical raster mapped through
+  // `mapping`, a file name from the data folder's landcover/, onto the
+  // current raster scene) or "scene" (a description .toml or a ris scene
+  // raster). The scene's library is used, as `ris simulate` uses it.
+  // Returns as an edit does, plus {"uploaded": name}.
+  nlohmann::json upload(const std::string& kind, const std::string& name,
+                        const std::string& mapping, const std::string& bytes);
 
   // Writes the scene or radar description as <out_dir>/<name>.toml (a
   // raster scene, painted or not, as <name>.tif, a ris scene GeoTIFF); body
@@ -116,8 +137,18 @@ class Session {
     bool editable = false;
     toml::table doc;  // editable scenes: the description
     std::shared_ptr<const Scene> scene;
+    // The backscatter library it was run with (an undo past an upload
+    // returns to the library of the scene before).
+    std::string library;
   };
-  SceneState scene_from_doc(toml::table doc);
+  SceneState scene_from_doc(toml::table doc, const std::string& path);
+  // A scene file (description or raster) as the command line loads it.
+  SceneState scene_from_file(const std::string& path);
+  // Makes `path` the current backscatter library (offered by its file name).
+  void use_library(const std::string& path);
+  std::filesystem::path store_upload(const std::string& name, const std::string& bytes,
+                                     const std::vector<std::string>& extensions);
+  SceneState landcover_scene(const std::filesystem::path& raster, const std::string& mapping);
   RunResult run(const SceneState& scene, const RadarParams& radar, const std::string& radar_path,
                 const std::shared_ptr<const Sigma0Source>& sigma0,
                 const std::string& backscatter_path, std::uint64_t seed) const;
@@ -126,15 +157,17 @@ class Session {
   // undo stack when push_undo).
   nlohmann::json apply_scene(SceneState next, bool push_undo);
   nlohmann::json apply_scene_doc(toml::table doc) {
-    return apply_scene(scene_from_doc(std::move(doc)), true);
+    return apply_scene(scene_from_doc(std::move(doc), scene_.path), true);
   }
   std::filesystem::path save_path(const std::string& body, const std::string& what,
                                   const std::string& extension) const;
   const toml::array& objects() const;
 
   ServeInputs inputs_;
-  std::map<std::string, std::string> radar_presets_;      // name -> path
-  std::map<std::string, std::string> backscatter_files_;  // name -> path
+  std::map<std::string, std::string> radar_presets_;       // name -> path
+  std::map<std::string, std::string> backscatter_files_;   // name -> path
+  std::map<std::string, std::string> landcover_mappings_;  // name -> path
+  std::filesystem::path work_dir_;                         // uploads (removed at the end)
   std::atomic<std::uint64_t> latest_request_{0};
   mutable std::mutex mutex_;
   // Under mutex_:
@@ -145,6 +178,8 @@ class Session {
   RadarParams radar_;
   std::string backscatter_name_;
   std::shared_ptr<const Sigma0Source> sigma0_;
+  bool allow_extrapolation_ = false;  // every model of the library (simulate key)
+  std::uint64_t uploads_ = 0;
   std::uint64_t seed_ = 1;
   RunResult result_;
   std::uint64_t run_id_ = 0;

@@ -7,6 +7,7 @@
 // Example:
 //   ris::StaticFiles files(ris::data_dir() / "serve");
 //   if (const ris::StaticFile* f = files.find("index.html")) send(f->content, f->mime);
+//   files.add_optional("vendor/leaflet/leaflet.js", "/usr/share/javascript/leaflet/leaflet.js");
 #pragma once
 
 #include <filesystem>
@@ -27,6 +28,9 @@ class StaticFiles {
   explicit StaticFiles(const std::filesystem::path& folder);
   // The file of that name ("" means index.html), or nullptr.
   const StaticFile* find(const std::string& name) const;
+  // Reads `path` (when it is a regular file) into the table under `name`,
+  // e.g. "vendor/leaflet/leaflet.js"; false when it is missing.
+  bool add_optional(const std::string& name, const std::filesystem::path& path);
 
  private:
   std::map<std::string, StaticFile> files_;

@@ -137,6 +137,13 @@ struct RunResult {
 // option and what was expected); nothing is written then.
 RunResult run_simulation(const RunRequest& request, const RunCallbacks& callbacks = {});
 
+// The backscatter library a run on `scene_path` uses: `backscatter_path`
+// (--backscatter) when given, else the library the scene raster names
+// (RIS_BACKSCATTER_LIBRARY: `ris scene import` and `ris scene fractal` write
+// it; logged), else the standard library. `ris serve` chooses the same way.
+std::string backscatter_library_for(const std::string& backscatter_path,
+                                    const std::string& scene_path);
+
 // Speckle and greytones again on the kept simulation with another seed and,
 // when given, other film constants (equation 15's X, gamma, k, m); point
 // targets are measured again. The geometry and mean power are not

@@ -85,14 +85,8 @@ LoadedSigma0 load_sigma0(const RunRequest& r) {
   LoadedSigma0 in;
   in.path = r.backscatter_path;
   if (r.backscatter_path.empty() && r.sigma0 == nullptr) {
-    const std::string named = r.scene == nullptr ? scene_backscatter_library(r.scene_path) : "";
-    if (!named.empty()) {
-      spdlog::info(
-          "{}: backscatter from {}, the library the scene names (--backscatter to "
-          "choose another)",
-          r.scene_path, named);
-    }
-    in.path = named.empty() ? default_sigma0_library_path() : named;
+    // A scene given in memory has no file to name a library.
+    in.path = backscatter_library_for("", r.scene == nullptr ? r.scene_path : "");
   }
   in.source = r.sigma0 != nullptr ? r.sigma0 : load_sigma0_source(in.path);
   return in;
@@ -316,6 +310,17 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
 }
 
 }  // namespace
+
+std::string backscatter_library_for(const std::string& backscatter_path,
+                                    const std::string& scene_path) {
+  if (!backscatter_path.empty()) return backscatter_path;
+  const std::string named = scene_backscatter_library(scene_path);
+  if (named.empty()) return default_sigma0_library_path();
+  spdlog::info(
+      "{}: backscatter from {}, the library the scene names (--backscatter to choose another)",
+      scene_path, named);
+  return named;
+}
 
 RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   // Checked against the cap before OpenMP sees it (libgomp crashes on
