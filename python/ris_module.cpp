@@ -23,6 +23,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -67,11 +68,34 @@ namespace {
 PyObject* g_input_error = nullptr;    // ris.InputError(ValueError)
 PyObject* g_missing_error = nullptr;  // ris.InputFileNotFoundError(InputError, FileNotFoundError)
 
-// A missing input file is reported as a FileNotFoundError subclass, every
-// other bad input as ris.InputError; both carry the C++ message and the
-// file and key it names.
-void raise_input_error(const ris::InputError& e) {
-  const bool missing = !e.file().empty() && !std::filesystem::exists(e.file());
+// An error about text the bindings were handed rather than a file on disk
+// (a radar dict written as TOML, a model's parameters, a scene from arrays):
+// its "file" is a pseudo-name such as "<dict>", which is never missing.
+class TextInputError : public ris::InputError {
+ public:
+  explicit TextInputError(const ris::InputError& e) : ris::InputError(e) {}
+};
+
+// Runs f; an InputError naming `source` (the pseudo-file of the text being
+// read) comes out as a TextInputError, so it keeps the class InputError.
+template <typename F>
+auto reading_text(const std::string& source, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const TextInputError&) {
+    throw;
+  } catch (const ris::InputError& e) {
+    if (e.file() == source) throw TextInputError(e);
+    throw;
+  }
+}
+
+// A real input file that is not there is reported as
+// ris.InputFileNotFoundError (a FileNotFoundError subclass), every other bad
+// input as ris.InputError; both carry the C++ message and the file and key
+// it names.
+void raise_input_error(const ris::InputError& e, bool text_source) {
+  const bool missing = !text_source && !e.file().empty() && !std::filesystem::exists(e.file());
   PyObject* type = missing ? g_missing_error : g_input_error;
   py::object err = py::reinterpret_borrow<py::object>(type)(py::str(e.what()));
   err.attr("file") = e.file();
@@ -146,7 +170,7 @@ PyScene scene_from_arrays(py::array_t<float, py::array::c_style> elevation_m,
   s->elevation_m.assign(elevation_m.data(), elevation_m.data() + elevation_m.size());
   s->category.assign(category.data(), category.data() + category.size());
   s->valid.assign(valid.data(), valid.data() + valid.size());
-  s->validate("Scene.from_arrays");
+  reading_text("Scene.from_arrays", [&] { s->validate("Scene.from_arrays"); });
   return PyScene{std::move(s), "", "", ""};
 }
 
@@ -181,16 +205,34 @@ struct PyRadar {
 };
 
 PyRadar radar_from_text(const std::string& text, const std::string& source) {
-  toml::table doc;
-  ris::require_toml_nesting_within(text, ris::kMaxTomlNesting, source);
-  try {
-    doc = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw ris::InputError(source, "",
-                          "expected TOML: " + std::string(e.description()) + " at line " +
-                              std::to_string(e.source().begin.line));
+  return reading_text(source, [&] {
+    ris::require_toml_nesting_within(text, ris::kMaxTomlNesting, source);
+    toml::table doc;
+    try {
+      doc = toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+      throw ris::InputError(source, "",
+                            "expected TOML: " + std::string(e.description()) + " at line " +
+                                std::to_string(e.source().begin.line));
+    }
+    return PyRadar{ris::radar_from_toml(doc, source)};
+  });
+}
+
+// `ris radar info`'s derived quantities with its units: the angles it prints
+// in degrees (metadata.json's radar_derived keeps radians) become *_deg keys.
+nlohmann::json derived_in_degrees(const ris::RadarParams& radar) {
+  const nlohmann::json si = ris::derived_to_json(ris::derive(radar));
+  nlohmann::json out = nlohmann::json::object();
+  constexpr std::string_view kRad = "_rad";
+  for (const auto& [key, value] : si.items()) {
+    if (key.ends_with(kRad)) {
+      out[key.substr(0, key.size() - kRad.size()) + "_deg"] = ris::rad_to_deg(value.get<double>());
+    } else {
+      out[key] = value;
+    }
   }
-  return PyRadar{ris::radar_from_toml(doc, source)};
+  return out;
 }
 
 struct PyResult {
@@ -337,12 +379,17 @@ py::array_t<double> model_sigma0(const std::string& model_toml,
         "", "model",
         "expected model parameters as TOML key = value pairs: " + std::string(e.description()));
   }
-  ris::ConfigTable root(doc, "model", "");
-  std::optional<ris::ConfigTable> t = root.subtable("model");
-  ris::ModelContext ctx{"model", ".", allow_extrapolation, -1, nullptr};
-  std::unique_ptr<ris::BackscatterModel> model = ris::make_backscatter_model(*t, ctx);
-  const ris::RadarBand band = band_of(frequency_hz, polarisation);
-  model->check_band(band);
+  // "model" names the parameters given, not a file.
+  ris::RadarBand band;
+  const std::unique_ptr<ris::BackscatterModel> model = reading_text("model", [&] {
+    ris::ConfigTable root(doc, "model", "");
+    std::optional<ris::ConfigTable> t = root.subtable("model");
+    ris::ModelContext ctx{"model", ".", allow_extrapolation, -1, nullptr};
+    std::unique_ptr<ris::BackscatterModel> m = ris::make_backscatter_model(*t, ctx);
+    band = band_of(frequency_hz, polarisation);
+    m->check_band(band);
+    return m;
+  });
   py::array_t<double> out(incidence_rad.size());
   const double* in = incidence_rad.data();
   double* o = out.mutable_data();
@@ -468,14 +515,14 @@ py::dict topo(const std::string& acquisition, const std::string& dem_path,
   py::dict d;
   d["lat_deg"] = copy(t.lat_deg.data(), shape);
   d["lon_deg"] = copy(t.lon_deg.data(), shape);
-  d["height_m"] = copy(t.height_m.data(), shape);
+  d["hgt_m"] = copy(t.height_m.data(), shape);
   d["incidence_deg"] = copy(t.incidence_deg.data(), shape);
   d["incidence_geocentric_deg"] = copy(t.incidence_geocentric_deg.data(), shape);
   d["local_incidence_deg"] = copy(t.local_incidence_deg.data(), shape);
   d["look_deg"] = copy(t.look_deg.data(), shape);
   d["heading_deg"] = copy(t.heading_deg.data(), shape);
   d["gamma_area_m2"] = copy(t.gamma_area_m2.data(), shape);
-  d["simulated_amplitude"] = copy(t.simulated_amplitude.data(), shape);
+  d["simamp"] = copy(t.simulated_amplitude.data(), shape);
   d["layover_shadow_mask"] = copy(t.mask.data(), shape);
   d["window"] = py::make_tuple(w.line0, w.lines, w.bin0, w.bins);
   d["grid_shape"] = py::make_tuple(acq.grid.lines, acq.grid.bins);
@@ -575,8 +622,10 @@ void bind_errors(py::module_& m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const TextInputError& e) {
+      raise_input_error(e, true);
     } catch (const ris::InputError& e) {
-      raise_input_error(e);
+      raise_input_error(e, false);
     }
   });
 }
@@ -625,10 +674,7 @@ void bind_radar(py::module_& m) {
   py::class_<PyRadar>(m, "_Radar")
       .def_property_readonly("source", [](const PyRadar& r) { return r.radar.source_file; })
       .def("params", [](const PyRadar& r) { return json_to_python(ris::radar_to_json(r.radar)); })
-      .def("derived",
-           [](const PyRadar& r) {
-             return json_to_python(ris::derived_to_json(ris::derive(r.radar)));
-           })
+      .def("derived", [](const PyRadar& r) { return json_to_python(derived_in_degrees(r.radar)); })
       .def("film", [](const PyRadar& r) { return film_list(r.radar.film); });
   m.def("_load_radar", [](const std::string& path) { return PyRadar{ris::load_radar(path)}; });
   m.def("_radar_from_toml", &radar_from_text);
@@ -828,6 +874,7 @@ PYBIND11_MODULE(_ris, m) {
   bind_radar(m);
   bind_result(m);
   bind_backscatter(m);
+  m.def("_data_dir", [] { return ris::data_dir().string(); });
   m.def("_topo", &topo);
   m.def("_quality", &quality);
   m.def("_compare", &compare);

@@ -18,14 +18,33 @@ Units are SI and carried in names: metres (``_m``), watts (``_w``), hertz
 
 import json
 import math
+import os
+import pathlib
 import re
 import numbers
 import warnings as _warnings
 
 import numpy as np
 
-from . import _ris
-from ._ris import InputError, InputFileNotFoundError
+
+def _installed_data_dir():
+    """<prefix>/share/ris/data for a package installed by ``cmake --install``
+    into <prefix>/lib/python3/dist-packages/ris, when that folder exists."""
+    package = pathlib.Path(__file__).resolve().parent
+    site = package.parent
+    if (site.name, site.parent.name, site.parent.parent.name) != ("dist-packages", "python3", "lib"):
+        return None
+    data = site.parents[2] / "share" / "ris" / "data"
+    return data if data.is_dir() else None
+
+
+# The installed tool finds its data beside itself (<prefix>/bin/../share);
+# an installed package does the same from its own place, unless RIS_DATA says.
+if not os.environ.get("RIS_DATA") and _installed_data_dir() is not None:
+    os.environ["RIS_DATA"] = str(_installed_data_dir())
+
+from . import _ris  # noqa: E402 (after RIS_DATA is set)
+from ._ris import InputError, InputFileNotFoundError  # noqa: E402
 
 __version__ = _ris.__version__
 __all__ = [
@@ -36,6 +55,7 @@ __all__ = [
     "Result",
     "load_scene",
     "load_radar",
+    "data_dir",
     "simulate",
     "sigma0",
     "list_models",
@@ -43,6 +63,7 @@ __all__ = [
     "permittivity",
     "Greytones",
     "greytone",
+    "TopoLayers",
     "topo",
     "quality",
     "compare",
@@ -305,7 +326,9 @@ class Radar:
         return cls.from_toml(_dict_to_toml(d), "<dict>")
 
     def info(self):
-        """The derived quantities of ``ris radar info`` (SI units in the key names)."""
+        """The derived quantities of ``ris radar info``, in its units: lengths
+        in metres (``_m``), angles in degrees (``_deg``: depression and
+        incidence near / far), as the command line prints them."""
         return self._impl.derived()
 
     def params(self):
@@ -318,6 +341,13 @@ class Radar:
 
     def __repr__(self):
         return f"<ris.Radar {self.path or ''}>"
+
+
+def data_dir():
+    """The folder of ris's shipped data (radars/, scenes/, backscatter/, ...):
+    $RIS_DATA, else <prefix>/share/ris/data of an installed package, else the
+    source tree's data/."""
+    return _ris._data_dir()
 
 
 def load_radar(path):
@@ -740,19 +770,25 @@ def greytone(mean_power_w, radar=None, seed=1, film=None, looks=None):
     return Greytones(_ris._greytone(impl, p, _seed(seed), _film_values(impl.film(), film), n))
 
 
-_TOPO_LAYERS = (
-    "lat_deg",
-    "lon_deg",
-    "height_m",
-    "incidence_deg",
-    "incidence_geocentric_deg",
-    "local_incidence_deg",
-    "look_deg",
-    "heading_deg",
-    "gamma_area_m2",
-    "simulated_amplitude",
-    "layover_shadow_mask",
-)
+class TopoLayers(dict):
+    """What ris.topo returns: a dict of the layers by the names of the files
+    ``ris topo`` writes, plus the unit (lat_deg: lat.tif, hgt_m: hgt.tif,
+    simamp: simamp.tif, ...).
+
+    The former keys ``simulated_amplitude`` (simamp) and ``height_m``
+    (hgt_m) still read their layer with a DeprecationWarning; they are not
+    listed among the keys."""
+
+    _RENAMED = {"simulated_amplitude": "simamp", "height_m": "hgt_m"}
+
+    def __missing__(self, key):
+        new = self._RENAMED.get(key)
+        if new is None:
+            raise KeyError(key)
+        _warnings.warn(f"ris.topo: the key {key!r} is now {new!r} (the file "
+                       f"{new.removesuffix('_m')}.tif)",
+                       DeprecationWarning, stacklevel=2)
+        return self[new]
 
 
 def topo(acquisition, dem, oversample=0, full_grid=False, threads=0, frequency="A", burst=None,
@@ -764,10 +800,10 @@ def topo(acquisition, dem, oversample=0, full_grid=False, threads=0, frequency="
     geographic WGS 84 (docs/geometry.md). Returns a dict of arrays shaped
     (lines, bins) of the window of the radar grid the DEM covers (the whole
     grid with ``full_grid=True``), the files ``ris topo`` writes: ``lat_deg``,
-    ``lon_deg`` (lat.tif, lon.tif, float64), ``height_m`` (hgt.tif),
+    ``lon_deg`` (lat.tif, lon.tif, float64), ``hgt_m`` (hgt.tif),
     ``incidence_deg``, ``incidence_geocentric_deg``, ``local_incidence_deg``,
     ``look_deg``, ``heading_deg``, ``gamma_area_m2`` (gamma_area.tif),
-    ``simulated_amplitude`` (simamp.tif), all float32 with NaN for no data,
+    ``simamp`` (simamp.tif), all float32 with NaN for no data,
     and ``layover_shadow_mask`` (uint8: 0 none, 1 shadow, 2 layover, 3 both);
     plus ``window`` (first line, lines, first bin, bins), ``grid_shape``
     (lines, bins of the whole grid), ``oversample``, ``beta_area_m2``,
@@ -775,8 +811,9 @@ def topo(acquisition, dem, oversample=0, full_grid=False, threads=0, frequency="
     """
     if burst is not None and (not isinstance(burst, numbers.Integral) or burst < 0):
         raise _error("burst", f"burst: expected a burst number from 0, got {burst!r}")
-    return _ris._topo(str(acquisition), str(dem), str(frequency), -1 if burst is None else int(burst),
-                      str(swath), int(oversample), bool(full_grid), int(threads))
+    return TopoLayers(_ris._topo(str(acquisition), str(dem), str(frequency),
+                                 -1 if burst is None else int(burst), str(swath), int(oversample),
+                                 bool(full_grid), int(threads)))
 
 
 def _optional_grid(value):
