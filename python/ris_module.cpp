@@ -18,6 +18,7 @@
 #include <cmath>
 #include <complex>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -39,6 +40,7 @@
 #include "ris/image/greytone_image.h"
 #include "ris/image/quality_report.h"
 #include "ris/image/slar_image.h"
+#include "ris/io/compression_preset.h"
 #include "ris/io/config_table.h"
 #include "ris/io/ellipsoidal_dem.h"
 #include "ris/io/toml_nesting.h"
@@ -52,6 +54,7 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_derived.h"
 #include "ris/sensor/radar_json.h"
+#include "ris/sim/acquisition_products.h"
 #include "ris/sim/point_target_irf.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/run.h"
@@ -238,8 +241,19 @@ nlohmann::json derived_in_degrees(const ris::RadarParams& radar) {
 struct PyResult {
   std::shared_ptr<ris::RunResult> res;
   std::vector<std::string> warnings;
+  std::filesystem::path out_dir;  // where the run wrote its products ("" none)
 
+  bool streamed() const { return res->kind == ris::RunKind::streamed; }
+  void require_in_memory() const {
+    if (streamed()) {
+      throw ris::InputError(res->info.scene_path, "stream",
+                            "a streamed run keeps no images in memory: its products are the "
+                            "files in " +
+                                out_dir.string() + " (read them with GDAL)");
+    }
+  }
   const ris::SlarSimulation& slar() const {
+    require_in_memory();
     if (!res->slar) {
       throw ris::InputError(res->info.radar_path, "mode",
                             "this product exists for SLAR and SAR runs only (a PPI run: use "
@@ -252,6 +266,7 @@ struct PyResult {
     return *res->slar_pictures;
   }
   const ris::PpiSimulation& ppi() const {
+    require_in_memory();
     if (!res->ppi) {
       throw ris::InputError(res->info.radar_path, "mode",
                             "this product exists for PPI runs only (a SLAR or SAR run: use "
@@ -263,9 +278,30 @@ struct PyResult {
     ppi();
     return *res->ppi_pictures;
   }
+  // A scene run's scene (an acquisition run has the product's radar grid
+  // instead).
+  const ris::Scene& scene() const {
+    slar();
+    if (res->acquisition) {
+      throw ris::InputError(res->info.scene_path, "acquisition",
+                            "an acquisition run has no scene grid: its products lie on the "
+                            "product's radar grid (mean_power_w, local_incidence_deg, "
+                            "layover_shadow_mask, ...)");
+    }
+    return *res->scene;
+  }
+  const ris::AcquisitionSimulation& acquisition() const {
+    slar();
+    if (!res->acquisition) {
+      throw ris::InputError(res->info.scene_path, "acquisition",
+                            "this product exists for acquisition runs only (a scene run: "
+                            "scene_mask, local_incidence_deg on the scene grid)");
+    }
+    return *res->acquisition;
+  }
   // The image of this run's slant-range products: the SLAR/SAR image or the
   // PPI's B-scope (rays as lines).
-  const ris::SlarImage& slant_image() const { return res->ppi ? res->ppi->bscope : slar().image; }
+  const ris::SlarImage& slant_image() const { return res->ppi ? ppi().bscope : slar().image; }
   std::vector<py::ssize_t> bscope_shape() const { return {ppi().bscope.lines, ppi().bscope.bins}; }
   std::vector<py::ssize_t> scope_shape() const {
     return {ppi().scope_grid.size, ppi().scope_grid.size};
@@ -274,9 +310,17 @@ struct PyResult {
   std::vector<py::ssize_t> ground_shape() const {
     return {slar().image.lines, slar().ground_grid.count};
   }
-  std::vector<py::ssize_t> scene_shape() const { return {res->scene->rows, res->scene->cols}; }
+  std::vector<py::ssize_t> scene_shape() const { return {scene().rows, scene().cols}; }
 
   nlohmann::json metadata() const {
+    if (streamed()) {  // written by the run, as the command line's
+      std::ifstream in(out_dir / "metadata.json");
+      return nlohmann::json::parse(in);
+    }
+    if (res->acquisition) {
+      return ris::acquisition_metadata(*res->acquisition, *res->slar, *res->slar_pictures,
+                                       res->info);
+    }
     if (res->kind == ris::RunKind::ppi) {
       return ris::ppi_metadata(*res->scene, *res->ppi, *res->ppi_pictures, res->info);
     }
@@ -287,22 +331,103 @@ struct PyResult {
     }
     return ris::slar_metadata(*res->scene, *res->slar, *res->slar_pictures, res->info, extra);
   }
+
+  // A streamed run's blocks and passes (`ris simulate --stream`'s report).
+  py::dict stream_summary() const {
+    if (!streamed()) {
+      throw ris::InputError(res->info.scene_path, "stream", "not a streamed run");
+    }
+    py::dict d;
+    if (res->ppi_streamed) {
+      const ris::PpiStreamSummary& p = *res->ppi_streamed;
+      d["blocks"] = p.blocks;
+      d["block_lines"] = p.block_rays;
+      d["scene_windows"] = p.windows;
+      d["stage_seconds"] = p.stage_seconds;
+      return d;
+    }
+    const ris::SlarStreamSummary& s = *res->streamed;
+    d["blocks"] = s.blocks;
+    d["block_lines"] = s.block_lines;
+    d["stage_seconds"] = s.stage_seconds;
+    return d;
+  }
 };
 
-PyResult simulate(const PyScene& scene, const PyRadar& radar, const std::string& backscatter,
-                  std::uint64_t seed, int threads, const std::string& targets,
-                  std::function<void(std::string, double)> progress) {
+// What a run is asked for beyond the scene and radar (`ris simulate`'s
+// options; python/ris/__init__.py fills it).
+struct PyRunOptions {
+  std::string scene_path;  // a streamed run reads its scene raster from here
+  std::string backscatter, targets;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  std::string out_dir;  // "" : nothing written
+  bool stream = false;
+  int block_lines = 0;
+  std::vector<std::string> products;
+  std::string compress = "fast";
+  bool overviews = true;
+  // An acquisition run (`--acquisition` and what goes with it).
+  std::string acquisition, frequency = "A", swath, dem, land_cover, earth;
+  int burst = -1;
+  int category = ris::AcquisitionSimOptions{}.category;
+  bool full_grid = false;
+};
+
+ris::RunRequest run_request(const PyScene* scene, const PyRadar& radar, const PyRunOptions& o) {
   ris::RunRequest r;
-  r.scene = scene.scene;
-  r.scene_path = scene.path;
+  if (scene != nullptr) {
+    r.scene = scene->scene;
+    r.scene_path = scene->path;
+  } else {
+    r.scene_path = o.scene_path;
+  }
   r.radar = radar.radar;
   r.radar_path = radar.radar.source_file;
-  r.backscatter_path = backscatter.empty() ? scene.library : backscatter;
-  r.targets_path = targets;
-  r.seed = seed;
-  r.threads = threads;
+  r.backscatter_path = !o.backscatter.empty() || scene == nullptr ? o.backscatter : scene->library;
+  r.targets_path = o.targets;
+  r.seed = o.seed;
+  r.threads = o.threads;
   r.quiet = true;
+  r.out_dir = o.out_dir;
+  r.stream = o.stream;
+  r.block_lines = o.block_lines;
+  r.products.stems = o.products;
+  r.compression = ris::parse_compression_preset(o.compress, "compress");
+  r.overviews = o.overviews;
+  if (!o.acquisition.empty()) {
+    r.acquisition_path = o.acquisition;
+    r.acquisition.frequency = o.frequency;
+    if (o.burst >= 0) r.acquisition.burst = o.burst;
+    r.acquisition.swath = o.swath;
+    r.dem_path = o.dem;
+    r.land_cover_path = o.land_cover;
+    if (o.category < 0 || o.category > ris::kMaxCategory) {
+      throw ris::InputError(
+          "", "category",
+          fmt::format("expected a category id 0..{}, got {}", ris::kMaxCategory, o.category));
+    }
+    r.category = static_cast<std::uint16_t>(o.category);
+    r.full_grid = o.full_grid;
+  }
+  if (!o.earth.empty()) {
+    if (o.earth != "flat" && o.earth != "ellipsoid") {
+      throw ris::InputError("", "earth",
+                            "expected \"flat\" or \"ellipsoid\", got \"" + o.earth + "\"");
+    }
+    r.earth = o.earth == "flat" ? ris::EarthModel::flat : ris::EarthModel::ellipsoid;
+  }
+  return r;
+}
+
+// run_simulation (ris/sim/run.h), the command line's run, with the GIL
+// released. scene: none for a streamed run (it reads o.scene_path) or an
+// acquisition run.
+PyResult run(const PyScene* scene, const PyRadar& radar, const PyRunOptions& o,
+             std::function<void(std::string, double)> progress) {
+  const ris::RunRequest r = run_request(scene, radar, o);
   PyResult out;
+  out.out_dir = r.out_dir;
   ris::RunCallbacks cb;
   cb.warning = [&out](const std::string& w) { out.warnings.push_back(w); };
   if (progress) {
@@ -732,17 +857,25 @@ void bind_result_slar(py::class_<PyResult>& c) {
       .def("local_incidence_deg",
            [](py::object self) {
              const PyResult& r = self.cast<const PyResult&>();
+             if (r.res->acquisition) {  // local_incidence.tif, on the radar grid
+               return view(r.acquisition().local_incidence_deg.data(), r.slant_shape(), self);
+             }
              return view(r.slar().scene_maps.local_incidence_deg.data(), r.scene_shape(), self);
+           })
+      .def("layover_shadow_mask",
+           [](py::object self) {
+             const PyResult& r = self.cast<const PyResult&>();
+             return view(r.acquisition().layover_shadow_mask.data(), r.slant_shape(), self);
            })
       .def("geocoded_power_w",
            [](const PyResult& r) {
              std::vector<float> g = ris::geocode_slant_image(
-                 *r.res->scene, r.slar().track, r.slar().image, r.pictures().speckled_power_w);
+                 r.scene(), r.slar().track, r.slar().image, r.pictures().speckled_power_w);
              return copy(g.data(), r.scene_shape());
            })
       .def("geocoded_grey", [](const PyResult& r) {
         std::vector<std::uint8_t> g = ris::geocode_slant_grey(
-            *r.res->scene, r.slar().track, r.slar().image, r.pictures().slant_grey);
+            r.scene(), r.slar().track, r.slar().image, r.pictures().slant_grey);
         return copy(g.data(), r.scene_shape());
       });
 }
@@ -840,13 +973,41 @@ void bind_result(py::module_& m) {
         })
       .def("film",
            [](const PyResult& r) {
+             r.require_in_memory();
              return film_list(r.res->slar ? r.res->slar->radar.film : r.res->ppi->radar.film);
            })
       .def("write", [](const PyResult& r, const std::string& dir) {
         py::gil_scoped_release nogil;
         return ris::write_run_products(*r.res, dir);
       });
-  m.def("_simulate", &simulate);
+  c.def_property_readonly("acquisition",
+                          [](const PyResult& r) { return r.res->acquisition != nullptr; })
+      .def_property_readonly("out_dir", [](const PyResult& r) { return r.out_dir.string(); })
+      .def("stream_summary", &PyResult::stream_summary);
+  py::class_<PyRunOptions>(m, "_RunOptions")
+      .def(py::init<>())
+      .def_readwrite("scene_path", &PyRunOptions::scene_path)
+      .def_readwrite("backscatter", &PyRunOptions::backscatter)
+      .def_readwrite("targets", &PyRunOptions::targets)
+      .def_readwrite("seed", &PyRunOptions::seed)
+      .def_readwrite("threads", &PyRunOptions::threads)
+      .def_readwrite("out_dir", &PyRunOptions::out_dir)
+      .def_readwrite("stream", &PyRunOptions::stream)
+      .def_readwrite("block_lines", &PyRunOptions::block_lines)
+      .def_readwrite("products", &PyRunOptions::products)
+      .def_readwrite("compress", &PyRunOptions::compress)
+      .def_readwrite("overviews", &PyRunOptions::overviews)
+      .def_readwrite("acquisition", &PyRunOptions::acquisition)
+      .def_readwrite("frequency", &PyRunOptions::frequency)
+      .def_readwrite("burst", &PyRunOptions::burst)
+      .def_readwrite("swath", &PyRunOptions::swath)
+      .def_readwrite("dem", &PyRunOptions::dem)
+      .def_readwrite("land_cover", &PyRunOptions::land_cover)
+      .def_readwrite("category", &PyRunOptions::category)
+      .def_readwrite("full_grid", &PyRunOptions::full_grid)
+      .def_readwrite("earth", &PyRunOptions::earth);
+  m.def("_run", &run, py::arg("scene").none(true), py::arg("radar"), py::arg("options"),
+        py::arg("progress").none(true));
 }
 
 void bind_backscatter(py::module_& m) {

@@ -57,6 +57,7 @@ __all__ = [
     "load_radar",
     "data_dir",
     "simulate",
+    "simulate_acquisition",
     "sigma0",
     "list_models",
     "DIELECTRIC_MODELS",
@@ -383,13 +384,25 @@ class Result:
     """One simulation. Products are numpy arrays: slant-range ones are
     lines x bins (near range first), ground-range ones lines x ground bins,
     scene-grid ones rows x cols of the scene. Powers in watts. A PPI run has
-    the bscope_* and scope_* arrays instead."""
+    the bscope_* and scope_* arrays instead; an acquisition run the
+    slant-range ones and its radar-grid layers; a streamed run none (its
+    products are the files in out_dir)."""
 
     def __init__(self, impl, scene):
         self._impl = impl
-        self.scene = scene
+        self.scene = scene  #: the Scene simulated (None: streamed or acquisition run)
 
-    kind = property(lambda self: self._impl.kind, doc="'slar', 'sar', 'coherent_sar' or 'ppi'.")
+    kind = property(lambda self: self._impl.kind,
+                    doc="'slar', 'sar', 'coherent_sar', 'ppi' or 'streamed'.")
+    acquisition = property(lambda self: self._impl.acquisition,
+                           doc="Whether the run was on an acquisition's radar grid.")
+    out_dir = property(lambda self: self._impl.out_dir or None,
+                       doc="The folder the run wrote its products into (out=), or None.")
+    stream_summary = property(lambda self: self._impl.stream_summary(),
+                              doc="A streamed run's blocks, block_lines and stage_seconds.")
+    layover_shadow_mask = property(lambda self: self._impl.layover_shadow_mask(),
+                                   doc="Acquisition run: 0 none, 1 shadow, 2 layover, 3 both on "
+                                       "the radar grid (layover_shadow_mask.tif; read-only view).")
     seed = property(lambda self: self._impl.seed, doc="The fading seed of the pictures.")
     warnings = property(lambda self: list(self._impl.warnings), doc="The run's warnings.")
     mean_power_w = property(lambda self: self._impl.mean_power_w(),
@@ -413,7 +426,9 @@ class Result:
     scene_mask = property(lambda self: self._impl.scene_mask(),
                           doc="Shadow/layover/... flags on the scene grid (scene_mask.tif).")
     local_incidence_deg = property(lambda self: self._impl.local_incidence_deg(),
-                                   doc="Local incidence (deg) on the scene grid, NaN where unseen.")
+                                   doc="Local incidence (deg) on the scene grid, NaN where unseen "
+                                       "(an acquisition run: on the radar grid, "
+                                       "local_incidence.tif).")
     geocoded_power_w = property(lambda self: self._impl.geocoded_power_w(),
                                 doc="Power after fading (W) on the scene grid (geocoded_power.tif).")
     geocoded_grey = property(lambda self: self._impl.geocoded_grey(),
@@ -481,6 +496,9 @@ class Result:
         frame), kind, seed, metadata (metadata.json as a JSON string).
         """
         xr = _xarray()
+        if self.scene is None:
+            raise _error("to_xarray", "to_xarray: for runs on a scene only (an acquisition run: "
+                                      "use the numpy arrays; a streamed run: the files in out_dir)")
         import json
         attrs = dict(_crs_attrs(self.scene.crs), kind=self.kind, seed=self.seed,
                      metadata=json.dumps(self.metadata))
@@ -553,10 +571,61 @@ def _seed(seed):
     return int(seed)
 
 
-def simulate(scene, radar, backscatter=None, seed=1, threads=0, targets=None, progress=None):
+def _as_radar(radar):
+    """A Radar from a Radar, a dict (Radar.from_dict) or a path; None: the
+    command line's default radar (data/radars/seed-fig4-5.toml)."""
+    if radar is None:
+        return Radar(_ris._default_radar())
+    if isinstance(radar, Radar):
+        return radar
+    if isinstance(radar, dict):
+        return Radar.from_dict(radar)
+    return load_radar(radar)
+
+
+def _count(name, value, what):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 0:
+        raise _error(name, f"{name}: expected {what}, got {value!r}")
+    return int(value)
+
+
+def _run_options(backscatter, seed, threads, targets, out, stream, block_lines, products,
+                 compress, overviews):
+    """The options every run takes (``ris simulate``'s), checked."""
+    o = _ris._RunOptions()
+    o.backscatter = "" if backscatter is None else str(backscatter)
+    o.seed = _seed(seed)
+    o.threads = _count("threads", threads, "0 (all cores) or more")
+    o.targets = "" if targets is None else str(targets)
+    o.block_lines = _count("block_lines", block_lines, "a number of lines (0: from the memory budget)")
+    o.stream = bool(stream) or o.block_lines > 0
+    if o.stream and out is None:
+        raise _error("out", "out: a streamed run writes its products while it runs: give out, "
+                            "the folder (as ris simulate --out)")
+    o.out_dir = "" if out is None else str(out)
+    if products is not None:
+        if isinstance(products, str) or not all(isinstance(p, str) for p in products):
+            raise _error("products", f"products: expected a list of file stems such as "
+                                     f"['mean_power_slant'], got {products!r}")
+        o.products = list(products)
+    o.compress = str(compress)
+    o.overviews = bool(overviews)
+    return o
+
+
+def _finish(impl, scene):
+    for w in impl.warnings:
+        _warnings.warn(w, stacklevel=3)
+    return Result(impl, scene)
+
+
+def simulate(scene, radar, backscatter=None, seed=1, threads=0, targets=None, progress=None,
+             out=None, stream=False, block_lines=0, products=None, compress="fast",
+             overviews=True):
     """Runs one simulation, as ``ris simulate`` does, with the GIL released.
 
-    scene: a Scene (or a path, loaded with load_scene).
+    scene: a Scene (or a path, loaded with load_scene); a streamed run
+        reads a scene raster (a path, or a Scene loaded from one) in blocks.
     radar: a Radar (or a path, or a dict for Radar.from_dict).
     backscatter: a category library (.toml) or sigma0 table (.csv) path;
         None: the library the scene names (scene.backscatter_library), else
@@ -564,21 +633,70 @@ def simulate(scene, radar, backscatter=None, seed=1, threads=0, targets=None, pr
     seed: fading seed; threads: OpenMP threads (0: all cores).
     targets: a point-target file (TOML, [[target]] tables), or None.
     progress: optional callable(stage: str, fraction_done: float).
+    out: a folder to write the products into as the run ends (``--out``);
+        None: none written (``result.write(folder)`` later).
+    stream, block_lines: stream the scene raster from its file in blocks of
+        azimuth lines (``--stream``, ``--block-lines N``; block_lines > 0
+        implies stream): bounded memory, the same bytes; needs ``out``, and
+        the result then holds no arrays (kind "streamed": read the files,
+        ``result.metadata``, ``result.stream_summary``).
+    products, compress, overviews: ``--products`` (a list of file stems),
+        ``--compress`` (fast, small, none), ``--no-overviews`` (False).
     """
+    o = _run_options(backscatter, seed, threads, targets, out, stream, block_lines, products,
+                     compress, overviews)
+    radar = _as_radar(radar)
+    if o.stream:
+        path = scene.path if isinstance(scene, Scene) else scene
+        if path is None or isinstance(path, (dict, Scene)):
+            raise _error("scene", "scene: a streamed run reads a scene raster from its file: give "
+                                  "its path (a Scene from arrays: write() it first)")
+        o.scene_path = str(path)
+        return _finish(_ris._run(None, radar._impl, o, progress), None)
     if not isinstance(scene, Scene):
         scene = load_scene(scene)
-    if isinstance(radar, dict):
-        radar = Radar.from_dict(radar)
-    elif not isinstance(radar, Radar):
-        radar = load_radar(radar)
-    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral) or threads < 0:
-        raise _error("threads", f"threads: expected 0 (all cores) or more, got {threads!r}")
-    impl = _ris._simulate(scene._impl, radar._impl, "" if backscatter is None else str(backscatter),
-                          _seed(seed), int(threads), "" if targets is None else str(targets),
-                          progress)
-    for w in impl.warnings:
-        _warnings.warn(w, stacklevel=2)
-    return Result(impl, scene)
+    return _finish(_ris._run(scene._impl, radar._impl, o, progress), scene)
+
+
+def simulate_acquisition(acquisition, dem, radar=None, frequency="A", burst=None, swath="",
+                         land_cover=None, category=1, full_grid=False, earth=None,
+                         backscatter=None, seed=1, threads=0, progress=None, out=None,
+                         stream=False, block_lines=0, products=None, compress="fast",
+                         overviews=True):
+    """A simulation on an acquisition's own radar grid, as ``ris simulate
+    --acquisition A --dem D`` (docs/geometry.md): the DEM's terrain imaged
+    with the product's orbit, lines and range bins.
+
+    acquisition: a NISAR RSLC .h5, a Sentinel-1 .SAFE (or its annotation
+        .xml) or a ris acquisition .toml; frequency ("A"/"B"), burst, swath:
+        which part of it (``--frequency``, ``--burst``, ``--swath``).
+    dem: the terrain, a DEM in geographic WGS 84 (``--dem``).
+    radar: a Radar, path or dict for the power, antenna, mode, film...
+        (None: the command line's default, seed-fig4-5.toml).
+    land_cover: a ris scene (.toml or raster) whose categories the terrain
+        takes; category: the terrain's one category otherwise (``--category``).
+    full_grid: the product's whole grid, not the DEM's window.
+    earth: "flat" or "ellipsoid" (None: the radar file's earth key, else the
+        ellipsoid).
+    The other arguments are simulate()'s. The result has the slant-range
+    arrays (mean_power_w, speckled_power_w, slant_grey, mask_slant, ground_*)
+    on the grid window and its radar-grid layers local_incidence_deg
+    (local_incidence.tif) and layover_shadow_mask; ``write()`` writes the
+    command line's files.
+    """
+    o = _run_options(backscatter, seed, threads, None, out, stream, block_lines, products,
+                     compress, overviews)
+    o.acquisition = str(acquisition)
+    o.dem = str(dem)
+    o.frequency = str(frequency)
+    if burst is not None:
+        o.burst = _count("burst", burst, "a burst number from 0")
+    o.swath = str(swath)
+    o.land_cover = "" if land_cover is None else str(land_cover)
+    o.category = _count("category", category, "a category id")
+    o.full_grid = bool(full_grid)
+    o.earth = "" if earth is None else str(earth)
+    return _finish(_ris._run(None, _as_radar(radar)._impl, o, progress), None)
 
 
 _sources = {}
