@@ -534,15 +534,15 @@ std::pair<py::array_t<std::complex<double>>, std::vector<std::string>> permittiv
   const std::optional<ris::DielectricModel> model = ris::parse_dielectric_model(model_name);
   if (!model) {
     throw ris::InputError("", "model",
-                          "unknown dielectric model \"" + model_name +
-                              "\" (known: dobson1985, hallikainen1985, mironov2009)");
+                          "unknown dielectric model \"" + model_name + "\" (known: " +
+                              ris::joined_names(ris::dielectric_model_names()) + ")");
   }
   const std::optional<ris::DobsonConductivity> conductivity =
       ris::parse_dobson_conductivity(conductivity_name);
   if (!conductivity) {
-    throw ris::InputError(
-        "", "conductivity",
-        "expected dobson1985 or peplinski1995, got \"" + conductivity_name + "\"");
+    throw ris::InputError("", "conductivity",
+                          "expected one of " + ris::joined_names(ris::dobson_conductivity_names()) +
+                              ", got \"" + conductivity_name + "\"");
   }
   RIS_CHECK(moisture_m3_m3.size() == frequency_hz.size());
   py::array_t<std::complex<double>> out(moisture_m3_m3.size());
@@ -1023,6 +1023,17 @@ void bind_backscatter(py::module_& m) {
   m.def("_category_sigma0", &category_sigma0);
   m.def("_model_sigma0", &model_sigma0);
   m.def("_permittivity", &permittivity);
+  // The dielectric registry's names (ris/backscatter/dielectric.h), in its order.
+  m.def("_dielectric_models", [] {
+    std::vector<std::string> out;
+    for (std::string_view n : ris::dielectric_model_names()) out.emplace_back(n);
+    return out;
+  });
+  m.def("_dobson_conductivities", [] {
+    std::vector<std::string> out;
+    for (std::string_view n : ris::dobson_conductivity_names()) out.emplace_back(n);
+    return out;
+  });
 }
 
 }  // namespace

@@ -762,7 +762,9 @@ def list_models():
     return dict(_ris._list_models())
 
 
-DIELECTRIC_MODELS = ("dobson1985", "hallikainen1985", "mironov2009")
+# The library's registry of dielectric models (ris/backscatter/dielectric.h),
+# the names `ris dielectric --model` takes.
+DIELECTRIC_MODELS = tuple(_ris._dielectric_models())
 
 
 def _fraction(name, value):
