@@ -18,11 +18,13 @@
 #include <cmath>
 #include <complex>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -38,6 +40,7 @@
 #include "ris/image/greytone_image.h"
 #include "ris/image/quality_report.h"
 #include "ris/image/slar_image.h"
+#include "ris/io/compression_preset.h"
 #include "ris/io/config_table.h"
 #include "ris/io/ellipsoidal_dem.h"
 #include "ris/io/toml_nesting.h"
@@ -51,6 +54,7 @@
 #include "ris/sensor/radar_config.h"
 #include "ris/sensor/radar_derived.h"
 #include "ris/sensor/radar_json.h"
+#include "ris/sim/acquisition_products.h"
 #include "ris/sim/point_target_irf.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/run.h"
@@ -67,11 +71,34 @@ namespace {
 PyObject* g_input_error = nullptr;    // ris.InputError(ValueError)
 PyObject* g_missing_error = nullptr;  // ris.InputFileNotFoundError(InputError, FileNotFoundError)
 
-// A missing input file is reported as a FileNotFoundError subclass, every
-// other bad input as ris.InputError; both carry the C++ message and the
-// file and key it names.
-void raise_input_error(const ris::InputError& e) {
-  const bool missing = !e.file().empty() && !std::filesystem::exists(e.file());
+// An error about text the bindings were handed rather than a file on disk
+// (a radar dict written as TOML, a model's parameters, a scene from arrays):
+// its "file" is a pseudo-name such as "<dict>", which is never missing.
+class TextInputError : public ris::InputError {
+ public:
+  explicit TextInputError(const ris::InputError& e) : ris::InputError(e) {}
+};
+
+// Runs f; an InputError naming `source` (the pseudo-file of the text being
+// read) comes out as a TextInputError, so it keeps the class InputError.
+template <typename F>
+auto reading_text(const std::string& source, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const TextInputError&) {
+    throw;
+  } catch (const ris::InputError& e) {
+    if (e.file() == source) throw TextInputError(e);
+    throw;
+  }
+}
+
+// A real input file that is not there is reported as
+// ris.InputFileNotFoundError (a FileNotFoundError subclass), every other bad
+// input as ris.InputError; both carry the C++ message and the file and key
+// it names.
+void raise_input_error(const ris::InputError& e, bool text_source) {
+  const bool missing = !text_source && !e.file().empty() && !std::filesystem::exists(e.file());
   PyObject* type = missing ? g_missing_error : g_input_error;
   py::object err = py::reinterpret_borrow<py::object>(type)(py::str(e.what()));
   err.attr("file") = e.file();
@@ -146,7 +173,7 @@ PyScene scene_from_arrays(py::array_t<float, py::array::c_style> elevation_m,
   s->elevation_m.assign(elevation_m.data(), elevation_m.data() + elevation_m.size());
   s->category.assign(category.data(), category.data() + category.size());
   s->valid.assign(valid.data(), valid.data() + valid.size());
-  s->validate("Scene.from_arrays");
+  reading_text("Scene.from_arrays", [&] { s->validate("Scene.from_arrays"); });
   return PyScene{std::move(s), "", "", ""};
 }
 
@@ -181,23 +208,52 @@ struct PyRadar {
 };
 
 PyRadar radar_from_text(const std::string& text, const std::string& source) {
-  toml::table doc;
-  ris::require_toml_nesting_within(text, ris::kMaxTomlNesting, source);
-  try {
-    doc = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw ris::InputError(source, "",
-                          "expected TOML: " + std::string(e.description()) + " at line " +
-                              std::to_string(e.source().begin.line));
+  return reading_text(source, [&] {
+    ris::require_toml_nesting_within(text, ris::kMaxTomlNesting, source);
+    toml::table doc;
+    try {
+      doc = toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+      throw ris::InputError(source, "",
+                            "expected TOML: " + std::string(e.description()) + " at line " +
+                                std::to_string(e.source().begin.line));
+    }
+    return PyRadar{ris::radar_from_toml(doc, source)};
+  });
+}
+
+// `ris radar info`'s derived quantities with its units: the angles it prints
+// in degrees (metadata.json's radar_derived keeps radians) become *_deg keys.
+nlohmann::json derived_in_degrees(const ris::RadarParams& radar) {
+  const nlohmann::json si = ris::derived_to_json(ris::derive(radar));
+  nlohmann::json out = nlohmann::json::object();
+  constexpr std::string_view kRad = "_rad";
+  for (const auto& [key, value] : si.items()) {
+    if (key.ends_with(kRad)) {
+      out[key.substr(0, key.size() - kRad.size()) + "_deg"] = ris::rad_to_deg(value.get<double>());
+    } else {
+      out[key] = value;
+    }
   }
-  return PyRadar{ris::radar_from_toml(doc, source)};
+  return out;
 }
 
 struct PyResult {
   std::shared_ptr<ris::RunResult> res;
   std::vector<std::string> warnings;
+  std::filesystem::path out_dir;  // where the run wrote its products ("" none)
 
+  bool streamed() const { return res->kind == ris::RunKind::streamed; }
+  void require_in_memory() const {
+    if (streamed()) {
+      throw ris::InputError(res->info.scene_path, "stream",
+                            "a streamed run keeps no images in memory: its products are the "
+                            "files in " +
+                                out_dir.string() + " (read them with GDAL)");
+    }
+  }
   const ris::SlarSimulation& slar() const {
+    require_in_memory();
     if (!res->slar) {
       throw ris::InputError(res->info.radar_path, "mode",
                             "this product exists for SLAR and SAR runs only (a PPI run: use "
@@ -210,6 +266,7 @@ struct PyResult {
     return *res->slar_pictures;
   }
   const ris::PpiSimulation& ppi() const {
+    require_in_memory();
     if (!res->ppi) {
       throw ris::InputError(res->info.radar_path, "mode",
                             "this product exists for PPI runs only (a SLAR or SAR run: use "
@@ -221,9 +278,30 @@ struct PyResult {
     ppi();
     return *res->ppi_pictures;
   }
+  // A scene run's scene (an acquisition run has the product's radar grid
+  // instead).
+  const ris::Scene& scene() const {
+    slar();
+    if (res->acquisition) {
+      throw ris::InputError(res->info.scene_path, "acquisition",
+                            "an acquisition run has no scene grid: its products lie on the "
+                            "product's radar grid (mean_power_w, local_incidence_deg, "
+                            "layover_shadow_mask, ...)");
+    }
+    return *res->scene;
+  }
+  const ris::AcquisitionSimulation& acquisition() const {
+    slar();
+    if (!res->acquisition) {
+      throw ris::InputError(res->info.scene_path, "acquisition",
+                            "this product exists for acquisition runs only (a scene run: "
+                            "scene_mask, local_incidence_deg on the scene grid)");
+    }
+    return *res->acquisition;
+  }
   // The image of this run's slant-range products: the SLAR/SAR image or the
   // PPI's B-scope (rays as lines).
-  const ris::SlarImage& slant_image() const { return res->ppi ? res->ppi->bscope : slar().image; }
+  const ris::SlarImage& slant_image() const { return res->ppi ? ppi().bscope : slar().image; }
   std::vector<py::ssize_t> bscope_shape() const { return {ppi().bscope.lines, ppi().bscope.bins}; }
   std::vector<py::ssize_t> scope_shape() const {
     return {ppi().scope_grid.size, ppi().scope_grid.size};
@@ -232,9 +310,17 @@ struct PyResult {
   std::vector<py::ssize_t> ground_shape() const {
     return {slar().image.lines, slar().ground_grid.count};
   }
-  std::vector<py::ssize_t> scene_shape() const { return {res->scene->rows, res->scene->cols}; }
+  std::vector<py::ssize_t> scene_shape() const { return {scene().rows, scene().cols}; }
 
   nlohmann::json metadata() const {
+    if (streamed()) {  // written by the run, as the command line's
+      std::ifstream in(out_dir / "metadata.json");
+      return nlohmann::json::parse(in);
+    }
+    if (res->acquisition) {
+      return ris::acquisition_metadata(*res->acquisition, *res->slar, *res->slar_pictures,
+                                       res->info);
+    }
     if (res->kind == ris::RunKind::ppi) {
       return ris::ppi_metadata(*res->scene, *res->ppi, *res->ppi_pictures, res->info);
     }
@@ -245,22 +331,103 @@ struct PyResult {
     }
     return ris::slar_metadata(*res->scene, *res->slar, *res->slar_pictures, res->info, extra);
   }
+
+  // A streamed run's blocks and passes (`ris simulate --stream`'s report).
+  py::dict stream_summary() const {
+    if (!streamed()) {
+      throw ris::InputError(res->info.scene_path, "stream", "not a streamed run");
+    }
+    py::dict d;
+    if (res->ppi_streamed) {
+      const ris::PpiStreamSummary& p = *res->ppi_streamed;
+      d["blocks"] = p.blocks;
+      d["block_lines"] = p.block_rays;
+      d["scene_windows"] = p.windows;
+      d["stage_seconds"] = p.stage_seconds;
+      return d;
+    }
+    const ris::SlarStreamSummary& s = *res->streamed;
+    d["blocks"] = s.blocks;
+    d["block_lines"] = s.block_lines;
+    d["stage_seconds"] = s.stage_seconds;
+    return d;
+  }
 };
 
-PyResult simulate(const PyScene& scene, const PyRadar& radar, const std::string& backscatter,
-                  std::uint64_t seed, int threads, const std::string& targets,
-                  std::function<void(std::string, double)> progress) {
+// What a run is asked for beyond the scene and radar (`ris simulate`'s
+// options; python/ris/__init__.py fills it).
+struct PyRunOptions {
+  std::string scene_path;  // a streamed run reads its scene raster from here
+  std::string backscatter, targets;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  std::string out_dir;  // "" : nothing written
+  bool stream = false;
+  int block_lines = 0;
+  std::vector<std::string> products;
+  std::string compress = "fast";
+  bool overviews = true;
+  // An acquisition run (`--acquisition` and what goes with it).
+  std::string acquisition, frequency = "A", swath, dem, land_cover, earth;
+  int burst = -1;
+  int category = ris::AcquisitionSimOptions{}.category;
+  bool full_grid = false;
+};
+
+ris::RunRequest run_request(const PyScene* scene, const PyRadar& radar, const PyRunOptions& o) {
   ris::RunRequest r;
-  r.scene = scene.scene;
-  r.scene_path = scene.path;
+  if (scene != nullptr) {
+    r.scene = scene->scene;
+    r.scene_path = scene->path;
+  } else {
+    r.scene_path = o.scene_path;
+  }
   r.radar = radar.radar;
   r.radar_path = radar.radar.source_file;
-  r.backscatter_path = backscatter.empty() ? scene.library : backscatter;
-  r.targets_path = targets;
-  r.seed = seed;
-  r.threads = threads;
+  r.backscatter_path = !o.backscatter.empty() || scene == nullptr ? o.backscatter : scene->library;
+  r.targets_path = o.targets;
+  r.seed = o.seed;
+  r.threads = o.threads;
   r.quiet = true;
+  r.out_dir = o.out_dir;
+  r.stream = o.stream;
+  r.block_lines = o.block_lines;
+  r.products.stems = o.products;
+  r.compression = ris::parse_compression_preset(o.compress, "compress");
+  r.overviews = o.overviews;
+  if (!o.acquisition.empty()) {
+    r.acquisition_path = o.acquisition;
+    r.acquisition.frequency = o.frequency;
+    if (o.burst >= 0) r.acquisition.burst = o.burst;
+    r.acquisition.swath = o.swath;
+    r.dem_path = o.dem;
+    r.land_cover_path = o.land_cover;
+    if (o.category < 0 || o.category > ris::kMaxCategory) {
+      throw ris::InputError(
+          "", "category",
+          fmt::format("expected a category id 0..{}, got {}", ris::kMaxCategory, o.category));
+    }
+    r.category = static_cast<std::uint16_t>(o.category);
+    r.full_grid = o.full_grid;
+  }
+  if (!o.earth.empty()) {
+    if (o.earth != "flat" && o.earth != "ellipsoid") {
+      throw ris::InputError("", "earth",
+                            "expected \"flat\" or \"ellipsoid\", got \"" + o.earth + "\"");
+    }
+    r.earth = o.earth == "flat" ? ris::EarthModel::flat : ris::EarthModel::ellipsoid;
+  }
+  return r;
+}
+
+// run_simulation (ris/sim/run.h), the command line's run, with the GIL
+// released. scene: none for a streamed run (it reads o.scene_path) or an
+// acquisition run.
+PyResult run(const PyScene* scene, const PyRadar& radar, const PyRunOptions& o,
+             std::function<void(std::string, double)> progress) {
+  const ris::RunRequest r = run_request(scene, radar, o);
   PyResult out;
+  out.out_dir = r.out_dir;
   ris::RunCallbacks cb;
   cb.warning = [&out](const std::string& w) { out.warnings.push_back(w); };
   if (progress) {
@@ -337,12 +504,17 @@ py::array_t<double> model_sigma0(const std::string& model_toml,
         "", "model",
         "expected model parameters as TOML key = value pairs: " + std::string(e.description()));
   }
-  ris::ConfigTable root(doc, "model", "");
-  std::optional<ris::ConfigTable> t = root.subtable("model");
-  ris::ModelContext ctx{"model", ".", allow_extrapolation, -1, nullptr};
-  std::unique_ptr<ris::BackscatterModel> model = ris::make_backscatter_model(*t, ctx);
-  const ris::RadarBand band = band_of(frequency_hz, polarisation);
-  model->check_band(band);
+  // "model" names the parameters given, not a file.
+  ris::RadarBand band;
+  const std::unique_ptr<ris::BackscatterModel> model = reading_text("model", [&] {
+    ris::ConfigTable root(doc, "model", "");
+    std::optional<ris::ConfigTable> t = root.subtable("model");
+    ris::ModelContext ctx{"model", ".", allow_extrapolation, -1, nullptr};
+    std::unique_ptr<ris::BackscatterModel> m = ris::make_backscatter_model(*t, ctx);
+    band = band_of(frequency_hz, polarisation);
+    m->check_band(band);
+    return m;
+  });
   py::array_t<double> out(incidence_rad.size());
   const double* in = incidence_rad.data();
   double* o = out.mutable_data();
@@ -362,15 +534,15 @@ std::pair<py::array_t<std::complex<double>>, std::vector<std::string>> permittiv
   const std::optional<ris::DielectricModel> model = ris::parse_dielectric_model(model_name);
   if (!model) {
     throw ris::InputError("", "model",
-                          "unknown dielectric model \"" + model_name +
-                              "\" (known: dobson1985, hallikainen1985, mironov2009)");
+                          "unknown dielectric model \"" + model_name + "\" (known: " +
+                              ris::joined_names(ris::dielectric_model_names()) + ")");
   }
   const std::optional<ris::DobsonConductivity> conductivity =
       ris::parse_dobson_conductivity(conductivity_name);
   if (!conductivity) {
-    throw ris::InputError(
-        "", "conductivity",
-        "expected dobson1985 or peplinski1995, got \"" + conductivity_name + "\"");
+    throw ris::InputError("", "conductivity",
+                          "expected one of " + ris::joined_names(ris::dobson_conductivity_names()) +
+                              ", got \"" + conductivity_name + "\"");
   }
   RIS_CHECK(moisture_m3_m3.size() == frequency_hz.size());
   py::array_t<std::complex<double>> out(moisture_m3_m3.size());
@@ -468,14 +640,14 @@ py::dict topo(const std::string& acquisition, const std::string& dem_path,
   py::dict d;
   d["lat_deg"] = copy(t.lat_deg.data(), shape);
   d["lon_deg"] = copy(t.lon_deg.data(), shape);
-  d["height_m"] = copy(t.height_m.data(), shape);
+  d["hgt_m"] = copy(t.height_m.data(), shape);
   d["incidence_deg"] = copy(t.incidence_deg.data(), shape);
   d["incidence_geocentric_deg"] = copy(t.incidence_geocentric_deg.data(), shape);
   d["local_incidence_deg"] = copy(t.local_incidence_deg.data(), shape);
   d["look_deg"] = copy(t.look_deg.data(), shape);
   d["heading_deg"] = copy(t.heading_deg.data(), shape);
   d["gamma_area_m2"] = copy(t.gamma_area_m2.data(), shape);
-  d["simulated_amplitude"] = copy(t.simulated_amplitude.data(), shape);
+  d["simamp"] = copy(t.simulated_amplitude.data(), shape);
   d["layover_shadow_mask"] = copy(t.mask.data(), shape);
   d["window"] = py::make_tuple(w.line0, w.lines, w.bin0, w.bins);
   d["grid_shape"] = py::make_tuple(acq.grid.lines, acq.grid.bins);
@@ -575,8 +747,10 @@ void bind_errors(py::module_& m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const TextInputError& e) {
+      raise_input_error(e, true);
     } catch (const ris::InputError& e) {
-      raise_input_error(e);
+      raise_input_error(e, false);
     }
   });
 }
@@ -625,10 +799,7 @@ void bind_radar(py::module_& m) {
   py::class_<PyRadar>(m, "_Radar")
       .def_property_readonly("source", [](const PyRadar& r) { return r.radar.source_file; })
       .def("params", [](const PyRadar& r) { return json_to_python(ris::radar_to_json(r.radar)); })
-      .def("derived",
-           [](const PyRadar& r) {
-             return json_to_python(ris::derived_to_json(ris::derive(r.radar)));
-           })
+      .def("derived", [](const PyRadar& r) { return json_to_python(derived_in_degrees(r.radar)); })
       .def("film", [](const PyRadar& r) { return film_list(r.radar.film); });
   m.def("_load_radar", [](const std::string& path) { return PyRadar{ris::load_radar(path)}; });
   m.def("_radar_from_toml", &radar_from_text);
@@ -686,17 +857,25 @@ void bind_result_slar(py::class_<PyResult>& c) {
       .def("local_incidence_deg",
            [](py::object self) {
              const PyResult& r = self.cast<const PyResult&>();
+             if (r.res->acquisition) {  // local_incidence.tif, on the radar grid
+               return view(r.acquisition().local_incidence_deg.data(), r.slant_shape(), self);
+             }
              return view(r.slar().scene_maps.local_incidence_deg.data(), r.scene_shape(), self);
+           })
+      .def("layover_shadow_mask",
+           [](py::object self) {
+             const PyResult& r = self.cast<const PyResult&>();
+             return view(r.acquisition().layover_shadow_mask.data(), r.slant_shape(), self);
            })
       .def("geocoded_power_w",
            [](const PyResult& r) {
              std::vector<float> g = ris::geocode_slant_image(
-                 *r.res->scene, r.slar().track, r.slar().image, r.pictures().speckled_power_w);
+                 r.scene(), r.slar().track, r.slar().image, r.pictures().speckled_power_w);
              return copy(g.data(), r.scene_shape());
            })
       .def("geocoded_grey", [](const PyResult& r) {
         std::vector<std::uint8_t> g = ris::geocode_slant_grey(
-            *r.res->scene, r.slar().track, r.slar().image, r.pictures().slant_grey);
+            r.scene(), r.slar().track, r.slar().image, r.pictures().slant_grey);
         return copy(g.data(), r.scene_shape());
       });
 }
@@ -794,13 +973,41 @@ void bind_result(py::module_& m) {
         })
       .def("film",
            [](const PyResult& r) {
+             r.require_in_memory();
              return film_list(r.res->slar ? r.res->slar->radar.film : r.res->ppi->radar.film);
            })
       .def("write", [](const PyResult& r, const std::string& dir) {
         py::gil_scoped_release nogil;
         return ris::write_run_products(*r.res, dir);
       });
-  m.def("_simulate", &simulate);
+  c.def_property_readonly("acquisition",
+                          [](const PyResult& r) { return r.res->acquisition != nullptr; })
+      .def_property_readonly("out_dir", [](const PyResult& r) { return r.out_dir.string(); })
+      .def("stream_summary", &PyResult::stream_summary);
+  py::class_<PyRunOptions>(m, "_RunOptions")
+      .def(py::init<>())
+      .def_readwrite("scene_path", &PyRunOptions::scene_path)
+      .def_readwrite("backscatter", &PyRunOptions::backscatter)
+      .def_readwrite("targets", &PyRunOptions::targets)
+      .def_readwrite("seed", &PyRunOptions::seed)
+      .def_readwrite("threads", &PyRunOptions::threads)
+      .def_readwrite("out_dir", &PyRunOptions::out_dir)
+      .def_readwrite("stream", &PyRunOptions::stream)
+      .def_readwrite("block_lines", &PyRunOptions::block_lines)
+      .def_readwrite("products", &PyRunOptions::products)
+      .def_readwrite("compress", &PyRunOptions::compress)
+      .def_readwrite("overviews", &PyRunOptions::overviews)
+      .def_readwrite("acquisition", &PyRunOptions::acquisition)
+      .def_readwrite("frequency", &PyRunOptions::frequency)
+      .def_readwrite("burst", &PyRunOptions::burst)
+      .def_readwrite("swath", &PyRunOptions::swath)
+      .def_readwrite("dem", &PyRunOptions::dem)
+      .def_readwrite("land_cover", &PyRunOptions::land_cover)
+      .def_readwrite("category", &PyRunOptions::category)
+      .def_readwrite("full_grid", &PyRunOptions::full_grid)
+      .def_readwrite("earth", &PyRunOptions::earth);
+  m.def("_run", &run, py::arg("scene").none(true), py::arg("radar"), py::arg("options"),
+        py::arg("progress").none(true));
 }
 
 void bind_backscatter(py::module_& m) {
@@ -816,6 +1023,17 @@ void bind_backscatter(py::module_& m) {
   m.def("_category_sigma0", &category_sigma0);
   m.def("_model_sigma0", &model_sigma0);
   m.def("_permittivity", &permittivity);
+  // The dielectric registry's names (ris/backscatter/dielectric.h), in its order.
+  m.def("_dielectric_models", [] {
+    std::vector<std::string> out;
+    for (std::string_view n : ris::dielectric_model_names()) out.emplace_back(n);
+    return out;
+  });
+  m.def("_dobson_conductivities", [] {
+    std::vector<std::string> out;
+    for (std::string_view n : ris::dobson_conductivity_names()) out.emplace_back(n);
+    return out;
+  });
 }
 
 }  // namespace
@@ -828,6 +1046,7 @@ PYBIND11_MODULE(_ris, m) {
   bind_radar(m);
   bind_result(m);
   bind_backscatter(m);
+  m.def("_data_dir", [] { return ris::data_dir().string(); });
   m.def("_topo", &topo);
   m.def("_quality", &quality);
   m.def("_compare", &compare);

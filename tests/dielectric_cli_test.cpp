@@ -3,7 +3,10 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "ris/backscatter/dielectric.h"
 #include "test_util.h"
 
 namespace ris {
@@ -73,6 +76,22 @@ TEST(DielectricCli, CsvAndPlotAreWritten) {
   const std::string bytes = test::read_file(png);
   ASSERT_GT(bytes.size(), 1000u);
   EXPECT_EQ(bytes.substr(1, 3), "PNG");
+}
+
+TEST(DielectricCli, ListsTheRegistrysModels) {
+  // `--model all` and the message for an unknown model name the library's
+  // registry (ris/backscatter/dielectric.h), in its order.
+  const auto r = run_ris("dielectric --model all --moisture 0.2 --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<std::string> listed;
+  for (const auto& series : nlohmann::json::parse(r.output)) listed.push_back(series["model"]);
+  std::vector<std::string> registry;
+  for (std::string_view n : dielectric_model_names()) registry.emplace_back(n);
+  EXPECT_EQ(listed, registry);
+  const auto bad = run_ris("dielectric --model topp1980");
+  EXPECT_NE(bad.output.find("(known: " + joined_names(dielectric_model_names()) + ", or all)"),
+            std::string::npos)
+      << bad.output;
 }
 
 TEST(DielectricCli, BadInputExitsNonZeroNamingTheProblem) {

@@ -72,15 +72,15 @@ struct Series {
 
 void run(const Options& o) {
   std::vector<ris::DielectricModel> models;
-  const std::vector<std::string> names =
-      o.models == "all" ? std::vector<std::string>{"dobson1985", "hallikainen1985", "mironov2009"}
-                        : split(o.models, ',');
-  for (const auto& n : names) {
+  if (o.models == "all") {  // the registry's, in its order
+    for (const auto& [name, model] : ris::dielectric_model_registry()) models.push_back(model);
+  }
+  for (const auto& n : o.models == "all" ? std::vector<std::string>{} : split(o.models, ',')) {
     const auto m = ris::parse_dielectric_model(n);
     if (!m) {
       throw InputError("", "--model",
-                       "unknown dielectric model \"" + n +
-                           "\" (known: dobson1985, hallikainen1985, mironov2009, or all)");
+                       "unknown dielectric model \"" + n + "\" (known: " +
+                           ris::joined_names(ris::dielectric_model_names()) + ", or all)");
     }
     models.push_back(*m);
   }
@@ -111,7 +111,8 @@ void run(const Options& o) {
       ris::parse_dobson_conductivity(o.conductivity);
   if (!conductivity) {
     throw InputError("", "--conductivity",
-                     "expected dobson1985 or peplinski1995, got \"" + o.conductivity + "\"");
+                     "expected one of " + ris::joined_names(ris::dobson_conductivity_names()) +
+                         ", got \"" + o.conductivity + "\"");
   }
 
   std::vector<Series> series;
@@ -225,7 +226,7 @@ void add_dielectric(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "dielectric", "Soil permittivity against moisture from the dielectric models (tables, plot)");
   cmd->add_option("--model,-m", opts->models,
-                  "dobson1985, hallikainen1985, mironov2009 (comma separated) or all")
+                  ris::joined_names(ris::dielectric_model_names()) + " (comma separated) or all")
       ->capture_default_str();
   cmd->add_option("--moisture", opts->moisture,
                   "Volumetric moisture in m3/m3: start:stop:step or a comma list")

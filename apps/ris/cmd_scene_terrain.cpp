@@ -20,16 +20,13 @@
 #include "command_registry.h"
 #include "ris/io/safe_paths.h"
 #include "ris/scene/dem_import.h"
-#include "ris/scene/fractal_noise.h"
-#include "ris/scene/fractal_terrain.h"
-#include "ris/scene/geo_frame.h"
+#include "ris/scene/fractal_scene.h"
 #include "ris/scene/landcover.h"
 #include "ris/scene/scene_io.h"
 #include "ris/scene/scene_source.h"
 #include "ris/util/error.h"
 #include "ris/util/path_exists.h"
 #include "ris/util/progress.h"
-#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 #include "seed_option.h"
 
@@ -104,21 +101,12 @@ void record_library(ris::RasterMetadata& metadata, const std::string& library,
 
 // Legend labels (RIS_CATEGORY_NAMES, ris/scene/scene_source.h) of the
 // categories a scene uses, from a library's names.
-ris::RasterMetadata category_labels(const std::string& scene_name,
-                                    const std::set<std::uint16_t>& used,
-                                    const std::map<std::string, std::uint16_t>& names) {
-  std::map<std::uint16_t, std::string> labels;
-  for (const auto& [name, id] : names)
-    if (used.count(id) != 0) labels[id] = name;
-  return ris::scene_label_metadata(scene_name, labels);
-}
-
 ris::RasterMetadata category_labels(const std::string& scene_name, const ris::Scene& scene,
                                     const std::map<std::string, std::uint16_t>& names) {
   std::set<std::uint16_t> used;
   for (std::size_t i = 0; i < scene.size(); ++i)
     if (scene.valid[i]) used.insert(scene.category[i]);
-  return category_labels(scene_name, used, names);
+  return ris::category_label_metadata(scene_name, used, names);
 }
 
 // ---- ris scene import --------------------------------------------------
@@ -241,8 +229,33 @@ std::pair<int, int> parse_size(const std::string& text) {
   return {cols, rows};
 }
 
-void run_fractal(const FractalArgs& args) {
-  ris::FractalParams p;
+ris::FractalGenerator parse_generator(const std::string& text) {
+  if (text == "auto") return ris::FractalGenerator::automatic;
+  if (text == "spectral") return ris::FractalGenerator::spectral;
+  if (text == "noise") return ris::FractalGenerator::noise;
+  throw ris::InputError("", "--generator",
+                        fmt::format("expected auto, spectral or noise, got \"{}\"", text));
+}
+
+// --centre LAT,LON in degrees.
+std::pair<double, double> parse_centre(const std::string& text) {
+  const auto parts = split_list(text);
+  double lat = NAN, lon = NAN;
+  if (parts.size() == 2) {
+    lat = parse_option(parts[0], ris::Quantity::dimensionless, "--centre");
+    lon = parse_option(parts[1], ris::Quantity::dimensionless, "--centre");
+  }
+  if (!(std::abs(lat) <= 90.0) || !(std::abs(lon) <= 180.0)) {
+    throw ris::InputError("", "--centre", "expected LAT,LON in degrees (e.g. --centre 46.5,8.0)");
+  }
+  return {lat, lon};
+}
+
+// The options as a request of ris/scene/fractal_scene.h (the library
+// checks the output and writes).
+ris::FractalSceneRequest fractal_request(const FractalArgs& args, const std::string& library) {
+  ris::FractalSceneRequest r;
+  ris::FractalParams& p = r.params;
   p.source = "ris scene fractal";
   std::tie(p.cols, p.rows) = parse_size(args.size);
   p.cell_m = parse_option(args.cell_size, ris::Quantity::length, "--cell-size");
@@ -250,104 +263,42 @@ void run_fractal(const FractalArgs& args) {
   p.base_m = parse_option(args.base, ris::Quantity::length, "--base");
   p.hurst = args.hurst;
   p.seed = args.seed;
-  const std::string library =
-      args.library.empty() ? ris::app::data_path(kDefaultLibrary) : args.library;
-  const auto names = names_if_present(library, !args.library.empty());
+  r.category_names = names_if_present(library, !args.library.empty());
   const bool default_category = args.category.empty() && args.patches.empty();
   p.category = ris::parse_category(args.category.empty() ? kDefaultCategoryName : args.category,
-                                   names, "--category");
+                                   r.category_names, "--category");
   if (default_category) say_default_category(library);
   for (const std::string& item : split_list(args.patches)) {
-    p.patch_categories.push_back(ris::parse_category(item, names, "--patches"));
+    p.patch_categories.push_back(ris::parse_category(item, r.category_names, "--patches"));
   }
   if (!p.patch_categories.empty()) {
     p.patch_size_m = parse_option(args.patch_size, ris::Quantity::length, "--patch-size");
   }
-  if (args.generator != "auto" && args.generator != "spectral" && args.generator != "noise") {
-    throw ris::InputError(
-        "", "--generator",
-        fmt::format("expected auto, spectral or noise, got \"{}\"", args.generator));
-  }
-  ris::check_fractal_params(p);
-  ris::require_safe_output_file(args.output, "--output");
-  // The file before any work: about 4 bytes a cell once compressed (a float
-  // elevation that compresses little, categories and mask that compress to
-  // almost nothing); --size 1000000 once ran silently towards 4 TB.
-  const std::int64_t cells = ris::checked_mul(p.rows, p.cols, "", "--size");
-  ris::require_disk(ris::checked_mul(cells, 4, "", "--size"),
-                    std::filesystem::absolute(args.output).parent_path(), "", "--size",
-                    fmt::format("a scene of {} x {} cells", p.cols, p.rows));
-  const bool noise =
-      args.generator == "noise" || (args.generator == "auto" && !ris::spectral_synthesis_fits(p));
-
-  // The grid in the local frame of Scene::flat, optionally placed on the
-  // Earth: centred on a latitude/longitude in the WGS 84 UTM zone there, on
-  // a grid aligned to whole cells.
-  ris::Scene grid;
-  grid.rows = p.rows;
-  grid.cols = p.cols;
-  grid.dx_m = grid.dy_m = p.cell_m;
-  grid.origin_y_m = p.rows * p.cell_m;
-  if (!args.centre.empty()) {
-    const auto parts = split_list(args.centre);
-    double lat = NAN, lon = NAN;
-    if (parts.size() == 2) {
-      lat = parse_option(parts[0], ris::Quantity::dimensionless, "--centre");
-      lon = parse_option(parts[1], ris::Quantity::dimensionless, "--centre");
-    }
-    if (!(std::abs(lat) <= 90.0) || !(std::abs(lon) <= 180.0)) {
-      throw ris::InputError("", "--centre", "expected LAT,LON in degrees (e.g. --centre 46.5,8.0)");
-    }
-    grid.crs_wkt = ris::utm_wkt_for(lon, lat);
-    auto [x, y] = ris::GeoFrame(grid.crs_wkt, "--centre").scene_from_lonlat(lon, lat);
-    grid.origin_x_m = std::round((x - 0.5 * grid.cols * p.cell_m) / p.cell_m) * p.cell_m;
-    grid.origin_y_m = std::round((y + 0.5 * grid.rows * p.cell_m) / p.cell_m) * p.cell_m;
-  }
-
-  std::string patch_list;
-  for (auto c : p.patch_categories)
-    patch_list += (patch_list.empty() ? "" : ",") + std::to_string(c);
-  ris::RasterMetadata metadata = {
-      {"RIS_GENERATOR", noise ? "ris scene fractal (fBm as octaves of value noise, streamed)"
-                              : "ris scene fractal (spectral synthesis of fBm)"},
-      {"RIS_FRACTAL", fmt::format("seed={} hurst={} relief_m={} base_m={} cell_m={} size={}x{}",
-                                  p.seed, p.hurst, p.relief_m, p.base_m, p.cell_m, p.cols, p.rows)},
-      {"RIS_FRACTAL_CATEGORIES",
-       patch_list.empty() ? std::to_string(p.category)
-                          : fmt::format("patches of {} m from {}", p.patch_size_m, patch_list)},
-      {"RIS_VERTICAL_DATUM", "local: elevation above the scene's flat datum"},
-      {"RIS_NODATA_CELLS", "0"},
-  };
-  record_library(metadata, library, names,
+  r.generator = parse_generator(args.generator);
+  if (!args.centre.empty()) r.centre_lat_lon_deg = parse_centre(args.centre);
+  record_library(r.metadata, library, r.category_names,
                  p.patch_categories.empty() ? std::set<std::uint16_t>{p.category}
                                             : std::set<std::uint16_t>(p.patch_categories.begin(),
                                                                       p.patch_categories.end()));
-  const std::string label = fmt::format("fractal terrain (seed {}, H = {})", p.seed, p.hurst);
+  return r;
+}
 
-  if (noise) {
-    // Made and written a block of rows at a time (ris/scene/fractal_noise.h):
-    // a scene of any size in bounded memory, tiled and ZSTD-compressed.
-    const ris::FractalNoise gen(p);
-    const std::set<std::uint16_t> used =
-        p.patch_categories.empty()
-            ? std::set<std::uint16_t>{p.category}
-            : std::set<std::uint16_t>(p.patch_categories.begin(), p.patch_categories.end());
-    for (auto& [k, v] : category_labels(label, used, names)) metadata[k] = v;
-    ris::SceneGeoTiffWriter out(args.output, grid, metadata, {"ZSTD", 1, 3, true});
-    constexpr int kBlockRows = 256;
-    const std::size_t n = std::size_t(kBlockRows) * std::size_t(p.cols);
-    std::vector<float> z(n);
-    std::vector<std::uint16_t> cat(n);
-    const std::vector<std::uint8_t> valid(n, 1);
-    ris::ProgressBar bar("scene fractal", p.rows, "rows", args.quiet);
-    for (int r0 = 0; r0 < p.rows; r0 += kBlockRows) {
-      const int rows = std::min(kBlockRows, p.rows - r0);
-      gen.rows(r0, rows, z.data(), cat.data());
-      out.write_rows(z.data(), cat.data(), valid.data(), rows);
-      bar.advance(rows);
-    }
-    out.close();
-    bar.finish();
+void run_fractal(const FractalArgs& args) {
+  const std::string library =
+      args.library.empty() ? ris::app::data_path(kDefaultLibrary) : args.library;
+  ris::FractalSceneRequest r = fractal_request(args, library);
+  const ris::FractalParams& p = r.params;
+  std::optional<ris::ProgressBar> bar;
+  if (ris::fractal_streams(r)) {  // made a block of rows at a time: show them
+    bar.emplace("scene fractal", p.rows, "rows", args.quiet);
+    r.rows_done = [&bar, done = 0](int rows) mutable {
+      bar->advance(rows - done);
+      done = rows;
+    };
+  }
+  const ris::FractalSceneWritten w = ris::write_fractal_scene(args.output, r);
+  if (w.streamed) {
+    bar->finish();
     fmt::print(
         "{}: {} x {} cells of {} m, heights {} to {} m, Hurst exponent {} (fBm as octaves "
         "of value noise, made in blocks of rows{}), seed {}\n",
@@ -355,20 +306,11 @@ void run_fractal(const FractalArgs& args) {
         args.generator == "auto" ? ": too large for spectral synthesis in memory" : "", p.seed);
     return;
   }
-
-  ris::Scene scene = ris::fractal_terrain(p);
-  scene.crs_wkt = grid.crs_wkt;
-  scene.origin_x_m = grid.origin_x_m;
-  scene.origin_y_m = grid.origin_y_m;
-  const int max_lag = std::min(64, std::min(p.rows, p.cols) / 8);
-  const double h_est = max_lag >= 16 ? ris::estimate_hurst(scene, 8, max_lag) : NAN;
-  for (auto& [k, v] : category_labels(label, scene, names)) metadata[k] = v;
-  ris::write_scene_geotiff(scene, args.output, metadata);
   fmt::print(
       "{}: {} x {} cells of {} m, heights {} to {} m, Hurst exponent {} (variogram "
       "estimate {:.2f}), seed {}\n",
-      args.output, p.cols, p.rows, p.cell_m, p.base_m, p.base_m + p.relief_m, p.hurst, h_est,
-      p.seed);
+      args.output, p.cols, p.rows, p.cell_m, p.base_m, p.base_m + p.relief_m, p.hurst,
+      w.hurst_estimate, p.seed);
 }
 
 void add_scene_terrain(CLI::App& app) {

@@ -18,14 +18,33 @@ Units are SI and carried in names: metres (``_m``), watts (``_w``), hertz
 
 import json
 import math
+import os
+import pathlib
 import re
 import numbers
 import warnings as _warnings
 
 import numpy as np
 
-from . import _ris
-from ._ris import InputError, InputFileNotFoundError
+
+def _installed_data_dir():
+    """<prefix>/share/ris/data for a package installed by ``cmake --install``
+    into <prefix>/lib/python3/dist-packages/ris, when that folder exists."""
+    package = pathlib.Path(__file__).resolve().parent
+    site = package.parent
+    if (site.name, site.parent.name, site.parent.parent.name) != ("dist-packages", "python3", "lib"):
+        return None
+    data = site.parents[2] / "share" / "ris" / "data"
+    return data if data.is_dir() else None
+
+
+# The installed tool finds its data beside itself (<prefix>/bin/../share);
+# an installed package does the same from its own place, unless RIS_DATA says.
+if not os.environ.get("RIS_DATA") and _installed_data_dir() is not None:
+    os.environ["RIS_DATA"] = str(_installed_data_dir())
+
+from . import _ris  # noqa: E402 (after RIS_DATA is set)
+from ._ris import InputError, InputFileNotFoundError  # noqa: E402
 
 __version__ = _ris.__version__
 __all__ = [
@@ -36,13 +55,16 @@ __all__ = [
     "Result",
     "load_scene",
     "load_radar",
+    "data_dir",
     "simulate",
+    "simulate_acquisition",
     "sigma0",
     "list_models",
     "DIELECTRIC_MODELS",
     "permittivity",
     "Greytones",
     "greytone",
+    "TopoLayers",
     "topo",
     "quality",
     "compare",
@@ -305,7 +327,9 @@ class Radar:
         return cls.from_toml(_dict_to_toml(d), "<dict>")
 
     def info(self):
-        """The derived quantities of ``ris radar info`` (SI units in the key names)."""
+        """The derived quantities of ``ris radar info``, in its units: lengths
+        in metres (``_m``), angles in degrees (``_deg``: depression and
+        incidence near / far), as the command line prints them."""
         return self._impl.derived()
 
     def params(self):
@@ -318,6 +342,13 @@ class Radar:
 
     def __repr__(self):
         return f"<ris.Radar {self.path or ''}>"
+
+
+def data_dir():
+    """The folder of ris's shipped data (radars/, scenes/, backscatter/, ...):
+    $RIS_DATA, else <prefix>/share/ris/data of an installed package, else the
+    source tree's data/."""
+    return _ris._data_dir()
 
 
 def load_radar(path):
@@ -353,13 +384,25 @@ class Result:
     """One simulation. Products are numpy arrays: slant-range ones are
     lines x bins (near range first), ground-range ones lines x ground bins,
     scene-grid ones rows x cols of the scene. Powers in watts. A PPI run has
-    the bscope_* and scope_* arrays instead."""
+    the bscope_* and scope_* arrays instead; an acquisition run the
+    slant-range ones and its radar-grid layers; a streamed run none (its
+    products are the files in out_dir)."""
 
     def __init__(self, impl, scene):
         self._impl = impl
-        self.scene = scene
+        self.scene = scene  #: the Scene simulated (None: streamed or acquisition run)
 
-    kind = property(lambda self: self._impl.kind, doc="'slar', 'sar', 'coherent_sar' or 'ppi'.")
+    kind = property(lambda self: self._impl.kind,
+                    doc="'slar', 'sar', 'coherent_sar', 'ppi' or 'streamed'.")
+    acquisition = property(lambda self: self._impl.acquisition,
+                           doc="Whether the run was on an acquisition's radar grid.")
+    out_dir = property(lambda self: self._impl.out_dir or None,
+                       doc="The folder the run wrote its products into (out=), or None.")
+    stream_summary = property(lambda self: self._impl.stream_summary(),
+                              doc="A streamed run's blocks, block_lines and stage_seconds.")
+    layover_shadow_mask = property(lambda self: self._impl.layover_shadow_mask(),
+                                   doc="Acquisition run: 0 none, 1 shadow, 2 layover, 3 both on "
+                                       "the radar grid (layover_shadow_mask.tif; read-only view).")
     seed = property(lambda self: self._impl.seed, doc="The fading seed of the pictures.")
     warnings = property(lambda self: list(self._impl.warnings), doc="The run's warnings.")
     mean_power_w = property(lambda self: self._impl.mean_power_w(),
@@ -383,7 +426,9 @@ class Result:
     scene_mask = property(lambda self: self._impl.scene_mask(),
                           doc="Shadow/layover/... flags on the scene grid (scene_mask.tif).")
     local_incidence_deg = property(lambda self: self._impl.local_incidence_deg(),
-                                   doc="Local incidence (deg) on the scene grid, NaN where unseen.")
+                                   doc="Local incidence (deg) on the scene grid, NaN where unseen "
+                                       "(an acquisition run: on the radar grid, "
+                                       "local_incidence.tif).")
     geocoded_power_w = property(lambda self: self._impl.geocoded_power_w(),
                                 doc="Power after fading (W) on the scene grid (geocoded_power.tif).")
     geocoded_grey = property(lambda self: self._impl.geocoded_grey(),
@@ -451,6 +496,9 @@ class Result:
         frame), kind, seed, metadata (metadata.json as a JSON string).
         """
         xr = _xarray()
+        if self.scene is None:
+            raise _error("to_xarray", "to_xarray: for runs on a scene only (an acquisition run: "
+                                      "use the numpy arrays; a streamed run: the files in out_dir)")
         import json
         attrs = dict(_crs_attrs(self.scene.crs), kind=self.kind, seed=self.seed,
                      metadata=json.dumps(self.metadata))
@@ -523,10 +571,61 @@ def _seed(seed):
     return int(seed)
 
 
-def simulate(scene, radar, backscatter=None, seed=1, threads=0, targets=None, progress=None):
+def _as_radar(radar):
+    """A Radar from a Radar, a dict (Radar.from_dict) or a path; None: the
+    command line's default radar (data/radars/seed-fig4-5.toml)."""
+    if radar is None:
+        return Radar(_ris._default_radar())
+    if isinstance(radar, Radar):
+        return radar
+    if isinstance(radar, dict):
+        return Radar.from_dict(radar)
+    return load_radar(radar)
+
+
+def _count(name, value, what):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 0:
+        raise _error(name, f"{name}: expected {what}, got {value!r}")
+    return int(value)
+
+
+def _run_options(backscatter, seed, threads, targets, out, stream, block_lines, products,
+                 compress, overviews):
+    """The options every run takes (``ris simulate``'s), checked."""
+    o = _ris._RunOptions()
+    o.backscatter = "" if backscatter is None else str(backscatter)
+    o.seed = _seed(seed)
+    o.threads = _count("threads", threads, "0 (all cores) or more")
+    o.targets = "" if targets is None else str(targets)
+    o.block_lines = _count("block_lines", block_lines, "a number of lines (0: from the memory budget)")
+    o.stream = bool(stream) or o.block_lines > 0
+    if o.stream and out is None:
+        raise _error("out", "out: a streamed run writes its products while it runs: give out, "
+                            "the folder (as ris simulate --out)")
+    o.out_dir = "" if out is None else str(out)
+    if products is not None:
+        if isinstance(products, str) or not all(isinstance(p, str) for p in products):
+            raise _error("products", f"products: expected a list of file stems such as "
+                                     f"['mean_power_slant'], got {products!r}")
+        o.products = list(products)
+    o.compress = str(compress)
+    o.overviews = bool(overviews)
+    return o
+
+
+def _finish(impl, scene):
+    for w in impl.warnings:
+        _warnings.warn(w, stacklevel=3)
+    return Result(impl, scene)
+
+
+def simulate(scene, radar, backscatter=None, seed=1, threads=0, targets=None, progress=None,
+             out=None, stream=False, block_lines=0, products=None, compress="fast",
+             overviews=True):
     """Runs one simulation, as ``ris simulate`` does, with the GIL released.
 
-    scene: a Scene (or a path, loaded with load_scene).
+    scene: a Scene (or a path, loaded with load_scene); a streamed run
+        reads a scene raster (a path, or a Scene loaded from one) in blocks.
     radar: a Radar (or a path, or a dict for Radar.from_dict).
     backscatter: a category library (.toml) or sigma0 table (.csv) path;
         None: the library the scene names (scene.backscatter_library), else
@@ -534,21 +633,70 @@ def simulate(scene, radar, backscatter=None, seed=1, threads=0, targets=None, pr
     seed: fading seed; threads: OpenMP threads (0: all cores).
     targets: a point-target file (TOML, [[target]] tables), or None.
     progress: optional callable(stage: str, fraction_done: float).
+    out: a folder to write the products into as the run ends (``--out``);
+        None: none written (``result.write(folder)`` later).
+    stream, block_lines: stream the scene raster from its file in blocks of
+        azimuth lines (``--stream``, ``--block-lines N``; block_lines > 0
+        implies stream): bounded memory, the same bytes; needs ``out``, and
+        the result then holds no arrays (kind "streamed": read the files,
+        ``result.metadata``, ``result.stream_summary``).
+    products, compress, overviews: ``--products`` (a list of file stems),
+        ``--compress`` (fast, small, none), ``--no-overviews`` (False).
     """
+    o = _run_options(backscatter, seed, threads, targets, out, stream, block_lines, products,
+                     compress, overviews)
+    radar = _as_radar(radar)
+    if o.stream:
+        path = scene.path if isinstance(scene, Scene) else scene
+        if path is None or isinstance(path, (dict, Scene)):
+            raise _error("scene", "scene: a streamed run reads a scene raster from its file: give "
+                                  "its path (a Scene from arrays: write() it first)")
+        o.scene_path = str(path)
+        return _finish(_ris._run(None, radar._impl, o, progress), None)
     if not isinstance(scene, Scene):
         scene = load_scene(scene)
-    if isinstance(radar, dict):
-        radar = Radar.from_dict(radar)
-    elif not isinstance(radar, Radar):
-        radar = load_radar(radar)
-    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral) or threads < 0:
-        raise _error("threads", f"threads: expected 0 (all cores) or more, got {threads!r}")
-    impl = _ris._simulate(scene._impl, radar._impl, "" if backscatter is None else str(backscatter),
-                          _seed(seed), int(threads), "" if targets is None else str(targets),
-                          progress)
-    for w in impl.warnings:
-        _warnings.warn(w, stacklevel=2)
-    return Result(impl, scene)
+    return _finish(_ris._run(scene._impl, radar._impl, o, progress), scene)
+
+
+def simulate_acquisition(acquisition, dem, radar=None, frequency="A", burst=None, swath="",
+                         land_cover=None, category=1, full_grid=False, earth=None,
+                         backscatter=None, seed=1, threads=0, progress=None, out=None,
+                         stream=False, block_lines=0, products=None, compress="fast",
+                         overviews=True):
+    """A simulation on an acquisition's own radar grid, as ``ris simulate
+    --acquisition A --dem D`` (docs/geometry.md): the DEM's terrain imaged
+    with the product's orbit, lines and range bins.
+
+    acquisition: a NISAR RSLC .h5, a Sentinel-1 .SAFE (or its annotation
+        .xml) or a ris acquisition .toml; frequency ("A"/"B"), burst, swath:
+        which part of it (``--frequency``, ``--burst``, ``--swath``).
+    dem: the terrain, a DEM in geographic WGS 84 (``--dem``).
+    radar: a Radar, path or dict for the power, antenna, mode, film...
+        (None: the command line's default, seed-fig4-5.toml).
+    land_cover: a ris scene (.toml or raster) whose categories the terrain
+        takes; category: the terrain's one category otherwise (``--category``).
+    full_grid: the product's whole grid, not the DEM's window.
+    earth: "flat" or "ellipsoid" (None: the radar file's earth key, else the
+        ellipsoid).
+    The other arguments are simulate()'s. The result has the slant-range
+    arrays (mean_power_w, speckled_power_w, slant_grey, mask_slant, ground_*)
+    on the grid window and its radar-grid layers local_incidence_deg
+    (local_incidence.tif) and layover_shadow_mask; ``write()`` writes the
+    command line's files.
+    """
+    o = _run_options(backscatter, seed, threads, None, out, stream, block_lines, products,
+                     compress, overviews)
+    o.acquisition = str(acquisition)
+    o.dem = str(dem)
+    o.frequency = str(frequency)
+    if burst is not None:
+        o.burst = _count("burst", burst, "a burst number from 0")
+    o.swath = str(swath)
+    o.land_cover = "" if land_cover is None else str(land_cover)
+    o.category = _count("category", category, "a category id")
+    o.full_grid = bool(full_grid)
+    o.earth = "" if earth is None else str(earth)
+    return _finish(_ris._run(None, _as_radar(radar)._impl, o, progress), None)
 
 
 _sources = {}
@@ -614,7 +762,9 @@ def list_models():
     return dict(_ris._list_models())
 
 
-DIELECTRIC_MODELS = ("dobson1985", "hallikainen1985", "mironov2009")
+# The library's registry of dielectric models (ris/backscatter/dielectric.h),
+# the names `ris dielectric --model` takes.
+DIELECTRIC_MODELS = tuple(_ris._dielectric_models())
 
 
 def _fraction(name, value):
@@ -740,19 +890,25 @@ def greytone(mean_power_w, radar=None, seed=1, film=None, looks=None):
     return Greytones(_ris._greytone(impl, p, _seed(seed), _film_values(impl.film(), film), n))
 
 
-_TOPO_LAYERS = (
-    "lat_deg",
-    "lon_deg",
-    "height_m",
-    "incidence_deg",
-    "incidence_geocentric_deg",
-    "local_incidence_deg",
-    "look_deg",
-    "heading_deg",
-    "gamma_area_m2",
-    "simulated_amplitude",
-    "layover_shadow_mask",
-)
+class TopoLayers(dict):
+    """What ris.topo returns: a dict of the layers by the names of the files
+    ``ris topo`` writes, plus the unit (lat_deg: lat.tif, hgt_m: hgt.tif,
+    simamp: simamp.tif, ...).
+
+    The former keys ``simulated_amplitude`` (simamp) and ``height_m``
+    (hgt_m) still read their layer with a DeprecationWarning; they are not
+    listed among the keys."""
+
+    _RENAMED = {"simulated_amplitude": "simamp", "height_m": "hgt_m"}
+
+    def __missing__(self, key):
+        new = self._RENAMED.get(key)
+        if new is None:
+            raise KeyError(key)
+        _warnings.warn(f"ris.topo: the key {key!r} is now {new!r} (the file "
+                       f"{new.removesuffix('_m')}.tif)",
+                       DeprecationWarning, stacklevel=2)
+        return self[new]
 
 
 def topo(acquisition, dem, oversample=0, full_grid=False, threads=0, frequency="A", burst=None,
@@ -764,10 +920,10 @@ def topo(acquisition, dem, oversample=0, full_grid=False, threads=0, frequency="
     geographic WGS 84 (docs/geometry.md). Returns a dict of arrays shaped
     (lines, bins) of the window of the radar grid the DEM covers (the whole
     grid with ``full_grid=True``), the files ``ris topo`` writes: ``lat_deg``,
-    ``lon_deg`` (lat.tif, lon.tif, float64), ``height_m`` (hgt.tif),
+    ``lon_deg`` (lat.tif, lon.tif, float64), ``hgt_m`` (hgt.tif),
     ``incidence_deg``, ``incidence_geocentric_deg``, ``local_incidence_deg``,
     ``look_deg``, ``heading_deg``, ``gamma_area_m2`` (gamma_area.tif),
-    ``simulated_amplitude`` (simamp.tif), all float32 with NaN for no data,
+    ``simamp`` (simamp.tif), all float32 with NaN for no data,
     and ``layover_shadow_mask`` (uint8: 0 none, 1 shadow, 2 layover, 3 both);
     plus ``window`` (first line, lines, first bin, bins), ``grid_shape``
     (lines, bins of the whole grid), ``oversample``, ``beta_area_m2``,
@@ -775,8 +931,9 @@ def topo(acquisition, dem, oversample=0, full_grid=False, threads=0, frequency="
     """
     if burst is not None and (not isinstance(burst, numbers.Integral) or burst < 0):
         raise _error("burst", f"burst: expected a burst number from 0, got {burst!r}")
-    return _ris._topo(str(acquisition), str(dem), str(frequency), -1 if burst is None else int(burst),
-                      str(swath), int(oversample), bool(full_grid), int(threads))
+    return TopoLayers(_ris._topo(str(acquisition), str(dem), str(frequency),
+                                 -1 if burst is None else int(burst), str(swath), int(oversample),
+                                 bool(full_grid), int(threads)))
 
 
 def _optional_grid(value):

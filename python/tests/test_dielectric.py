@@ -82,3 +82,16 @@ def test_bad_input_raises_naming_the_argument(kwargs, key):
     with pytest.raises(ris.InputError) as e:
         ris.permittivity(**args)
     assert e.value.key == key and str(e.value)
+
+
+def test_the_cli_python_and_the_library_list_the_same_models():
+    # ris.DIELECTRIC_MODELS is the library's registry (through the binding);
+    # `ris dielectric --model all` lists the same names in the same order.
+    cli = json.loads(run_cli("dielectric", "--model", "all", "--moisture", "0.2",
+                             "--format", "json").stdout)
+    assert tuple(s["model"] for s in cli) == ris.DIELECTRIC_MODELS
+    assert ris.DIELECTRIC_MODELS == ("dobson1985", "hallikainen1985", "mironov2009")
+    for name in ris.DIELECTRIC_MODELS:  # every name resolves
+        assert ris.permittivity(name, 0.2, 5.3e9).real > 1.0
+    with pytest.raises(ris.InputError, match="known: " + ", ".join(ris.DIELECTRIC_MODELS)):
+        ris.permittivity("topp1980", 0.2, 5.3e9)

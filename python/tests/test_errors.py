@@ -114,3 +114,28 @@ def test_bad_sigma0_arguments():
         ris.sigma0({"name": "no_such_model"}, [10], 8.6e9)
     with pytest.raises(ris.InputError, match="broadcast"):
         ris.sigma0(4, [10, 20, 30], [8.6e9, 9e9])
+
+
+def _only_input_error(call, match):
+    """call() raises ris.InputError and not its missing-file subclass."""
+    with pytest.raises(ris.InputError, match=match) as e:
+        call()
+    assert not isinstance(e.value, FileNotFoundError), e.value
+    return e.value
+
+
+def test_bad_values_keep_the_class_input_error(tmp_path):
+    # The text's pseudo-file ("<dict>", the source named, "model") is not on
+    # disk, and is not a missing file either.
+    e = _only_input_error(lambda: ris.Radar.from_dict(dict(SMALL_RADAR, frequency="8.6 parsecs")),
+                          "frequency")
+    assert e.file == "<dict>" and e.key == "frequency"
+    _only_input_error(lambda: ris.Radar.from_toml("frequency = 3", source=str(tmp_path / "r.toml")),
+                      "")
+    _only_input_error(lambda: ris.Radar.from_toml("frequency = "), "expected TOML")
+    _only_input_error(lambda: ris.sigma0({"name": "oh1992", "rms_height": "1 parsec",
+                                          "permittivity": "15 - 4j"}, [30.0], 5.3e9, "HH"),
+                      "rms_height")
+    # A real file that is not there is still the subclass.
+    with pytest.raises(ris.InputFileNotFoundError):
+        ris.load_radar(tmp_path / "r.toml")

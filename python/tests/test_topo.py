@@ -13,14 +13,14 @@ DEMS = SOURCE_DIR / "tests" / "data" / "dem"
 FILES = {
     "lat_deg": "lat.tif",
     "lon_deg": "lon.tif",
-    "height_m": "hgt.tif",
+    "hgt_m": "hgt.tif",
     "incidence_deg": "incidence.tif",
     "incidence_geocentric_deg": "incidence_geocentric.tif",
     "local_incidence_deg": "local_incidence.tif",
     "look_deg": "look.tif",
     "heading_deg": "heading.tif",
     "gamma_area_m2": "gamma_area.tif",
-    "simulated_amplitude": "simamp.tif",
+    "simamp": "simamp.tif",
     "layover_shadow_mask": "layover_shadow_mask.tif",
 }
 
@@ -51,3 +51,16 @@ def test_topo_bad_input_names_the_key():
     assert e.value.key == "threads"
     with pytest.raises(ris.InputFileNotFoundError):
         ris.topo(acq, DEMS / "no-such-dem.tif")
+
+
+def test_topo_keys_are_the_file_names_and_the_old_key_is_deprecated():
+    t = ris.topo(REAL / "winnipeg.h5", DEMS / "winnipeg_dem.tif")
+    # One name per product: each layer's key is its file's stem (plus the unit).
+    for key, name in FILES.items():
+        assert key == name[:-len(".tif")] or key.startswith(name[:-len(".tif")] + "_"), key
+    assert "simulated_amplitude" not in t
+    with pytest.warns(DeprecationWarning, match="simamp"):
+        old = t["simulated_amplitude"]
+    assert old is t["simamp"]
+    with pytest.raises(KeyError):
+        t["no_such_layer"]

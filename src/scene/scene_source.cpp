@@ -28,6 +28,15 @@ std::map<std::string, std::string> scene_label_metadata(
   return out;
 }
 
+std::map<std::string, std::string> category_label_metadata(
+    const std::string& name, const std::set<std::uint16_t>& used,
+    const std::map<std::string, std::uint16_t>& library_names) {
+  std::map<std::uint16_t, std::string> labels;
+  for (const auto& [label, id] : library_names)
+    if (used.count(id) != 0) labels[id] = label;
+  return scene_label_metadata(name, labels);
+}
+
 std::map<std::string, std::string> backscatter_library_metadata(const std::string& library) {
   namespace fs = std::filesystem;
   std::error_code ec;

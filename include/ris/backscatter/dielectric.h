@@ -14,8 +14,10 @@
 
 #include <complex>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace ris {
@@ -38,6 +40,20 @@ struct SoilComposition {
   DobsonConductivity conductivity = DobsonConductivity::dobson1985;  // (Dobson only)
 };
 
+// The one registry of the dielectric models' names, in the order they are
+// listed: the radar/library TOML key `model`, `ris dielectric --model`, its
+// "all", and Python's ris.DIELECTRIC_MODELS all read it. A new model is a
+// file under src/backscatter/dielectric/, an enum value and a line here.
+std::span<const std::pair<std::string_view, DielectricModel>> dielectric_model_registry();
+// The registry's names: "dobson1985", "hallikainen1985", "mironov2009".
+std::vector<std::string_view> dielectric_model_names();
+// The same for Dobson 1985's conductivity fits.
+std::span<const std::pair<std::string_view, DobsonConductivity>> dobson_conductivity_registry();
+std::vector<std::string_view> dobson_conductivity_names();
+// Names joined for a message or a help text: "dobson1985, hallikainen1985, mironov2009".
+std::string joined_names(const std::vector<std::string_view>& names);
+
+// A name of the registry (exact, as listed); nullopt otherwise.
 std::optional<DielectricModel> parse_dielectric_model(std::string_view name);
 std::string_view to_string(DielectricModel m);
 std::optional<DobsonConductivity> parse_dobson_conductivity(std::string_view name);

@@ -15,8 +15,10 @@
 #include <cstdint>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -83,6 +85,18 @@ class ConfigTable {
   E get_enum_or(const std::string& key, EnumChoices<E> choices, E fallback) {
     return has(key) ? get_enum(key, choices) : fallback;
   }
+  // The same from a registry kept elsewhere (a table of names that other
+  // lists read too, e.g. ris/backscatter/dielectric.h's).
+  template <typename E>
+  E get_registered_enum(const std::string& key,
+                        std::span<const std::pair<std::string_view, E>> registry) {
+    return enum_from(key, get_string(key), registry);
+  }
+  template <typename E>
+  E get_registered_enum_or(const std::string& key,
+                           std::span<const std::pair<std::string_view, E>> registry, E fallback) {
+    return has(key) ? get_registered_enum(key, registry) : fallback;
+  }
 
   // Optional values: return the default (or nullopt) when absent.
   double get_double_or(const std::string& key, double fallback);
@@ -114,8 +128,10 @@ class ConfigTable {
 
  private:
   const toml::node& require(const std::string& key);
-  template <typename E>
-  E enum_from(const std::string& key, const std::string& text, EnumChoices<E> choices) const {
+  // choices: pairs (text, value), an EnumChoices or a registry's span.
+  template <typename Choices>
+  auto enum_from(const std::string& key, const std::string& text, const Choices& choices) const
+      -> std::remove_cvref_t<decltype(choices.begin()->second)> {
     // Without regard to case, as polarisations are ("Right" is "right").
     std::vector<std::string_view> texts;
     std::vector<std::string> names;

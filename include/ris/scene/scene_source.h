@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "ris/scene/scene.h"
@@ -48,6 +49,12 @@ std::string scene_backscatter_library(const std::string& scene_path);
 // The metadata items above for a name and labels (empty ones left out).
 std::map<std::string, std::string> scene_label_metadata(
     const std::string& name, const std::map<std::uint16_t, std::string>& category_names);
+
+// The same with the labels of the categories `used` taken from a library's
+// names (name -> id; the ids it lacks go unlabelled).
+std::map<std::string, std::string> category_label_metadata(
+    const std::string& name, const std::set<std::uint16_t>& used,
+    const std::map<std::string, std::uint16_t>& library_names);
 
 // Whether a path names a scene description (extension .toml, any case).
 bool is_scene_description(const std::string& path);

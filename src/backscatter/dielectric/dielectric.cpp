@@ -1,38 +1,84 @@
-// The table of dielectric models by name, and their validity ranges (each
-// model's file states its range and source).
+// The registry of dielectric models by name (the one table every list of
+// their names reads), and their validity ranges (each model's file states its
+// range and source).
 #include "ris/backscatter/dielectric.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace ris {
 
-std::optional<DielectricModel> parse_dielectric_model(std::string_view name) {
-  if (name == "dobson1985") return DielectricModel::dobson1985;
-  if (name == "hallikainen1985") return DielectricModel::hallikainen1985;
-  if (name == "mironov2009") return DielectricModel::mironov2009;
+namespace {
+
+constexpr std::pair<std::string_view, DielectricModel> kDielectricModels[] = {
+    {"dobson1985", DielectricModel::dobson1985},
+    {"hallikainen1985", DielectricModel::hallikainen1985},
+    {"mironov2009", DielectricModel::mironov2009},
+};
+
+constexpr std::pair<std::string_view, DobsonConductivity> kDobsonConductivities[] = {
+    {"dobson1985", DobsonConductivity::dobson1985},
+    {"peplinski1995", DobsonConductivity::peplinski1995},
+};
+
+template <typename E>
+std::vector<std::string_view> names_of(std::span<const std::pair<std::string_view, E>> table) {
+  std::vector<std::string_view> out;
+  for (const auto& [name, value] : table) out.push_back(name);
+  return out;
+}
+
+template <typename E>
+std::optional<E> find_name(std::span<const std::pair<std::string_view, E>> table,
+                           std::string_view name) {
+  for (const auto& [n, value] : table)
+    if (n == name) return value;
   return std::nullopt;
 }
 
-std::string_view to_string(DielectricModel m) {
-  switch (m) {
-    case DielectricModel::dobson1985:
-      return "dobson1985";
-    case DielectricModel::hallikainen1985:
-      return "hallikainen1985";
-    case DielectricModel::mironov2009:
-      return "mironov2009";
-  }
+template <typename E>
+std::string_view name_of(std::span<const std::pair<std::string_view, E>> table, E value) {
+  for (const auto& [n, v] : table)
+    if (v == value) return n;
   return "?";
 }
 
+}  // namespace
+
+std::span<const std::pair<std::string_view, DielectricModel>> dielectric_model_registry() {
+  return kDielectricModels;
+}
+
+std::vector<std::string_view> dielectric_model_names() {
+  return names_of(dielectric_model_registry());
+}
+
+std::span<const std::pair<std::string_view, DobsonConductivity>> dobson_conductivity_registry() {
+  return kDobsonConductivities;
+}
+
+std::vector<std::string_view> dobson_conductivity_names() {
+  return names_of(dobson_conductivity_registry());
+}
+
+std::string joined_names(const std::vector<std::string_view>& names) {
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+std::optional<DielectricModel> parse_dielectric_model(std::string_view name) {
+  return find_name(dielectric_model_registry(), name);
+}
+
+std::string_view to_string(DielectricModel m) {
+  return name_of(dielectric_model_registry(), m);
+}
+
 std::optional<DobsonConductivity> parse_dobson_conductivity(std::string_view name) {
-  if (name == "dobson1985") return DobsonConductivity::dobson1985;
-  if (name == "peplinski1995") return DobsonConductivity::peplinski1995;
-  return std::nullopt;
+  return find_name(dobson_conductivity_registry(), name);
 }
 
 std::string_view to_string(DobsonConductivity c) {
-  return c == DobsonConductivity::dobson1985 ? "dobson1985" : "peplinski1995";
+  return name_of(dobson_conductivity_registry(), c);
 }
 
 std::complex<double> soil_permittivity(DielectricModel m, const SoilComposition& soil,

@@ -3,10 +3,44 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string_view>
+#include <vector>
 
 namespace ris {
 namespace {
+
+TEST(DielectricRegistry, EveryNameResolvesToItsOwnModelAndBack) {
+  // One table of names: each parses to a distinct model that prints as the
+  // same name, and every model of the enum is listed (a new model left out of
+  // the registry fails here).
+  const std::vector<std::string_view> names = dielectric_model_names();
+  ASSERT_EQ(names, (std::vector<std::string_view>{"dobson1985", "hallikainen1985", "mironov2009"}));
+  std::vector<DielectricModel> seen;
+  const SoilComposition loam{0.2, 0.2, 0.4};
+  for (std::string_view name : names) {
+    const std::optional<DielectricModel> m = parse_dielectric_model(name);
+    ASSERT_TRUE(m) << name;
+    EXPECT_EQ(to_string(*m), name);
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), *m), 0) << name;
+    seen.push_back(*m);
+    EXPECT_GT(soil_permittivity(*m, loam, 5.3e9).real(), 1.0) << name;
+  }
+  for (DielectricModel m : {DielectricModel::dobson1985, DielectricModel::hallikainen1985,
+                            DielectricModel::mironov2009}) {
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), m), 1) << to_string(m);
+  }
+  EXPECT_FALSE(parse_dielectric_model("topp1980"));
+  EXPECT_EQ(joined_names(names), "dobson1985, hallikainen1985, mironov2009");
+  EXPECT_EQ(dobson_conductivity_names(),
+            (std::vector<std::string_view>{"dobson1985", "peplinski1995"}));
+  for (std::string_view name : dobson_conductivity_names()) {
+    ASSERT_TRUE(parse_dobson_conductivity(name)) << name;
+    EXPECT_EQ(to_string(*parse_dobson_conductivity(name)), name);
+  }
+}
 
 TEST(Mironov2009, ReferenceImplementationValue) {
   // mv = 0.25, clay 30 %, 5.405 GHz: 11.24897 - 2.52547j, the value the

@@ -108,6 +108,34 @@ TEST(SoilPermittivityTable, Mironov2009NeedsNoSandTheOthersDo) {
   }
 }
 
+TEST(SoilPermittivityTable, EveryRegisteredModelIsAcceptedAndAnUnknownOneListsThemAll) {
+  // The TOML key `model` reads the registry (ris/backscatter/dielectric.h):
+  // each name gives that model's sigma0, and a wrong one is told every name.
+  const RadarBand band{5.405e9, Polarisation::VV};
+  std::vector<double> sigma0s;
+  for (const auto& [name, id] : dielectric_model_registry()) {
+    auto m =
+        model(std::string(R"(name = "oh1992", rms_height = "1 cm", permittivity = { model = ")") +
+              std::string(name) + R"(", moisture = 0.2, clay = 0.19, sand = 0.4 })");
+    sigma0s.push_back(m->sigma0(deg_to_rad(30.0), band));
+    EXPECT_TRUE(std::isfinite(sigma0s.back()) && sigma0s.back() > 0.0) << name;
+  }
+  ASSERT_EQ(sigma0s.size(), 3u);
+  EXPECT_NE(sigma0s[0], sigma0s[1]);  // each name reaches its own model
+  EXPECT_NE(sigma0s[1], sigma0s[2]);
+  try {
+    model(
+        R"(name = "oh1992", rms_height = "1 cm", permittivity = { model = "topp1980", moisture = 0.2, clay = 0.19, sand = 0.4 })");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "m.permittivity.model");
+    for (std::string_view name : dielectric_model_names()) {
+      EXPECT_NE(std::string(e.what()).find("\"" + std::string(name) + "\""), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(SoilPermittivityTable, DobsonConductivityKey) {
   // The key selects the effective-conductivity fit in Dobson 1985's loss term;
   // it changes eps'' only, so a model that reads |eps| (Oh 1992's Fresnel

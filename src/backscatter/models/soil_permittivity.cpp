@@ -42,10 +42,7 @@ SoilPermittivity read_soil_permittivity(ConfigTable& params, const std::string& 
   }
   std::optional<ConfigTable> t = params.subtable(key);
   if (!t) params.fail(key, "expected \"eps' - eps''j\" (e.g. \"15 - 4j\") or a dielectric table");
-  const DielectricModel model =
-      t->get_enum<DielectricModel>("model", {{"dobson1985", DielectricModel::dobson1985},
-                                             {"hallikainen1985", DielectricModel::hallikainen1985},
-                                             {"mironov2009", DielectricModel::mironov2009}});
+  const DielectricModel model = t->get_registered_enum("model", dielectric_model_registry());
   SoilComposition soil;
   soil.moisture_m3_m3 = t->get_double("moisture");
   soil.clay_fraction = t->get_double("clay");
@@ -68,11 +65,8 @@ SoilPermittivity read_soil_permittivity(ConfigTable& params, const std::string& 
   if (model == DielectricModel::dobson1985) {
     soil.bulk_density_g_cm3 = t->get_double_or("bulk_density", soil.bulk_density_g_cm3);
     soil.temperature_c = t->get_double_or("temperature", soil.temperature_c);
-    soil.conductivity =
-        t->get_enum_or<DobsonConductivity>("conductivity",
-                                           {{"dobson1985", DobsonConductivity::dobson1985},
-                                            {"peplinski1995", DobsonConductivity::peplinski1995}},
-                                           DobsonConductivity::dobson1985);
+    soil.conductivity = t->get_registered_enum_or("conductivity", dobson_conductivity_registry(),
+                                                  DobsonConductivity::dobson1985);
     if (!(soil.bulk_density_g_cm3 > 0.0 && soil.bulk_density_g_cm3 < 2.66)) {
       t->fail("bulk_density", "expected a dry bulk density in (0, 2.66) g/cm3");
     }
