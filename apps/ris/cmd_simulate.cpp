@@ -240,8 +240,12 @@ void add_simulate(CLI::App& app) {
                   "default: all; metadata.json always)")
       ->delimiter(',');
   cmd->add_flag("--overviews,!--no-overviews", r.overviews,
-                "Internal overviews on products of 4096^2 pixels or more, so a GIS opens them at "
-                "any zoom (default; --no-overviews: none, a faster write)");
+                "Internal overviews on products larger than one 256-pixel tile, so a GIS opens "
+                "them at any zoom (default; --no-overviews: none, a faster write)");
+  cmd->add_option("--geocode-resampling", r.geocode_resampling,
+                  "Geocoded products' resampling, as gdalwarp -r: near (default: each cell "
+                  "takes the pixel it falls in) or bilinear (in-memory runs)")
+      ->capture_default_str();
   cmd->add_option("--compress", args->compress,
                   "Compression: fast (default), small (smallest files, slower), none")
       ->capture_default_str();

@@ -64,12 +64,35 @@ struct GeoTiffBlockWriter<T>::Impl {
 
 namespace {
 
-// Overview factors 2, 4, 8, ... while the overview keeps >= 256 pixels on
-// its longer side.
+// Overview factors 2, 4, 8, ... until the overview fits in one 256-pixel
+// tile (gdaladdo's default levels, its --minsize 256).
 std::vector<int> overview_levels(int cols, int rows) {
   std::vector<int> levels;
-  for (int f = 2; std::max(cols, rows) / f >= 256; f *= 2) levels.push_back(f);
+  const int side = std::max(cols, rows);
+  for (int f = 2; f < 2 * side; f *= 2) {
+    levels.push_back(f);
+    if ((side + f - 1) / f <= kOverviewTilePixels) break;
+  }
   return levels;
+}
+
+// The GCPs of a raster on the radar's grid (GeoTIFF's ModelTiepointTag,
+// one tie point each), in the Georef's CRS.
+void set_gcps(GDALDatasetH ds, const Georef& georef) {
+  std::vector<GDAL_GCP> gcps(georef.gcps.size());
+  std::vector<std::string> ids(georef.gcps.size());
+  for (std::size_t i = 0; i < gcps.size(); ++i) {
+    const GroundControlPoint& g = georef.gcps[i];
+    ids[i] = std::to_string(i + 1);
+    gcps[i].pszId = ids[i].data();
+    gcps[i].pszInfo = const_cast<char*>("");
+    gcps[i].dfGCPPixel = g.pixel;
+    gcps[i].dfGCPLine = g.line;
+    gcps[i].dfGCPX = g.x;
+    gcps[i].dfGCPY = g.y;
+    gcps[i].dfGCPZ = g.z;
+  }
+  GDALSetGCPs(ds, static_cast<int>(gcps.size()), gcps.data(), georef.crs_wkt.c_str());
 }
 
 }  // namespace
@@ -107,11 +130,12 @@ GeoTiffBlockWriter<T>::GeoTiffBlockWriter(const std::filesystem::path& path, int
   if (ds == nullptr)
     throw InputError(path.string(), "", "cannot create GeoTIFF: " + last_gdal_error());
   impl_->ds.reset(ds);
-  impl_->overviews =
-      compression.overviews && static_cast<long long>(cols) * rows >= kOverviewMinPixels;
+  impl_->overviews = compression.overviews && std::max(cols, rows) > kOverviewTilePixels;
   const auto units = metadata.find("RIS_UNITS");
   impl_->resampling = units != metadata.end() && units->second == "W" ? "AVERAGE" : "NEAREST";
-  if (georef != nullptr) {
+  if (georef != nullptr && !georef->gcps.empty()) {
+    set_gcps(ds, *georef);
+  } else if (georef != nullptr) {
     std::array<double, 6> gt = georef->geotransform;
     GDALSetGeoTransform(ds, gt.data());
     if (!georef->crs_wkt.empty()) GDALSetProjection(ds, georef->crs_wkt.c_str());
@@ -143,10 +167,47 @@ template <typename T>
 GeoTiffBlockWriter<T>::~GeoTiffBlockWriter() = default;
 
 template <typename T>
+void GeoTiffBlockWriter<T>::add_mask_band() {
+  RIS_CHECK(impl_->ds != nullptr && written_ == 0 && mask_buffer_.empty());
+  // Inside the .tif (GDAL 3.6 would otherwise write a .msk side file).
+  CPLSetThreadLocalConfigOption("GDAL_TIFF_INTERNAL_MASK", "YES");
+  const CPLErr err = GDALCreateDatasetMaskBand(handle(impl_->ds), GMF_PER_DATASET);
+  CPLSetThreadLocalConfigOption("GDAL_TIFF_INTERNAL_MASK", nullptr);
+  if (err != CE_None) {
+    throw InputError(impl_->out.final_path().string(), "",
+                     "cannot create the mask band: " + last_gdal_error());
+  }
+  mask_buffer_.resize(buffer_.front().size());
+}
+
+namespace {
+
+// Lines [in_block, in_block + n) of a block into lines [in_strip, ...) of
+// a strip buffer: whole rows (by rows, `w` columns) or n columns of every
+// one of `rows` rows (strip width w).
+template <typename V>
+void copy_lines(V* dst, const V* src, bool by_rows, int in_strip, int in_block, int n, int rows,
+                std::size_t w, std::size_t stride) {
+  if (by_rows) {
+    for (int r = 0; r < n; ++r)
+      std::memcpy(dst + static_cast<std::size_t>(in_strip + r) * w,
+                  src + static_cast<std::size_t>(in_block + r) * stride, w * sizeof(V));
+  } else {
+    for (int r = 0; r < rows; ++r)
+      std::memcpy(dst + static_cast<std::size_t>(r) * w + static_cast<std::size_t>(in_strip),
+                  src + static_cast<std::size_t>(r) * stride + static_cast<std::size_t>(in_block),
+                  static_cast<std::size_t>(n) * sizeof(V));
+  }
+}
+
+}  // namespace
+
+template <typename T>
 void GeoTiffBlockWriter<T>::write(const std::vector<const T*>& band_data, int count,
-                                  std::size_t stride) {
+                                  std::size_t stride, const std::uint8_t* mask) {
   RIS_CHECK(impl_->ds != nullptr);
   RIS_CHECK(static_cast<int>(band_data.size()) == bands_);
+  RIS_CHECK((mask != nullptr) == !mask_buffer_.empty());
   RIS_CHECK(count >= 0 && written_ + count <= length_);
   if (stride == 0)
     stride = by_rows() ? static_cast<std::size_t>(cols_) : static_cast<std::size_t>(count);
@@ -160,23 +221,14 @@ void GeoTiffBlockWriter<T>::write(const std::vector<const T*>& band_data, int co
     const int a = ascending() ? lo + done : lo + count - done - n;
     const int in_block = a - lo;       // offset in the block
     const int in_strip = a - strip0_;  // offset in the strip
+    const std::size_t w = static_cast<std::size_t>(by_rows() ? cols_ : strip_len_);
     for (int b = 0; b < bands_; ++b) {
-      const T* src = band_data[static_cast<std::size_t>(b)];
-      T* dst = buffer_[static_cast<std::size_t>(b)].data();
-      if (by_rows()) {
-        const std::size_t w = static_cast<std::size_t>(cols_);
-        for (int r = 0; r < n; ++r)
-          std::memcpy(dst + static_cast<std::size_t>(in_strip + r) * w,
-                      src + static_cast<std::size_t>(in_block + r) * stride, w * sizeof(T));
-      } else {
-        const std::size_t w = static_cast<std::size_t>(strip_len_);
-        for (int r = 0; r < rows_; ++r)
-          std::memcpy(
-              dst + static_cast<std::size_t>(r) * w + static_cast<std::size_t>(in_strip),
-              src + static_cast<std::size_t>(r) * stride + static_cast<std::size_t>(in_block),
-              static_cast<std::size_t>(n) * sizeof(T));
-      }
+      copy_lines(buffer_[static_cast<std::size_t>(b)].data(),
+                 band_data[static_cast<std::size_t>(b)], by_rows(), in_strip, in_block, n, rows_, w,
+                 stride);
     }
+    if (mask != nullptr)
+      copy_lines(mask_buffer_.data(), mask, by_rows(), in_strip, in_block, n, rows_, w, stride);
     strip_filled_ += n;
     written_ += n;
     done += n;
@@ -199,6 +251,16 @@ void GeoTiffBlockWriter<T>::flush_strip() {
         GDALRasterIO(band, GF_Write, x0, y0, w, h, buffer_[static_cast<std::size_t>(b)].data(), w,
                      h, gdal_type<T>(), 0, 0);
     if (err != CE_None) {
+      throw InputError(
+          impl_->out.final_path().string(), "",
+          write_failure(impl_->out.final_path(), impl_->out.temp_path(), uncompressed_bytes()));
+    }
+  }
+  if (!mask_buffer_.empty()) {
+    // GDAL's mask values: 255 data, 0 none.
+    for (std::uint8_t& m : mask_buffer_) m = m != 0 ? 255 : 0;
+    if (GDALRasterIO(GDALGetMaskBand(GDALGetRasterBand(ds, 1)), GF_Write, x0, y0, w, h,
+                     mask_buffer_.data(), w, h, GDT_Byte, 0, 0) != CE_None) {
       throw InputError(
           impl_->out.final_path().string(), "",
           write_failure(impl_->out.final_path(), impl_->out.temp_path(), uncompressed_bytes()));

@@ -3,6 +3,7 @@
 #include <gdal.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
@@ -98,24 +99,65 @@ TEST(GeoTiffBlockWriter, EveryBandDeclaresItsUnit) {
   GDALClose(ds);
 }
 
-TEST(GeoTiffBlockWriter, LargeRastersGetOverviewsUnlessTurnedOff) {
+// The overviews a raster of cols x rows gets (0 when it cannot be opened).
+int overview_count(const std::filesystem::path& path, int cols, int rows, bool on) {
+  const std::vector<std::uint8_t> zeros(std::size_t(cols) * rows, 0);
+  GeoTiffCompression c;
+  c.overviews = on;
+  GeoTiffBlockWriter<std::uint8_t> w(path, cols, rows, {"mask"}, nullptr, std::nullopt, {}, c);
+  w.write(zeros.data(), rows);
+  w.close();
+  GDALAllRegister();
+  GDALDatasetH ds = GDALOpen(path.c_str(), GA_ReadOnly);
+  if (ds == nullptr) return 0;
+  const int n = GDALGetOverviewCount(GDALGetRasterBand(ds, 1));
+  GDALClose(ds);
+  return n;
+}
+
+TEST(GeoTiffBlockWriter, RastersAboveOneTileGetOverviewsUnlessTurnedOff) {
   test::TempDir dir;
-  const int n = 4096;  // kOverviewMinPixels
-  const std::vector<std::uint8_t> zeros(std::size_t(n) * 64, 0);
-  for (const bool on : {true, false}) {
-    GeoTiffCompression c;
-    c.overviews = on;
-    const auto path = dir / (on ? "on.tif" : "off.tif");
-    GeoTiffBlockWriter<std::uint8_t> w(path, n, n, {"mask"}, nullptr, std::nullopt, {}, c);
-    for (int r = 0; r < n; r += 64) w.write(zeros.data(), 64);
-    w.close();
-    GDALAllRegister();
-    GDALDatasetH ds = GDALOpen(path.c_str(), GA_ReadOnly);
-    ASSERT_NE(ds, nullptr);
-    // 2, 4, ..., 16: the last keeps 256 pixels a side.
-    EXPECT_EQ(GDALGetOverviewCount(GDALGetRasterBand(ds, 1)), on ? 4 : 0);
-    GDALClose(ds);
+  // Halvings until the overview fits in one 256-pixel tile (gdaladdo's
+  // default): 4096 -> 2, 4, 8, 16; 300 x 100 -> 2; 257 -> 2; one tile -> none.
+  EXPECT_EQ(overview_count(dir / "big.tif", 4096, 4096, true), 4);
+  EXPECT_EQ(overview_count(dir / "off.tif", 4096, 4096, false), 0);
+  EXPECT_EQ(overview_count(dir / "small.tif", 300, 100, true), 1);
+  EXPECT_EQ(overview_count(dir / "tall.tif", 20, 257, true), 1);
+  EXPECT_EQ(overview_count(dir / "odd.tif", 1000, 700, true), 2);  // 500, 250
+  EXPECT_EQ(overview_count(dir / "tile.tif", 256, 256, true), 0);
+}
+
+TEST(GeoTiffBlockWriter, MaskBandMarksCellsWithoutDataWhateverTheirValue) {
+  // A greytone of 0 is valid: the mask, not a no-data value, says which
+  // pixels hold data, and 0-valued pixels with data stay valid.
+  test::TempDir dir;
+  const int cols = 300, rows = 40;
+  std::vector<std::uint8_t> grey(std::size_t(cols) * rows, 0), valid(grey.size(), 1);
+  for (int c = 0; c < cols; ++c) valid[std::size_t(7) * cols + std::size_t(c)] = 0;  // row 7
+  grey[5] = 200;
+  const auto path = dir / "masked.tif";
+  GeoTiffBlockWriter<std::uint8_t> w(path, cols, rows, {"greytone"}, nullptr);
+  w.add_mask_band();
+  for (int r = 0; r < rows; r += 16) {
+    const int n = std::min(16, rows - r);
+    w.write(grey.data() + std::size_t(r) * cols, n, 0, valid.data() + std::size_t(r) * cols);
   }
+  w.close();
+  EXPECT_FALSE(std::filesystem::exists(dir / "masked.tif.msk"));  // internal
+  GDALAllRegister();
+  GDALDatasetH ds = GDALOpen(path.c_str(), GA_ReadOnly);
+  ASSERT_NE(ds, nullptr);
+  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+  int has_nodata = 0;
+  GDALGetRasterNoDataValue(band, &has_nodata);
+  EXPECT_EQ(has_nodata, 0);
+  EXPECT_EQ(GDALGetMaskFlags(band), GMF_PER_DATASET);
+  std::vector<std::uint8_t> m(grey.size());
+  ASSERT_EQ(GDALRasterIO(GDALGetMaskBand(band), GF_Read, 0, 0, cols, rows, m.data(), cols, rows,
+                         GDT_Byte, 0, 0),
+            CE_None);
+  for (std::size_t i = 0; i < m.size(); ++i) ASSERT_EQ(m[i], valid[i] ? 255 : 0) << i;
+  GDALClose(ds);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cpl_conv.h>
 #include <cpl_string.h>
 #include <gdal.h>
+#include <gdal_utils.h>
 #include <ogr_srs_api.h>
 
 #include <png.h>
@@ -48,13 +49,29 @@ void write_geotiff(const std::filesystem::path& path, const T* data, int cols, i
   writer.close();
 }
 
+template <typename T>
+void write_geotiff_masked(const std::filesystem::path& path, const T* data,
+                          const std::uint8_t* valid, int cols, int rows, const Georef* georef,
+                          const RasterMetadata& metadata, const std::string& band_description,
+                          const GeoTiffCompression* compression) {
+  RIS_CHECK(cols > 0 && rows > 0);
+  GeoTiffBlockWriter<T> writer(path, cols, rows, {band_description}, georef, std::nullopt, metadata,
+                               compression != nullptr ? *compression : GeoTiffCompression{});
+  writer.add_mask_band();
+  writer.write(data, rows, 0, valid);
+  writer.close();
+}
+
 #define RIS_INSTANTIATE_GEOTIFF(T)                                                                 \
   template void write_geotiff<T>(const std::filesystem::path&, const T*, int, int, const Georef*,  \
                                  std::optional<double>, const RasterMetadata&, const std::string&, \
                                  BlockOrder, const GeoTiffCompression*);                           \
   template void write_geotiff_bands<T>(const std::filesystem::path&,                               \
                                        const std::vector<BandView<T>>&, int, int, const Georef*,   \
-                                       std::optional<double>, const RasterMetadata&);
+                                       std::optional<double>, const RasterMetadata&);              \
+  template void write_geotiff_masked<T>(                                                           \
+      const std::filesystem::path&, const T*, const std::uint8_t*, int, int, const Georef*,        \
+      const RasterMetadata&, const std::string&, const GeoTiffCompression*);
 RIS_INSTANTIATE_GEOTIFF(float)
 RIS_INSTANTIATE_GEOTIFF(double)
 RIS_INSTANTIATE_GEOTIFF(std::uint8_t)
@@ -106,6 +123,20 @@ void write_png_gray_from_raster(const std::filesystem::path& path,
   GdalDataset src = open_raster(source.string());
   RIS_CHECK(GDALGetRasterCount(handle(src)) == 1 &&
             GDALGetRasterDataType(GDALGetRasterBand(handle(src), 1)) == GDT_Byte);
+  if (GDALGetMaskFlags(GDALGetRasterBand(handle(src), 1)) == GMF_PER_DATASET) {
+    // A source with a mask band (geocoded_grey.tif): its greytones alone, as
+    // write_png_gray, through a virtual copy without the mask (a PNG has no
+    // mask band: GDAL would leave a .msk side file).
+    char* argv[] = {const_cast<char*>("-of"), const_cast<char*>("VRT"), const_cast<char*>("-mask"),
+                    const_cast<char*>("none"), nullptr};
+    GDALTranslateOptions* opt = GDALTranslateOptionsNew(argv, nullptr);
+    GdalDataset plain(GDALTranslate("", handle(src), opt, nullptr));
+    GDALTranslateOptionsFree(opt);
+    if (plain == nullptr)
+      throw InputError(source.string(), "", "cannot read: " + last_gdal_error());
+    png_copy(path, handle(plain), zlevel);
+    return;
+  }
   png_copy(path, handle(src), zlevel);
 }
 

@@ -48,16 +48,19 @@ struct GeoTiffCompression {
   int level = 1;                // ZLEVEL= (DEFLATE) or ZSTD_LEVEL= (ZSTD)
   int predictor = 1;            // PREDICTOR= (1 none, 2 integer, 3 floating point)
   bool all_threads = true;      // NUM_THREADS=ALL_CPUS
-  // Internal overviews (halvings down to ~256 pixels a side) when the raster
-  // has at least kOverviewMinPixels, so a GIS opens a large product at any
-  // zoom without reading it whole: averaged for power (RIS_UNITS W), nearest
-  // for everything else (masks, categories, greytones, angles). `ris
-  // simulate --no-overviews` turns them off.
+  // Internal overviews (halvings until the overview fits in one tile) when
+  // the raster's longer side passes kOverviewTilePixels, so a GIS opens a
+  // product at any zoom without reading it whole: averaged for power
+  // (RIS_UNITS W), nearest for everything else (masks, categories,
+  // greytones, angles). `ris simulate --no-overviews` turns them off.
   bool overviews = true;
 };
 
-// 4096 x 4096: smaller rasters open quickly without overviews.
-inline constexpr long long kOverviewMinPixels = 4096LL * 4096LL;
+// One tile (256 pixels): a raster that fits in one tile is read whole in one
+// block anyway; anything larger gets overviews, as gdaladdo (--minsize 256)
+// and QGIS's pyramid dialog would build, so a zoomed-out view reads one
+// overview tile instead of every tile of the raster.
+inline constexpr int kOverviewTilePixels = 256;
 
 // The unit a band declares (GDAL's unit type, which QGIS and rasterio show),
 // so every product carries one without each writer naming it: a single
@@ -89,11 +92,21 @@ class GeoTiffBlockWriter {
   // first, left column first): count rows x cols, or rows x count columns
   // with `stride` samples from one row to the next (0: count). Throws
   // InputError on a write failure (a full disk).
-  void write(const std::vector<const T*>& band_data, int count, std::size_t stride = 0);
+  // With a mask band (add_mask_band), `mask` is its block in the same
+  // layout: nonzero where the pixels hold data.
+  void write(const std::vector<const T*>& band_data, int count, std::size_t stride = 0,
+             const std::uint8_t* mask = nullptr);
   // The same for a single-band raster.
-  void write(const T* data, int count, std::size_t stride = 0) {
-    write(std::vector<const T*>{data}, count, stride);
+  void write(const T* data, int count, std::size_t stride = 0, const std::uint8_t* mask = nullptr) {
+    write(std::vector<const T*>{data}, count, stride, mask);
   }
+
+  // Gives the file an internal per-dataset mask band (GDAL's
+  // GMF_PER_DATASET: 255 data, 0 none), for a raster whose every value is
+  // valid data so that no value can be its no-data (a greytone: 0 is black,
+  // not "no pixel"); GDAL, QGIS and rasterio read the mask as the pixels'
+  // validity. Before the first write; every write then passes its mask.
+  void add_mask_band();
 
   int written() const { return written_; }  // rows or columns received
 
@@ -123,6 +136,7 @@ class GeoTiffBlockWriter {
   // per band strip_len_ x cols (by rows) or rows x strip_len_.
   int strip0_ = 0, strip_len_ = 0, strip_filled_ = 0;
   std::vector<std::vector<T>> buffer_;
+  std::vector<std::uint8_t> mask_buffer_;  // the mask band's strip (empty: no mask)
 };
 
 }  // namespace ris

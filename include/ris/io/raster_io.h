@@ -16,16 +16,32 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ris {
 
 struct GeoTiffCompression;  // ris/io/geotiff_block_writer.h
 
-// Georeferencing of a raster: a GDAL geotransform and a CRS (WKT, may be empty).
+// A ground control point: image position (GDAL pixel / line, 0 at the
+// top-left corner of the first pixel) and its ground point (x, y, z in the
+// CRS of its Georef).
+struct GroundControlPoint {
+  double pixel = 0.0, line = 0.0;
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+
+// Georeferencing of a raster: a GDAL geotransform and a CRS (WKT, may be
+// empty); or, when gcps is not empty, ground control points in that CRS
+// instead of a geotransform (a raster on the radar's own grid: gdalwarp and
+// QGIS place it by them).
 struct Georef {
+  Georef() = default;
+  Georef(const std::array<double, 6>& gt, std::string wkt)
+      : geotransform(gt), crs_wkt(std::move(wkt)) {}
   std::array<double, 6> geotransform{0, 1, 0, 0, 0, -1};
   std::string crs_wkt;
+  std::vector<GroundControlPoint> gcps;
 };
 
 // Key/value metadata written into the file's default metadata domain.
@@ -54,6 +70,15 @@ void write_geotiff(const std::filesystem::path& path, const T* data, int cols, i
                    const RasterMetadata& metadata = {}, const std::string& band_description = "",
                    BlockOrder order = BlockOrder::top_down,
                    const GeoTiffCompression* compression = nullptr);
+
+// A single-band GeoTIFF with an internal per-dataset mask band instead of a
+// no-data value (GeoTiffBlockWriter::add_mask_band): valid (cols*rows)
+// nonzero where the pixel holds data.
+template <typename T>
+void write_geotiff_masked(const std::filesystem::path& path, const T* data,
+                          const std::uint8_t* valid, int cols, int rows, const Georef* georef,
+                          const RasterMetadata& metadata, const std::string& band_description,
+                          const GeoTiffCompression* compression = nullptr);
 
 // Multi-band GeoTIFF, every band of type T.
 template <typename T>

@@ -73,6 +73,9 @@ struct RunRequest {
   ProductSelection products;
   CompressionPreset compression = CompressionPreset::fast;
   bool overviews = true;  // internal overviews on large products
+  // Geocoding's resampling, gdalwarp's names: "near" (default) or
+  // "bilinear" (in-memory runs; ris/image/geocode.h).
+  std::string geocode_resampling = "near";
 
   // A run on a real acquisition's radar grid instead of a scene
   // (ris/sim/acquisition_simulation.h; scene_path is not read): the product

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ris/image/geocode.h"
 #include "ris/io/compression_preset.h"
 
 namespace ris {
@@ -53,6 +54,8 @@ struct SlarRunInfo {
   CompressionPreset compression = CompressionPreset::fast;
   // Internal overviews on large GeoTIFF products (`--no-overviews`: off).
   bool overviews = true;
+  // How the geocoded products take their pixels (`--geocode-resampling`).
+  GeocodeResampling geocode_resampling = GeocodeResampling::nearest;
 };
 
 // The GeoTIFF settings of a run's products: its compression preset for

@@ -69,6 +69,9 @@ struct SlarRasterSpec {
   std::string band;
   std::optional<double> nodata;
   bool georeferenced = false;
+  // An internal mask band instead of a no-data value (every value is valid
+  // data: geocoded_grey.tif, where 0 is black).
+  bool mask_band = false;
 };
 SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img);
 

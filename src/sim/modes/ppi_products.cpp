@@ -98,7 +98,7 @@ PpiProductSize ppi_product_size(const RadarParams& radar) {
   z.scope_pixels = 2.0 * std::max(1.0, std::ceil(far_m / pixel_m));
   const auto tiff = [](double cols, double rows, double bytes_per_pixel) {
     const double tiled = std::ceil(cols / 256.0) * 256.0 * std::ceil(rows / 256.0) * 256.0;
-    const bool overviews = cols * rows >= double(kOverviewMinPixels);
+    const bool overviews = std::max(cols, rows) > double(kOverviewTilePixels);
     return tiled * bytes_per_pixel * (overviews ? 4.0 / 3.0 : 1.0);
   };
   // A PNG stored without compression: a filter byte a row, 5 bytes a 64 KiB

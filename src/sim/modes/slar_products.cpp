@@ -9,7 +9,9 @@
 #include <type_traits>
 
 #include "ris/image/geocode.h"
+#include "ris/image/geocoded_grey.h"
 #include "ris/image/shadow_map.h"
+#include "ris/image/slant_georef.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/compression_preset.h"
 #include "ris/io/raster_io.h"
@@ -117,11 +119,12 @@ SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img) {
   }
   RIS_CHECK(file == "geocoded_grey.tif");
   return {{{"RIS_PRODUCT",
-            "slant-range greytones geocoded onto the scene grid (nearest pixel); 0 = "
-            "no pixel"},
+            "slant-range greytones geocoded onto the scene grid (nearest pixel); the mask "
+            "band marks the cells with a pixel (0 is black, not no data)"},
            {"RIS_VERSION", RIS_VERSION}},
           "greytone",
-          0.0,
+          std::nullopt,
+          true,
           true};
 }
 
@@ -240,9 +243,15 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
          "float32 power after fading on the scene grid (map geometry, scene CRS), NaN where no "
          "pixel"},
         {"geocoded_grey.tif",
-         "uint8 greytones on the scene grid (map geometry, scene CRS), 0 no pixel"},
+         "uint8 greytones on the scene grid (map geometry, scene CRS); its mask band marks the "
+         "cells with a pixel"},
+        {"geocoded_grey.png",
+         "the same greytones as a picture (no georeferencing; cells without a pixel black)"},
         {"shadowmap.txt", "the seed's shadow map: 9 no data, 0 shadow, 1-8 count, # more"},
         {"metadata.json", "this file"}}}});
+  if (picture_file("geocoded_grey", scene.cols, scene.rows, info.max_png_pixels) !=
+      "geocoded_grey.png")
+    out["products"].erase("geocoded_grey.png");  // too large for a PNG: the .tif alone
   out["products"] = selected_products(out["products"], info.products);
   return out;
 }
@@ -267,6 +276,8 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
   // One task per file, run concurrently (each opens its own GDAL dataset),
   // the largest first; every file is complete before the folder commits.
   std::vector<std::function<void()>> tasks;
+  // The slant-range rasters' GCPs (ris/image/slant_georef.h).
+  const Georef slant_gcps = slant_georef(scene, sim.track, img);
   // The pictures: PNG, or a tiled GeoTIFF when too large for one.
   const auto picture = [&](const std::string& stem, const std::uint8_t* grey, int cols, int rows) {
     if (!want.wants(stem)) return;
@@ -276,7 +287,8 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
         write_png_gray(dir.path(file), grey, cols, rows, png_level);
       } else {
         const SlarRasterSpec spec = slar_raster_spec(file, img);
-        write_geotiff(dir.path(file), grey, cols, rows, nullptr, spec.nodata, spec.metadata,
+        write_geotiff(dir.path(file), grey, cols, rows,
+                      file == "slant_range.tif" ? &slant_gcps : nullptr, spec.nodata, spec.metadata,
                       spec.band, BlockOrder::top_down, &int_tif);
       }
     });
@@ -286,7 +298,7 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
                          BlockOrder order = BlockOrder::top_down) {
     const SlarRasterSpec spec = slar_raster_spec(file, img);
     using T = std::remove_cvref_t<decltype(*data)>;
-    write_geotiff(dir.path(file), data, cols, rows, spec.georeferenced ? &georef : nullptr,
+    write_geotiff(dir.path(file), data, cols, rows, spec.georeferenced ? &georef : &slant_gcps,
                   spec.nodata, spec.metadata, spec.band, order,
                   std::is_floating_point_v<T> ? &float_tif : &int_tif);
   };
@@ -294,14 +306,23 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
     if (want.wants(stem)) tasks.push_back(std::move(f));
   };
   // The scene-grid products first (the scene is usually the largest grid).
+  const GeocodeResampling resampling = info.geocode_resampling;
   task("geocoded_power", [&] {
     write("geocoded_power.tif",
-          geocode_slant_image(scene, sim.track, img, pic.speckled_power_w).data(), scene.cols,
-          scene.rows);
+          geocode_slant_image(scene, sim.track, img, pic.speckled_power_w, resampling).data(),
+          scene.cols, scene.rows);
   });
   task("geocoded_grey", [&] {
-    write("geocoded_grey.tif", geocode_slant_grey(scene, sim.track, img, pic.slant_grey).data(),
-          scene.cols, scene.rows);
+    // Its mask band: the cells whose power has data (ris/image/geocoded_grey.h).
+    const GeocodedGrey g =
+        geocoded_grey(scene, sim.track, img, pic.slant_grey, pic.speckled_power_w, resampling);
+    const SlarRasterSpec spec = slar_raster_spec("geocoded_grey.tif", img);
+    write_geotiff_masked(dir.path("geocoded_grey.tif"), g.grey.data(), g.valid.data(), scene.cols,
+                         scene.rows, &georef, spec.metadata, spec.band, &int_tif);
+    if (picture_file("geocoded_grey", scene.cols, scene.rows, info.max_png_pixels) ==
+        "geocoded_grey.png")
+      write_png_gray(dir.path("geocoded_grey.png"), g.grey.data(), scene.cols, scene.rows,
+                     png_level);
   });
   // Scene-grid maps in the order a streamed run computes them (line by line).
   const BlockOrder line_order = scene_maps_order(scene, sim.geometry);

@@ -102,6 +102,8 @@ SlarRunInfo run_info(const RunRequest& r, const std::string& backscatter_path) {
   info.products = r.products;
   info.compression = r.compression;
   info.overviews = r.overviews;
+  info.geocode_resampling =
+      parse_geocode_resampling(r.geocode_resampling, "", "--geocode-resampling");
   return info;
 }
 
@@ -166,6 +168,12 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
       "--products");
   const LoadedSigma0 sigma0 = load_sigma0(r);
   res.info = run_info(r, sigma0.path);
+  if (res.info.geocode_resampling != GeocodeResampling::nearest) {
+    throw InputError("", "--geocode-resampling",
+                     "bilinear geocoding is made by in-memory runs only; a streamed run geocodes "
+                     "nearest: leave out --stream/--block-lines, or warp its slant-range "
+                     "products with gdalwarp -r bilinear (they carry GCPs)");
+  }
   require_regular_input(r.scene_path, "--scene");
   {
     const SceneStreamReader probe(r.scene_path);  // the header only

@@ -322,8 +322,9 @@ void pictures_pass(const SlantImagePasses& p, const GreytoneMap& map,
     if (!png) spec.metadata.insert(p.extra_metadata.begin(), p.extra_metadata.end());
     // A GeoTIFF picture with the run's compression (write_slar_products).
     return std::make_unique<GeoTiffBlockWriter<std::uint8_t>>(
-        picture_path(file), cols, lines, std::vector<std::string>{spec.band}, nullptr, spec.nodata,
-        spec.metadata, png ? GeoTiffCompression{} : product_tiff_settings(p.info, false));
+        picture_path(file), cols, lines, std::vector<std::string>{spec.band},
+        file == "slant_range.tif" ? p.slant_georef : nullptr, spec.nodata, spec.metadata,
+        png ? GeoTiffCompression{} : product_tiff_settings(p.info, false));
   };
   {
     auto slant_grey_out = open_picture(slant_file, img.bins);

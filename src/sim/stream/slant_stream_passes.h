@@ -139,6 +139,7 @@ struct SlantImagePasses {
   StagedDirectory* dir = nullptr;
   ProgressBar* bar = nullptr;
   RasterMetadata extra_metadata;
+  const Georef* slant_georef = nullptr;  // the slant-range GCPs (slant_range.tif)
 };
 
 // Each pass's wall and CPU time (into a stream's summary) and the progress

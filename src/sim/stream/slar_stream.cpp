@@ -25,9 +25,11 @@
 #include "ris/backscatter/sigma0_lut.h"
 #include "ris/geometry/slar_geometry.h"
 #include "ris/image/geocode.h"
+#include "ris/image/geocoded_grey.h"
 #include "ris/image/greytone.h"
 #include "ris/image/ground_range.h"
 #include "ris/image/shadow_map.h"
+#include "ris/image/slant_georef.h"
 #include "ris/image/slar_azimuth_integrator.h"
 #include "ris/image/speckle.h"
 #include "ris/image/thermal_noise.h"
@@ -415,10 +417,21 @@ class StreamRun {
   std::unique_ptr<GeoTiffBlockWriter<T>> open_writer(const std::string& file, int cols, int rows,
                                                      BlockOrder order = BlockOrder::top_down) {
     const SlarRasterSpec spec = slar_raster_spec(file, sim().image);
-    return std::make_unique<GeoTiffBlockWriter<T>>(
+    auto w = std::make_unique<GeoTiffBlockWriter<T>>(
         dir_->path(file), cols, rows, std::vector<std::string>{spec.band},
-        spec.georeferenced ? &georef_ : nullptr, spec.nodata, spec.metadata,
+        spec.georeferenced ? &georef_ : &slant_georef(), spec.nodata, spec.metadata,
         product_tiff_settings(info_, std::is_floating_point_v<T>), order);
+    if (spec.mask_band) w->add_mask_band();
+    return w;
+  }
+
+  // The slant-range products' GCPs, as an in-memory run's (slant_georef).
+  const Georef& slant_georef() {
+    if (!slant_georef_) {
+      slant_georef_ = ris::slant_georef(grid(), sim().track, sim().image, streamed_elevation(in_),
+                                        0.5 * (double(ss_.h_min) + double(ss_.h_max)));
+    }
+    return *slant_georef_;
   }
 
   // ---- Pass 1: lines in blocks through the line engine ------------------
@@ -841,7 +854,8 @@ class StreamRun {
 
   // What passes 1b and 2 need (slant_stream_passes.h).
   detail::SlantImagePasses passes() {
-    return {group_, order_, sim(), info_, block_lines(), dir_ ? &*dir_ : nullptr, &*bar_, {}};
+    return {group_, order_, sim(),          info_, block_lines(), dir_ ? &*dir_ : nullptr,
+            &*bar_, {},     &slant_georef()};
   }
 
   // The ground-range grid over the median elevation (simulate_slar).
@@ -927,13 +941,18 @@ class StreamRun {
         [&](int, GeoBlock& k) {
           const double t0 = process_cpu_seconds();
           power_out->write(k.power.data(), k.rows);
-          grey_out->write(k.grey.data(), k.rows);
+          grey_out->write(k.grey.data(), k.rows, 0, geocoded_validity(k.power).data());
           bar_->advance(static_cast<std::int64_t>(k.power.size()));
           geo_.consume_cpu += process_cpu_seconds() - t0;
         });
     if (group_.rank() != 0) return;
     power_out->close();
     grey_out->close();
+    if (picture_file("geocoded_grey", grid().cols, grid().rows, info_.max_png_pixels) ==
+        "geocoded_grey.png") {
+      write_png_gray_from_raster(dir_->path("geocoded_grey.png"), dir_->path("geocoded_grey.tif"),
+                                 png_compression_level(info_.compression));
+    }
   }
 
   // Scene rows [r0, r0 + n) (read into z_, ok_): each cell's pixel, then the
@@ -1000,6 +1019,7 @@ class StreamRun {
   SlarStreamSummary summary_;
   std::string backscatter_file_;
   Georef georef_;
+  std::optional<Georef> slant_georef_;
   // Made at the points the passes need them: a refused run shows no bar
   // and stages no folder.
   std::optional<ProgressBar> bar_;
