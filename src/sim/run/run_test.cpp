@@ -106,7 +106,7 @@ TEST(RunSimulation, ProductSelectionAndCompressionPresets) {
     res.info.compression = p;
     write_run_products(res, dir / std::string(to_string(p)));
   }
-  EXPECT_EQ(files_in(dir / "fast").size(), 11u);
+  EXPECT_EQ(files_in(dir / "fast").size(), 12u);
   for (const std::string& f : files_in(dir / "fast")) {
     if (f.ends_with(".txt") || f.ends_with(".json")) {
       EXPECT_EQ(test::read_file(dir / "fast" / f), test::read_file(dir / "none" / f)) << f;

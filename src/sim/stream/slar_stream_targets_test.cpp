@@ -85,7 +85,7 @@ std::vector<std::string> files_in(const fs::path& dir) {
 void expect_same_folders(const fs::path& a, const fs::path& b, const std::string& what) {
   const std::vector<std::string> na = files_in(a), nb = files_in(b);
   EXPECT_EQ(na, nb) << what;
-  EXPECT_EQ(na.size(), 11u) << what;
+  EXPECT_EQ(na.size(), 12u) << what;
   for (const std::string& name : na) {
     if (!fs::exists(b / name)) continue;
     EXPECT_TRUE(test::read_file(a / name) == test::read_file(b / name)) << what << ": " << name;
