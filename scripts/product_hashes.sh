@@ -129,7 +129,7 @@ for d in */; do
     f=${f#./}
     case "$f" in
       *.tif | *.png)
-        gdal_translate -q -of ENVI "$d/$f" decoded.raw > /dev/null
+        gdal_translate -q -of ENVI -mask none "$d/$f" decoded.raw > /dev/null
         echo "$d/$f $(md5sum < decoded.raw | cut -c1-32)"
         rm -f decoded.raw decoded.hdr decoded.raw.aux.xml
         ;;
