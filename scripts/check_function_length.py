@@ -14,9 +14,15 @@ counts towards that function). A constructor's member initialisers
 Scanned: src/, include/, apps/, bench/, python/ (C++ files); not tests
 (*_test.cpp, tests/, fuzz/).
 
-Usage: scripts/check_function_length.py [repo_root] [--max N] [--list K]
-  --max N   the limit (default 150): exit 1 and one line per longer function
-  --list K  also print the K longest functions
+Classes too (issue 31: "no class over 300 lines"): a class, struct or union
+body counts from its header's first line to its closing brace; --max-class
+sets that limit (default 300), nested classes count on their own and inside
+their enclosing class.
+
+Usage: scripts/check_function_length.py [repo_root] [--max N] [--max-class C] [--list K]
+  --max N        the function limit (default 150): exit 1 and one line per longer function
+  --max-class C  the class limit (default 300): exit 1 and one line per longer class
+  --list K       also print the K longest functions and classes
 """
 import argparse
 import pathlib
@@ -133,8 +139,13 @@ def has_initialisers(header: str) -> bool:
     return re.match(r"^[\s\w]*:(?!:)", rest) is not None
 
 
-def functions(text: str):
-    """Yields (name, first_line, last_line) of each function."""
+CLASS_NAME = re.compile(r"\b(?:class|struct|union)\s+(?:\[\[[^\]]*\]\]\s*)?(?:alignas\s*\([^)]*\)\s*)?(\w+)")
+
+
+def functions(text: str, classes=None):
+    """Yields (name, first_line, last_line) of each function; appends
+    (name, first_line, last_line) of each class, struct or union to
+    `classes` when given (enums are not counted)."""
     src = blank(text)
     line_of = []
     line = 1
@@ -150,6 +161,8 @@ def functions(text: str):
     paren = 0
     for i, ch in enumerate(src):
         kind = stack[-1][0]
+        if kind == "class":
+            kind = "scope"
         if ch == "(":
             paren += 1
         elif ch == ")":
@@ -165,7 +178,12 @@ def functions(text: str):
             bare = strip_template(header)
             prev = src[:i].rstrip()[-1:] if src[:i].strip() else ""
             if NAMESPACE.match(bare) or CLASS.match(bare):
-                stack.append(("scope", i, ""))
+                m = CLASS_NAME.match(bare.strip()) if CLASS.match(bare) else None
+                if m and not re.match(r"^\s*(?:typedef\s+)?enum\b", bare):
+                    start = header_start + (len(header) - len(header.lstrip()))
+                    stack.append(("class", start, m.group(1)))
+                else:
+                    stack.append(("scope", i, ""))
                 header_start = i + 1
             elif "(" in bare and has_initialisers(bare) and (prev.isalnum() or prev in "_>"):
                 stack.append(("init", i, ""))
@@ -182,7 +200,9 @@ def functions(text: str):
             kind, start, name = stack.pop()
             if kind == "function":
                 yield name, line_of[start], line_of[i]
-            if kind != "init" and stack[-1][0] == "scope":
+            if kind == "class" and classes is not None:
+                classes.append((name, line_of[start], line_of[i]))
+            if kind != "init" and stack[-1][0] in ("scope", "class"):
                 header_start = i + 1
 
 
@@ -190,10 +210,12 @@ def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("root", nargs="?", default=".")
     ap.add_argument("--max", type=int, default=150)
+    ap.add_argument("--max-class", type=int, default=300)
     ap.add_argument("--list", type=int, default=0)
     args = ap.parse_args()
     root = pathlib.Path(args.root).resolve()
     found = []
+    found_classes = []
     for top in SCANNED:
         for path in sorted((root / top).rglob("*")):
             if path.suffix not in SUFFIXES or path.name.endswith("_test.cpp"):
@@ -201,19 +223,29 @@ def main() -> int:
             if "tests" in path.relative_to(root).parts:
                 continue
             text = path.read_text(encoding="utf-8", errors="replace")
-            for name, first, last in functions(text):
+            classes = []
+            for name, first, last in functions(text, classes):
                 found.append((last - first + 1, str(path.relative_to(root)), first, name))
+            for name, first, last in classes:
+                found_classes.append((last - first + 1, str(path.relative_to(root)), first, name))
     found.sort(key=lambda f: (-f[0], f[1], f[2]))
     for length, path, first, name in found[:args.list]:
         print(f"{length:5d}  {path}:{first}  {name}")
+    found_classes.sort(key=lambda f: (-f[0], f[1], f[2]))
+    for length, path, first, name in found_classes[:args.list]:
+        print(f"{length:5d}  {path}:{first}  class {name}")
     too_long = [f for f in found if f[0] > args.max]
     for length, path, first, name in too_long:
         print(f"{path}:{first}: function {name} is {length} lines, over the limit of {args.max}",
               file=sys.stderr)
-    if not found:
-        print("no functions found: wrong root?", file=sys.stderr)
+    too_long_classes = [f for f in found_classes if f[0] > args.max_class]
+    for length, path, first, name in too_long_classes:
+        print(f"{path}:{first}: class {name} is {length} lines, over the limit of "
+              f"{args.max_class}", file=sys.stderr)
+    if not found or not found_classes:
+        print("no functions or classes found: wrong root?", file=sys.stderr)
         return 1
-    return 1 if too_long else 0
+    return 1 if too_long or too_long_classes else 0
 
 
 if __name__ == "__main__":

@@ -23,8 +23,10 @@
 #include "ris/util/process_group.h"
 #include "ris/util/progress.h"
 #include "ris/util/resource_guard.h"
+#include "sim/engine/block_pass.h"
 #include "sim/engine/block_schedule.h"
 #include "sim/modes/acquisition_setup.h"
+#include "sim/stream/slant_line_sink.h"
 #include "sim/stream/slant_stream_passes.h"
 
 namespace ris {
@@ -159,78 +161,83 @@ class AcquisitionStream {
   }
 
   // ---- Pass 1: lines in blocks through the line engine ------------------
-  struct LineSinks {
-    Writer<float> mean, speckled, local_incidence;
-    Writer<std::uint8_t> mask, layover_shadow;
+  // Rank 0's files of pass 1 besides the slant image: the radar-grid layers.
+  struct LayerWriters {
+    Writer<float> local_incidence;
+    Writer<std::uint8_t> layover_shadow;
+  };
+
+  // Pass 1 as a block pass (sim/engine/block_pass.h): blocks of lines
+  // computed on any rank (compute_block), and on rank 0, in line order,
+  // their radar-grid layers written and their lines made into the image
+  // (slant_line_sink.h).
+  struct LinesPass {
+    using Block = LineBlock;
+    AcquisitionStream& run;
+    LayerWriters* layers;          // rank 0's
+    detail::SlantLineSink* image;  // rank 0's
+    detail::PassCpu cpu;
+    int blocks() const { return (run.lines() + run.block_lines() - 1) / run.block_lines(); }
+    Block compute(int b) {
+      const double t0 = detail::process_cpu_seconds();
+      Block k = run.compute_block(b);
+      cpu.compute += detail::process_cpu_seconds() - t0;
+      ++cpu.computed;
+      return k;
+    }
+    void pack(const Block& k, std::vector<char>& out) const { detail::pack_line_block(k, out); }
+    Block unpack(const char* p, std::size_t n) const { return detail::unpack_line_block(p, n); }
+    void consume(int, Block& k) {
+      const double t0 = detail::process_cpu_seconds();
+      const int n = k.l1 - k.l0;
+      layers->local_incidence->write(k.incidence.data(), n);
+      layers->layover_shadow->write(k.scene_mask.data(), n);
+      image->take(k);
+      run.bar_->advance(n);
+      ++run.summary_.blocks;
+      if (run.spare_.size() < 2) run.spare_.push_back(std::move(k));
+      cpu.consume += detail::process_cpu_seconds() - t0;
+    }
   };
 
   void lines_pass() {
     stage("terrain profiles, image formation, radar-grid layers, fading (pass 1)");
     const bool root = group_.rank() == 0;
-    std::optional<SlarAzimuthIntegrator> az;
-    std::optional<LineSinks> sinks;
-    if (root) {
-      az.emplace(s_.rs.imaging, sim().geometry.line_spacing_m, lines(), bins());
-      sinks.emplace(LineSinks{open_writer<float>("mean_power_slant.tif"),
-                              open_writer<float>("speckled_power_slant.tif"),
-                              open_writer<float>("local_incidence.tif"),
-                              open_writer<std::uint8_t>("mask_slant.tif"),
-                              open_writer<std::uint8_t>("layover_shadow_mask.tif")});
-    }
     // N per range bin, as make_greytone_image.
     looks_.resize(sz(bins()));
     for (int k = 0; k < bins(); ++k)
       looks_[sz(k)] = independent_samples(radar(), s_.rs.imaging.range.centre_m(k));
-    SlarLineCounts counts;
-    std::int64_t samples_in_swath = 0;
-    const int blocks = (lines() + block_lines() - 1) / block_lines();
-    // This process's CPU time in the two halves of pass 1: what a rank
-    // computes, and what rank 0 alone does (as a scene's streamed run).
-    double compute_cpu = 0.0, consume_cpu = 0.0;
-    int computed = 0;
-    detail::run_blocks_in_order<LineBlock>(
-        group_, blocks, order_,
-        [&](int b) {
-          const double t0 = detail::process_cpu_seconds();
-          LineBlock k = compute_block(b);
-          compute_cpu += detail::process_cpu_seconds() - t0;
-          ++computed;
-          return k;
-        },
-        detail::pack_line_block, detail::unpack_line_block,
-        [&](int, LineBlock& k) {
-          const double t0 = detail::process_cpu_seconds();
-          const int n = k.l1 - k.l0;
-          counts.add(k.counts);
-          samples_in_swath += k.prof.samples_in_swath;
-          sinks->local_incidence->write(k.incidence.data(), n);
-          sinks->layover_shadow->write(k.scene_mask.data(), n);
-          az->push(k.prof, n);
-          emit_ready(*az, *sinks);
-          bar_->advance(n);
-          ++summary_.blocks;
-          if (spare_.size() < 2) spare_.push_back(std::move(k));
-          consume_cpu += detail::process_cpu_seconds() - t0;
-        });
+    std::optional<LayerWriters> layers;
+    std::optional<detail::SlantLineSink> image;
+    if (root) {
+      image.emplace(sim(), s_.rs,
+                    detail::SlantImageWriters{open_writer<float>("mean_power_slant.tif"),
+                                              open_writer<float>("speckled_power_slant.tif"),
+                                              open_writer<std::uint8_t>("mask_slant.tif")},
+                    looks_, info_.seed, power_, nullptr, nullptr);
+      layers.emplace(LayerWriters{open_writer<float>("local_incidence.tif"),
+                                  open_writer<std::uint8_t>("layover_shadow_mask.tif")});
+    }
+    LinesPass pass{*this, root ? &*layers : nullptr, root ? &*image : nullptr, {}};
+    detail::run_pass(group_, order_, pass);
     if (!root) {
       stage_done();
       return;
     }
-    RIS_CHECK(az->lines_emitted() == lines());
+    image->close();
+    const SlarLineCounts& counts = image->counts();
     set_sample_counts(sim().geometry, counts);
-    sim().image.samples_in_swath = samples_in_swath;
-    check_swath_hits_scene(samples_in_swath, s_.rs.imaging.range, counts, radar().source_file);
-    sinks->mean->close();
-    sinks->speckled->close();
-    sinks->local_incidence->close();
-    sinks->mask->close();
-    sinks->layover_shadow->close();
+    sim().image.samples_in_swath = image->samples_in_swath();
+    check_swath_hits_scene(image->samples_in_swath(), s_.rs.imaging.range, counts,
+                           radar().source_file);
+    layers->local_incidence->close();
+    layers->layover_shadow->close();
     stage_done();
+    summary_.cpu_parts.emplace_back(fmt::format("CPU of pass 1 on rank 0: {} of {} blocks computed",
+                                                pass.cpu.computed, pass.blocks()),
+                                    pass.cpu.compute);
     summary_.cpu_parts.emplace_back(
-        fmt::format("CPU of pass 1 on rank 0: {} of {} blocks computed", computed, blocks),
-        compute_cpu);
-    summary_.cpu_parts.emplace_back(
-        "CPU of pass 1 on rank 0: integration, fading, writing (every block)", consume_cpu);
+        "CPU of pass 1 on rank 0: integration, fading, writing (every block)", pass.cpu.consume);
   }
 
   // Block b's lines through the engine, on this rank: their range profiles,
@@ -277,23 +284,6 @@ class AcquisitionStream {
     return k;
   }
 
-  // The image lines the integrator has ready: switch corrections and noise,
-  // NaN for no data, fading, written out (render_slar +
-  // write_acquisition_products).
-  void emit_ready(SlarAzimuthIntegrator& az, LineSinks& sinks) {
-    const int n = az.lines_ready();
-    if (n == 0) return;
-    const int k0 = az.lines_emitted();
-    const SlarImage block = detail::emit_finished_lines(az, n, sim(), s_.rs.terms, mask_);
-    detail::count_and_blank_no_data(block, mask_, power_, mean_);
-    speckled_ = mean_;
-    if (radar().switches.fading)
-      apply_fading(speckled_, n, bins(), looks_, radar().fading, info_.seed, k0);
-    sinks.mean->write(mean_.data(), n);
-    sinks.speckled->write(speckled_.data(), n);
-    sinks.mask->write(mask_.data(), n);
-  }
-
   // The land cover's categories over the whole DEM (sorted, unique), the
   // DEM read in bands of rows (the radiometry's table needs them all).
   std::vector<std::uint16_t> land_cover_categories() const {
@@ -328,8 +318,6 @@ class AcquisitionStream {
   std::vector<double> looks_;
   FloatRankSelect power_;         // the median mean power's two passes
   std::vector<LineBlock> spare_;  // consumed blocks, their buffers reused
-  std::vector<float> mean_, speckled_;
-  std::vector<std::uint8_t> mask_;
 };
 
 }  // namespace

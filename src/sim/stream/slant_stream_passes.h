@@ -76,6 +76,13 @@ inline double process_cpu_seconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
+// A pass's CPU time on this process (every thread): computing blocks (how
+// many it computed), and consuming them (rank 0: integrating, writing).
+struct PassCpu {
+  int computed = 0;
+  double compute = 0.0, consume = 0.0;
+};
+
 // (value, text) as rank 0 has them, on every rank (the median, and the
 // staging folder the other ranks read the slant products from).
 std::pair<double, std::string> share_from_rank0(ProcessGroup& group, double value,

@@ -74,6 +74,12 @@ class ObliqueBlockLines {
   Scene window_;  // a segment's cells, its buffers reused
 };
 
+// The spills of pass 1 (a mask byte and an incidence a sample, lines x
+// samples, uncompressed in the staging folder): pass 1m's input, removed
+// after it.
+inline constexpr const char* kSpillMaskFile = ".oblique_mask.tmp.tif";
+inline constexpr const char* kSpillIncidenceFile = ".oblique_incidence.tmp.tif";
+
 // Reads lines [line0, line0 + lines) x samples [j0, j0 + n) of the spilled
 // values: mask into `mask`, incidence into `incidence_deg` (row-major).
 using SpilledValuesReader = std::function<void(int line0, int lines, int j0, int n,
