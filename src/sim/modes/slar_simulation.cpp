@@ -218,7 +218,6 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
     rs.push_back(prepare_radiometry(rs[0].categories, sims[c].radar, sims[c].derived,
                                     *channels[c].sigma0, backscatter_files[c]));
   }
-  options.report("image formation", 0.4);
   // SAR windows, resolution warnings and thermal noise (as a streamed run).
   for (std::size_t c = 0; c < nc; ++c) complete_slar_setup(sims[c], rs[c], scene);
   check_point_targets_on_scene(options.targets, scene);
@@ -245,8 +244,8 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
   }
   // Switch corrections and SAR thermal noise (as a streamed run's blocks).
   for (std::size_t c = 0; c < nc; ++c) finish_slar_image(sims[c], sims[c].image, rs[c].terms);
-  // Products on the ground-range grid.
-  options.report("ground-range grid", 0.9);
+  // Products on the ground-range grid (its reference height, the median
+  // elevation, was found before the run: part of the set-up's stage).
   for (SlarSimulation& s : sims) {
     s.ground_grid =
         ground_range_grid(s.image.range, s.geometry.altitude_m, h_ref, s.image.line_spacing_m);
