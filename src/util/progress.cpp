@@ -56,8 +56,17 @@ std::string ProgressBar::format_line(const std::string& label, std::int64_t done
   bar.append(static_cast<std::size_t>(width - filled), '.');
   const double rate = elapsed_s > 0 ? double(done) / elapsed_s : 0.0;
   const double eta = rate > 0 ? double(total - done) / rate : -1.0;
-  std::string line = fmt::format("ris {}: [{}] {:3.0f}%  {}{}  {}{}/s  ETA {}", label, bar,
-                                 100.0 * f, si(double(done)), unit, si(rate), unit, duration(eta));
+  std::string line;
+  if (unit == "%" || unit == " %") {
+    // Work counted in percent of a run (its stages' shares): the count is
+    // the percentage and a rate of "%/s" says nothing, so the time taken
+    // and the time left instead.
+    line = fmt::format("ris {}: [{}] {:3.0f}%  {} elapsed  ETA {}", label, bar, 100.0 * f,
+                       duration(elapsed_s), duration(eta));
+  } else {
+    line = fmt::format("ris {}: [{}] {:3.0f}%  {}{}  {}{}/s  ETA {}", label, bar, 100.0 * f,
+                       si(double(done)), unit, si(rate), unit, duration(eta));
+  }
   if (!stage.empty()) line += "  " + stage;
   return line;
 }

@@ -16,6 +16,20 @@ TEST(ProgressBar, LineShowsFractionRateAndTimeRemaining) {
   EXPECT_NE(line.find("geometry"), std::string::npos) << line;
 }
 
+// A run counted in percent (ris simulate's in-memory stages): one
+// percentage, the time taken and left, no "30%  30%  277%/s" (issue 38).
+TEST(ProgressBar, PercentLineHasOnePercentageAndNoRate) {
+  const std::string line =
+      ProgressBar::format_line("simulate", 30, 100, "%", 6.0, "backscatter", 10);
+  EXPECT_NE(line.find("[###.......]  30%"), std::string::npos) << line;
+  EXPECT_EQ(line.find("30%", line.find("30%") + 1), std::string::npos) << line;
+  EXPECT_EQ(line.find("/s"), std::string::npos) << line;
+  // 30 % in 6 s: 5 % a second, 70 % left -> 14 s.
+  EXPECT_NE(line.find("6 s elapsed"), std::string::npos) << line;
+  EXPECT_NE(line.find("ETA 14 s"), std::string::npos) << line;
+  EXPECT_NE(line.find("backscatter"), std::string::npos) << line;
+}
+
 TEST(ProgressBar, QuietDrawsNothingALogGetsPlainLines) {
   ::testing::internal::CaptureStderr();
   ProgressBar quiet("x", 10, "", true);

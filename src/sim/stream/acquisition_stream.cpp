@@ -98,7 +98,8 @@ class AcquisitionStream {
   // Every rank runs pass 1 and 2's blocks; rank 0 alone writes.
   AcquisitionStreamSummary run() {
     const bool root = group_.rank() == 0;
-    bar_.emplace("simulate (streamed)", lines(), "lines", stream_.quiet || !root);
+    // Passes 1 and 2 each stand for the window's lines on the bar.
+    bar_.emplace("simulate (streamed)", 2 * std::int64_t(lines()), "lines", stream_.quiet || !root);
     if (root) dir_.emplace(out_dir_);
     lines_pass();
     const double median =
@@ -147,7 +148,8 @@ class AcquisitionStream {
     return {group_,        order_,
             sim(),         info_,
             block_lines(), dir_ ? &*dir_ : nullptr,
-            &*bar_,        acquisition_grid_metadata(s_.out)};
+            &*bar_,        acquisition_grid_metadata(s_.out),
+            nullptr,       lines()};
   }
 
   // A product on the window's grid, as write_acquisition_products writes it.

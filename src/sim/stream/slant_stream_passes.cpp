@@ -16,6 +16,7 @@
 #include "ris/io/geotiff_block_writer.h"
 #include "ris/sim/slar_products.h"
 #include "ris/sim/slar_run_setup.h"
+#include "sim/engine/block_pass.h"
 
 namespace ris::detail {
 
@@ -31,80 +32,110 @@ struct PictureBlock {
   std::vector<std::uint8_t> slant, ground;
 };
 
-// The speckled power read back block by block: its greytones in slant and
-// ground range (render_slar), computed on every rank and written by rank 0
-// (slant_out, ground_out; null on the other ranks) in line order.
+// Pass 2 as a block pass (sim/engine/block_pass.h): the speckled power read
+// back block by block, its greytones in slant and ground range
+// (render_slar), computed on every rank and written by rank 0 (slant_out,
+// ground_out; null on the other ranks) in line order.
+class PicturesPass {
+ public:
+  using Block = PictureBlock;
+
+  PicturesPass(const SlantImagePasses& p, const GreytoneMap& map, const std::string& slant_dir,
+               GeoTiffBlockWriter<std::uint8_t>* slant_out,
+               GeoTiffBlockWriter<std::uint8_t>* ground_out)
+      : p_(p), map_(map), dir_(slant_dir), slant_out_(slant_out), ground_out_(ground_out) {}
+
+  int blocks() const { return (lines() + p_.block_lines - 1) / p_.block_lines; }
+
+  PictureBlock compute(int b) {
+    const SlarImage& img = p_.sim.image;
+    const GroundRangeGrid& gg = p_.sim.ground_grid;
+    // Opened at a rank's first block, so that a rank that cannot read them
+    // (an output folder not on a shared file system) fails through the
+    // schedule: rank 0 reports it and removes its staging folder.
+    if (!sp_ds_) {
+      sp_ds_.emplace(open_raster((dir_ / "speckled_power_slant.tif").string()));
+      mask_ds_.emplace(open_raster((dir_ / "mask_slant.tif").string()));
+    }
+    PictureBlock k;
+    k.k0 = b * p_.block_lines;
+    k.lines = std::min(p_.block_lines, lines() - k.k0);
+    const int n = k.lines;
+    const std::size_t np = sz(n) * sz(img.bins);
+    speckled_.resize(np);
+    mask_.resize(np);
+    read_rows(handle(*sp_ds_), k.k0, n, speckled_.data(), GDT_Float32, "speckled_power_slant.tif");
+    read_rows(handle(*mask_ds_), k.k0, n, mask_.data(), GDT_Byte, "mask_slant.tif");
+    no_data_.resize(np);
+    for (std::size_t i = 0; i < np; ++i) no_data_[i] = (mask_[i] & pixel_flag::kNoData) ? 1 : 0;
+    k.slant.resize(np);
+    greytones(speckled_, k.slant, map_, no_data_);
+    const std::vector<float> ground_power = to_ground_range(speckled_, n, img.range, gg);
+    const std::vector<std::uint8_t> ground_mask =
+        to_ground_range_nearest(mask_, n, img.range, gg, pixel_flag::kNoData);
+    ground_no_data_.resize(ground_mask.size());
+    for (std::size_t i = 0; i < ground_mask.size(); ++i)
+      ground_no_data_[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
+    k.ground.resize(ground_power.size());
+    greytones(ground_power, k.ground, map_, ground_no_data_);
+    return k;
+  }
+
+  void pack(const PictureBlock& k, std::vector<char>& out) const {
+    const std::size_t sizes[4] = {std::size_t(k.k0), std::size_t(k.lines), k.slant.size(),
+                                  k.ground.size()};
+    const char* h = reinterpret_cast<const char*>(sizes);
+    out.insert(out.end(), h, h + sizeof(sizes));
+    out.insert(out.end(), k.slant.begin(), k.slant.end());
+    out.insert(out.end(), k.ground.begin(), k.ground.end());
+  }
+
+  PictureBlock unpack(const char* at, std::size_t n) const {
+    std::size_t sizes[4] = {};
+    RIS_CHECK(n >= sizeof(sizes));
+    std::memcpy(sizes, at, sizeof(sizes));
+    RIS_CHECK(n == sizeof(sizes) + sizes[2] + sizes[3]);
+    PictureBlock k;
+    k.k0 = static_cast<int>(sizes[0]);
+    k.lines = static_cast<int>(sizes[1]);
+    const char* d = at + sizeof(sizes);
+    k.slant.assign(d, d + sizes[2]);
+    k.ground.assign(d + sizes[2], d + sizes[2] + sizes[3]);
+    return k;
+  }
+
+  void consume(int, PictureBlock& k) {
+    slant_out_->write(k.slant.data(), k.lines);
+    ground_out_->write(k.ground.data(), k.lines);
+    // The pass's share of the bar, spread over its lines.
+    const std::int64_t n = std::max(lines(), 1);
+    p_.bar->advance(p_.bar_units * (k.k0 + k.lines) / n - p_.bar_units * k.k0 / n);
+  }
+
+  void release() {
+    sp_ds_.reset();
+    mask_ds_.reset();
+  }
+
+ private:
+  int lines() const { return p_.sim.image.lines; }
+
+  const SlantImagePasses& p_;
+  const GreytoneMap& map_;
+  const std::filesystem::path dir_;
+  GeoTiffBlockWriter<std::uint8_t>* slant_out_;
+  GeoTiffBlockWriter<std::uint8_t>* ground_out_;
+  std::optional<GdalDataset> sp_ds_, mask_ds_;
+  std::vector<float> speckled_;
+  std::vector<std::uint8_t> mask_, no_data_, ground_no_data_;
+};
+
 void picture_blocks(const SlantImagePasses& p, const GreytoneMap& map, const std::string& slant_dir,
                     GeoTiffBlockWriter<std::uint8_t>* slant_out,
                     GeoTiffBlockWriter<std::uint8_t>* ground_out) {
-  const SlarImage& img = p.sim.image;
-  const GroundRangeGrid& gg = p.sim.ground_grid;
-  const int lines = img.lines, bins = img.bins, block_lines = p.block_lines;
-  const std::filesystem::path dir(slant_dir);
-  // Opened at a rank's first block, so that a rank that cannot read them
-  // (an output folder not on a shared file system) fails through the
-  // schedule: rank 0 reports it and removes its staging folder.
-  std::optional<GdalDataset> sp_ds, mask_ds;
-  std::vector<float> speckled;
-  std::vector<std::uint8_t> mask, no_data, ground_no_data;
-  const int blocks = (lines + block_lines - 1) / block_lines;
-  run_blocks_in_order<PictureBlock>(
-      p.group, blocks, p.order,
-      [&](int b) {
-        if (!sp_ds) {
-          sp_ds.emplace(open_raster((dir / "speckled_power_slant.tif").string()));
-          mask_ds.emplace(open_raster((dir / "mask_slant.tif").string()));
-        }
-        PictureBlock k;
-        k.k0 = b * block_lines;
-        k.lines = std::min(block_lines, lines - k.k0);
-        const int n = k.lines;
-        const std::size_t np = sz(n) * sz(bins);
-        speckled.resize(np);
-        mask.resize(np);
-        read_rows(handle(*sp_ds), k.k0, n, speckled.data(), GDT_Float32,
-                  "speckled_power_slant.tif");
-        read_rows(handle(*mask_ds), k.k0, n, mask.data(), GDT_Byte, "mask_slant.tif");
-        no_data.resize(np);
-        for (std::size_t i = 0; i < np; ++i) no_data[i] = (mask[i] & pixel_flag::kNoData) ? 1 : 0;
-        k.slant.resize(np);
-        greytones(speckled, k.slant, map, no_data);
-        const std::vector<float> ground_power = to_ground_range(speckled, n, img.range, gg);
-        const std::vector<std::uint8_t> ground_mask =
-            to_ground_range_nearest(mask, n, img.range, gg, pixel_flag::kNoData);
-        ground_no_data.resize(ground_mask.size());
-        for (std::size_t i = 0; i < ground_mask.size(); ++i)
-          ground_no_data[i] = (ground_mask[i] & pixel_flag::kNoData) ? 1 : 0;
-        k.ground.resize(ground_power.size());
-        greytones(ground_power, k.ground, map, ground_no_data);
-        return k;
-      },
-      [](const PictureBlock& k, std::vector<char>& out) {
-        const std::size_t sizes[4] = {std::size_t(k.k0), std::size_t(k.lines), k.slant.size(),
-                                      k.ground.size()};
-        const char* h = reinterpret_cast<const char*>(sizes);
-        out.insert(out.end(), h, h + sizeof(sizes));
-        out.insert(out.end(), k.slant.begin(), k.slant.end());
-        out.insert(out.end(), k.ground.begin(), k.ground.end());
-      },
-      [](const char* at, std::size_t n) {
-        std::size_t sizes[4] = {};
-        RIS_CHECK(n >= sizeof(sizes));
-        std::memcpy(sizes, at, sizeof(sizes));
-        RIS_CHECK(n == sizeof(sizes) + sizes[2] + sizes[3]);
-        PictureBlock k;
-        k.k0 = static_cast<int>(sizes[0]);
-        k.lines = static_cast<int>(sizes[1]);
-        const char* d = at + sizeof(sizes);
-        k.slant.assign(d, d + sizes[2]);
-        k.ground.assign(d + sizes[2], d + sizes[2] + sizes[3]);
-        return k;
-      },
-      [&](int, PictureBlock& k) {
-        slant_out->write(k.slant.data(), k.lines);
-        ground_out->write(k.ground.data(), k.lines);
-        p.bar->advance(0);
-      });
+  PicturesPass pass(p, map, slant_dir, slant_out, ground_out);
+  run_pass(p.group, p.order, pass);
+  pass.release();
 }
 
 }  // namespace

@@ -147,6 +147,8 @@ struct SlantImagePasses {
   ProgressBar* bar = nullptr;
   RasterMetadata extra_metadata;
   const Georef* slant_georef = nullptr;  // the slant-range GCPs (slant_range.tif)
+  // The progress bar's units pass 2 stands for, spread over its lines.
+  std::int64_t bar_units = 0;
 };
 
 // Each pass's wall and CPU time (into a stream's summary) and the progress

@@ -112,7 +112,8 @@ class StreamRun {
   SlarStreamSummary run(const Sigma0Source& sigma0) {
     plan();
     const bool root = group_.rank() == 0;
-    bar_.emplace("simulate (streamed)", 3 * std::int64_t(grid().rows) * grid().cols, "cells",
+    // Passes 0, 1, 2b and 2 each stand for the scene's cells on the bar.
+    bar_.emplace("simulate (streamed)", 4 * std::int64_t(grid().rows) * grid().cols, "cells",
                  options_.quiet || !root);
     stage("scene statistics");
     ss_ = detail::summarise_scene_on_ranks(in_, group_, scene_block_rows_, *bar_, sigma0,
@@ -301,7 +302,8 @@ class StreamRun {
             dir_ ? &*dir_ : nullptr,
             &*bar_,
             {},
-            writers_ ? &writers_->slant_georef() : nullptr};
+            writers_ ? &writers_->slant_georef() : nullptr,
+            std::int64_t(grid().rows) * grid().cols};
   }
 
   // The ground-range grid over the median elevation (simulate_slar).
