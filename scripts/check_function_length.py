@@ -242,8 +242,8 @@ def main() -> int:
     for length, path, first, name in too_long_classes:
         print(f"{path}:{first}: class {name} is {length} lines, over the limit of "
               f"{args.max_class}", file=sys.stderr)
-    if not found or not found_classes:
-        print("no functions or classes found: wrong root?", file=sys.stderr)
+    if not found:
+        print("no functions found: wrong root?", file=sys.stderr)
         return 1
     return 1 if too_long or too_long_classes else 0
 
