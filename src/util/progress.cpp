@@ -11,9 +11,10 @@ namespace ris {
 
 namespace {
 
-// 1234567 -> "1.23 M" (SI prefixes up to T).
+// 1234567 -> "1.23 M", 12 -> "12 " (SI prefixes up to T; the unit follows:
+// "1.23 Mcells", "12 cells").
 std::string si(double v) {
-  const char* prefixes[] = {"", " k", " M", " G", " T"};
+  const char* prefixes[] = {" ", " k", " M", " G", " T"};
   int p = 0;
   while (std::abs(v) >= 1000.0 && p < 4) {
     v /= 1000.0;
@@ -64,8 +65,9 @@ std::string ProgressBar::format_line(const std::string& label, std::int64_t done
     line = fmt::format("ris {}: [{}] {:3.0f}%  {} elapsed  ETA {}", label, bar, 100.0 * f,
                        duration(elapsed_s), duration(eta));
   } else {
+    const std::string u = unit.starts_with(' ') ? unit.substr(1) : unit;
     line = fmt::format("ris {}: [{}] {:3.0f}%  {}{}  {}{}/s  ETA {}", label, bar, 100.0 * f,
-                       si(double(done)), unit, si(rate), unit, duration(eta));
+                       si(double(done)), u, si(rate), u, duration(eta));
   }
   if (!stage.empty()) line += "  " + stage;
   return line;

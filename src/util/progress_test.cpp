@@ -14,6 +14,13 @@ TEST(ProgressBar, LineShowsFractionRateAndTimeRemaining) {
   EXPECT_NE(line.find("125 cells/s"), std::string::npos) << line;
   EXPECT_NE(line.find("ETA 6 s"), std::string::npos) << line;
   EXPECT_NE(line.find("geometry"), std::string::npos) << line;
+  // A unit named without its space reads the same; a count under 1000 has
+  // a space before its unit ("0 cells", not "0cells").
+  const std::string bare = ProgressBar::format_line("simulate", 0, 1000, "cells", 1.0, "", 20);
+  EXPECT_NE(bare.find("  0 cells  0 cells/s"), std::string::npos) << bare;
+  const std::string big =
+      ProgressBar::format_line("simulate", 1400000, 4000000, "cells", 2.0, "", 20);
+  EXPECT_NE(big.find("1.4 Mcells  700 kcells/s"), std::string::npos) << big;
 }
 
 // A run counted in percent (ris simulate's in-memory stages): one
