@@ -79,7 +79,7 @@ class PpiStreamRun {
                  options_.quiet || !root);
     stage("scene statistics");
     ss_ = detail::summarise_scene_on_ranks(in_, group_, scene_block_rows_, *bar_, sigma0,
-                                           backscatter_file_);
+                                           backscatter_file_, detail::SceneSummaryElevation::skip);
     stage_done();
     set_up(sigma0);
     if (root) dir_.emplace(out_dir_);

@@ -20,7 +20,9 @@ std::size_t sz(std::int64_t n) {
 
 SceneSummary summarise_scene(const SceneStreamReader& in, int row_begin, int row_end,
                              int block_rows, ProgressBar& bar,
-                             const std::function<void(std::uint16_t, int, int)>& on_new_category) {
+                             const std::function<void(std::uint16_t, int, int)>& on_new_category,
+                             SceneSummaryElevation elevation) {
+  const bool count_elevation = elevation == SceneSummaryElevation::count;
   const Scene& g = in.grid();
   SceneSummary s;
   std::vector<std::uint8_t> seen(65536, 0);
@@ -50,7 +52,7 @@ SceneSummary summarise_scene(const SceneStreamReader& in, int row_begin, int row
         s.max_row = r0 + static_cast<int>(i / sz(g.cols));
         s.max_col = static_cast<int>(i % sz(g.cols));
       }
-      if (std::isfinite(h)) s.elevation.count(h);
+      if (count_elevation && std::isfinite(h)) s.elevation.count(h);
     }
     bar.advance(static_cast<std::int64_t>(cells));
   }
@@ -100,7 +102,8 @@ void reduce_scene_summary(ProcessGroup& g, SceneSummary& s) {
 
 SceneSummary summarise_scene_on_ranks(const SceneStreamReader& in, ProcessGroup& g, int block_rows,
                                       ProgressBar& bar, const Sigma0Source& sigma0,
-                                      const std::string& backscatter_file) {
+                                      const std::string& backscatter_file,
+                                      SceneSummaryElevation elevation) {
   const int rows = in.grid().rows;
   const int row_blocks = (rows + block_rows - 1) / block_rows;
   const auto part_row = [&](int rank) {
@@ -116,7 +119,8 @@ SceneSummary summarise_scene_on_ranks(const SceneStreamReader& in, ProcessGroup&
                                      "it, first at row {}, column {}; add it to the "
                                      "backscatter file or give another with --backscatter)",
                                      c, in.path(), row, col));
-      });
+      },
+      elevation);
   reduce_scene_summary(g, s);
   return s;
 }

@@ -26,8 +26,12 @@ struct SceneSummary {
   float h_min = std::numeric_limits<float>::infinity();
   float h_max = -std::numeric_limits<float>::infinity();
   int max_row = -1, max_col = -1;  // the first highest cell with data
-  FloatRankSelect elevation;       // pass 1 of the median elevation
+  FloatRankSelect elevation;       // pass 1 of the median elevation (when asked)
 };
+
+// What pass 0 counts beyond the summary: the median elevation's first pass
+// (a SLAR's ground-range reference; a PPI has none).
+enum class SceneSummaryElevation { count, skip };
 
 // on_new_category(c, row, col): called at the first cell of each category,
 // so a category the backscatter source lacks stops the run there rather
@@ -36,7 +40,8 @@ struct SceneSummary {
 // combines the parts).
 SceneSummary summarise_scene(const SceneStreamReader& in, int row_begin, int row_end,
                              int block_rows, ProgressBar& bar,
-                             const std::function<void(std::uint16_t, int, int)>& on_new_category);
+                             const std::function<void(std::uint16_t, int, int)>& on_new_category,
+                             SceneSummaryElevation elevation = SceneSummaryElevation::count);
 
 // The whole scene's summary from every rank's part (rows in rank order),
 // on every rank: counts summed, categories merged, and the extremes folded
@@ -50,8 +55,9 @@ void reduce_scene_summary(ProcessGroup& g, SceneSummary& s);
 // backscatter_file: a scene of one undefined category fails at once, not
 // after the pass; in an MPI run, the first in the rank's rows), then the
 // whole scene's summary on every rank.
-SceneSummary summarise_scene_on_ranks(const SceneStreamReader& in, ProcessGroup& g, int block_rows,
-                                      ProgressBar& bar, const Sigma0Source& sigma0,
-                                      const std::string& backscatter_file);
+SceneSummary summarise_scene_on_ranks(
+    const SceneStreamReader& in, ProcessGroup& g, int block_rows, ProgressBar& bar,
+    const Sigma0Source& sigma0, const std::string& backscatter_file,
+    SceneSummaryElevation elevation = SceneSummaryElevation::count);
 
 }  // namespace ris::detail
