@@ -1,7 +1,8 @@
 // `ris compare SIMULATED REAL`: how well a simulated image matches a real one
 // of the same scene (docs/quality.md, "ris compare"; the seed's
 // recommendation 3.2.10, validation against real imagery). Co-registration
-// (integer, then sub-pixel shift by cross-correlation of the dB images),
+// (multilooked, normalised cross-correlation of the dB images over an image
+// pyramid, then a sub-pixel step: ris/image/image_registration.h),
 // correlation of dB values at 1, 3, 5 and 9 pixel windows, bias and RMS
 // difference, per-category bias, histogram distance, agreement of the
 // simulation's shadow and layover masks with the real image's dark and bright
@@ -196,8 +197,11 @@ void run_compare(const CompareArgs& a) {
     const auto& r = out["registration"];
     fmt::print(
         "registration: real shifted by {:+.3f} px (columns), {:+.3f} px (rows) against the "
-        "simulation; peak {:.1f} standard deviations above the mean\n",
-        r["shift_x_px"].get<double>(), r["shift_y_px"].get<double>(), r["peak_z"].get<double>());
+        "simulation; peak r = {:.3f} at {:.1f} standard errors of independent images ({:.1f} "
+        "needed), {:.1f} above its sidelobes\n",
+        r["shift_x_px"].get<double>(), r["shift_y_px"].get<double>(),
+        r["peak_correlation"].get<double>(), r["peak_z"].get<double>(), r["min_z"].get<double>(),
+        r["peak_to_sidelobe"].get<double>());
   }
   const auto table = [](const std::string& name, const nlohmann::json& rowsj) {
     for (const auto& w : rowsj) {

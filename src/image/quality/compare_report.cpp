@@ -91,13 +91,18 @@ CompareReport compare_measures(std::span<const float> simulated, std::span<const
   // Co-registration of the dB images; the real image moved onto the simulation.
   rep.real_aligned.assign(real.begin(), real.end());
   if (request.register_images) {
+    RegistrationRule rule;
+    rule.max_shift_px = request.max_shift_px;
     const ImageRegistration reg =
-        register_images(intensity_to_db(simulated), intensity_to_db(real), cols, rows,
-                        RegistrationRule{request.max_shift_px, 50, 8.0, 1.0});
+        register_images(intensity_to_db(simulated), intensity_to_db(real), cols, rows, rule);
     out["registration"] = {{"shift_x_px", reg.shift_x_px},
                            {"shift_y_px", reg.shift_y_px},
                            {"peak_z", reg.peak_z},
-                           {"peak_correlation", reg.peak_correlation}};
+                           {"peak_correlation", reg.peak_correlation},
+                           {"peak_to_sidelobe", reg.peak_to_sidelobe},
+                           {"min_z", rule.min_z},
+                           {"looks", reg.looks},
+                           {"levels", reg.levels}};
     rep.real_aligned = shifted(real, cols, rows, reg.shift_x_px, reg.shift_y_px);
   }
   const std::vector<float>& aligned = rep.real_aligned;
