@@ -120,6 +120,9 @@ struct SlarEngineKeep {
   // same order).
   std::vector<PointReturn>* point_returns = nullptr;
   std::vector<std::string>* hidden_targets = nullptr;
+  // Lines per engine block (0: the engine's choice; any value gives the same
+  // bytes, which the determinism tests check). Oblique tracks keep theirs.
+  int block_lines = 0;
 };
 
 // The whole engine run for an in-memory scene: fills `maps` (rows x cols),

@@ -65,6 +65,9 @@ struct SlarOptions {
   // Point scatterers added to the scene (ris/sim/point_target.h); checked to
   // lie on the scene.
   std::vector<PointTarget> targets;
+  // Lines per block of the line engine (0: the engine's choice). Any value
+  // gives the same bytes (the scene-query stage's determinism tests vary it).
+  int engine_block_lines = 0;
 
   // The backscatter source's name for messages: backscatter_file, or the
   // source's own description.

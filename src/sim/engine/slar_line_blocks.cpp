@@ -496,7 +496,9 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
   // through a transposed tile (which writes the maps back).
   const bool column_tiles = !no_maps && !cross_is_x_ && in.row0 == 0 && in.rows == samples &&
                             maps.row0 == 0 && maps.rows == samples;
-  const int block_lines = column_tiles ? kColumnBlockLines : 16;
+  const int block_lines = keep && keep->block_lines > 0 ? keep->block_lines
+                          : column_tiles                ? kColumnBlockLines
+                                                        : 16;
   detail::run_line_blocks(g, stages, line0, line1, block_lines, prof, counts,
                           [&](detail::LineScratch&) {
                             return DirectThreadSource{run, rows, column_tiles, {}, {}};
@@ -571,11 +573,14 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
     candidates = point_candidates(*keep.targets, scene, g);
     targets.emplace(candidates);
   }
-  const detail::LineKeep line_keep{keep.geometry ? &g : nullptr,
-                                   keep.element_power ? element_power.data() : nullptr,
-                                   targets ? &*targets : nullptr};
-  const detail::LineKeep* kept =
-      line_keep.geometry || line_keep.element_power_w || line_keep.targets ? &line_keep : nullptr;
+  detail::LineKeep line_keep{keep.geometry ? &g : nullptr,
+                             keep.element_power ? element_power.data() : nullptr,
+                             targets ? &*targets : nullptr};
+  line_keep.block_lines = keep.block_lines;
+  const detail::LineKeep* kept = line_keep.geometry || line_keep.element_power_w ||
+                                         line_keep.targets || line_keep.block_lines > 0
+                                     ? &line_keep
+                                     : nullptr;
   // The other channels: each its gain table, element context and profiles.
   const std::size_t nc = channels.size();
   std::vector<TwoWayGainTable> gain2;

@@ -29,14 +29,23 @@
 //
 // Blocks go to threads dynamically; each line's profile row and each cell's
 // maps are written by one block, so the bytes do not depend on the thread
-// count or the schedule.
+// count or the schedule. An effect that reads the scene across lines (and
+// point targets, the first of them) is a scene-query stage
+// (sim/engine/scene_query.h): its contributions to other lines are carried
+// and added in a fixed order once the call's lines are formed, so they keep
+// that rule.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <type_traits>
 #include <variant>
+#include <vector>
+
+#include "ris/util/error.h"
+#include "sim/engine/scene_query.h"
 
 #include "sim/engine/slar_line_stages.h"
 
@@ -94,6 +103,41 @@ struct LineStages {
   std::span<const ExtraChannel> channels = {};
 };
 
+// The run's scene-query stages: the point targets of stages.keep (if any)
+// first, then stages.keep->queries.
+struct LineQueries {
+  std::optional<PointTargetQuery> targets;
+  std::vector<const SceneQueryStage*> stages;
+  LineQueries(const LineQueries&) = delete;
+  LineQueries& operator=(const LineQueries&) = delete;
+  explicit LineQueries(const LineKeep* keep) {
+    if (!keep) return;
+    if (keep->targets) stages.push_back(&targets.emplace(*keep->targets));
+    for (const SceneQueryStage* q : keep->queries) stages.push_back(q);
+  }
+};
+
+// After the lines of an engine call: the contributions the query stages
+// carried to other lines. With keep->carried (a streamed block) they all go
+// there, for the pass that gathers every block's before adding a line's
+// (add_carried_contributions); else (in memory: one call forms every line)
+// they are added to prof here, and none may aim outside [line0, line1).
+// Either way a line's carried contributions are added once, all together,
+// so where blocks start never shows (sim/engine/scene_query.h).
+inline void finish_carried(std::vector<LineContribution> carried, const LineStages& stages,
+                           int line0, int line1, SlarLineProfiles& prof) {
+  if (carried.empty()) return;
+  if (stages.keep && stages.keep->carried) {
+    std::vector<LineContribution>& out = *stages.keep->carried;
+    out.insert(out.end(), carried.begin(), carried.end());
+    std::sort(out.begin(), out.end(), contribution_before);
+    return;
+  }
+  const std::vector<LineContribution> rest =
+      add_carried_contributions(std::move(carried), line0, line1, stages.range_window_bins, prof);
+  RIS_CHECK(rest.empty());
+}
+
 // Runs lines [line0, line1) in blocks of block_lines: fills their rows of
 // `prof` (allocated), adds to counts and prof.samples_in_swath.
 // make_thread_source(LineScratch&) is called once per thread; its result's
@@ -103,6 +147,8 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
                      int block_lines, SlarLineProfiles& prof, SlarLineCounts& counts,
                      MakeThreadSource make_thread_source) {
   const int blocks = (line1 - line0 + block_lines - 1) / block_lines;
+  const LineQueries queries(stages.keep);
+  std::vector<LineContribution> carried;
   std::int64_t in_swath = 0;
 #pragma omp parallel reduction(+ : in_swath)
   {
@@ -121,7 +167,8 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
                 line_geometry(*span.layout, stages.look, stages.need_incidence, s);
               }
               in_swath += accumulate_line(stages.ctx, span.n, s, prof, line, local,
-                                          stages.range_window_bins, span.first, stages.keep, &g);
+                                          stages.range_window_bins, span.first, stages.keep, &g,
+                                          queries.stages);
               // The other channels from the same geometry (the counts are
               // the geometry's: the first channel's).
               for (const ExtraChannel& c : stages.channels) {
@@ -136,8 +183,12 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
           block_source);
     }
 #pragma omp critical(ris_slar_line_counts)
-    counts.add(local);
+    {
+      counts.add(local);
+      carried.insert(carried.end(), s.carried.begin(), s.carried.end());
+    }
   }
+  finish_carried(std::move(carried), stages, line0, line1, prof);
   prof.samples_in_swath += in_swath;
   for (const ExtraChannel& c : stages.channels) c.prof->samples_in_swath += in_swath;
 }

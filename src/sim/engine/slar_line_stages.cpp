@@ -33,31 +33,12 @@ LinePointTargets::LinePointTargets(std::vector<PointCandidate> candidates)
       [](const PointCandidate& a, const PointCandidate& b) { return a.ret.line < b.ret.line; });
 }
 
-void add_line_point_returns(const SlarElementContext& ctx, const SlarGeometry& g, int line,
-                            int first, int n, const std::uint8_t* flags, const float* height_m,
-                            double* acc, LinePointTargets& t) {
-  const auto on_line =
-      std::lower_bound(t.by_line.begin(), t.by_line.end(), line,
-                       [](const PointCandidate& c, int l) { return c.ret.line < l; });
-  for (auto it = on_line; it != t.by_line.end() && it->ret.line == line; ++it) {
-    const std::size_t k = static_cast<std::size_t>(it - t.by_line.begin());
-    if (!point_lit_on_samples(g, first, n, flags, height_m, it->u_m, it->h_m)) continue;
-    const PointReturn& pr = it->ret;
-    const double r2 = pr.slant_range_m * pr.slant_range_m;
-    const double power = ctx.k_radar * ctx.gain2->at(pr.look_rad) * pr.rcs_m2 / (r2 * r2);
-    t.lit[k] = 1;
-    t.power_w[k] = power;
-    const double pos = (pr.slant_range_m - ctx.near_m) * ctx.inv_dr;
-    if (!(pos >= 0.0 && pos < ctx.bins)) continue;
-    acc[static_cast<std::size_t>(pos)] += power;
-  }
-}
-
 // Image formation's per-line step (as form_slar_image).
 std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
                              SlarLineProfiles& prof, int line, SlarLineCounts& counts,
                              double range_window_bins, int first_sample, const LineKeep* keep,
-                             const SlarGeometry* g) {
+                             const SlarGeometry* g,
+                             std::span<const SceneQueryStage* const> queries) {
   const std::size_t row = prof.index(line, 0);
   const LineElements e{
       samples,           s.flags.data(),     s.range.data(),           s.near_end.data(),
@@ -79,9 +60,9 @@ std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScr
   counts.layover += t.layover;
   counts.r_min_m = std::min(counts.r_min_m, t.r_min_m);
   counts.r_max_m = std::max(counts.r_max_m, t.r_max_m);
-  if (keep && keep->targets) {
-    add_line_point_returns(ctx, *g, line, first_sample, samples, s.flags.data(), s.height.data(),
-                           s.acc.acc.data(), *keep->targets);
+  if (!queries.empty()) {
+    query_line(queries, LineQuery{line, first_sample, samples, *g, s, ctx}, s.acc.acc.data(),
+               s.contributions, s.carried);
   }
   if (range_window_bins > 0.0) s.acc.apply_range_window(range_window_bins);
   for (int b = 0; b < prof.bins; ++b) {

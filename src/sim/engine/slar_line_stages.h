@@ -19,6 +19,7 @@
 #include "ris/image/slar_image.h"
 #include "ris/sim/point_target.h"
 #include "ris/sim/slar_line_parts.h"
+#include "sim/engine/scene_query.h"
 
 namespace ris::detail {
 
@@ -33,6 +34,9 @@ struct LineScratch {
   std::vector<float> none_z;
   SlarLineAccumulator acc;
   LineElementScratch elements;
+  // The scene-query stage's lists (sim/engine/scene_query.h): a line's
+  // contributions, and those for other lines this thread carries.
+  std::vector<LineContribution> contributions, carried;
   LineScratch(const SlarGeometry& g, int bins)
       : u(static_cast<std::size_t>(g.samples)),
         height(u.size()),
@@ -71,14 +75,6 @@ struct LinePointTargets {
   explicit LinePointTargets(std::vector<PointCandidate> candidates);
 };
 
-// The point targets on `line` that its terrain leaves lit (its samples
-// [first, first + n): flags and heights), their power added to the bin of
-// their range in acc (as form_slar_image adds point returns); each one's lit
-// flag and power set in t. g: the run's layout (sample positions, altitude).
-void add_line_point_returns(const SlarElementContext& ctx, const SlarGeometry& g, int line,
-                            int first, int n, const std::uint8_t* flags, const float* height_m,
-                            double* acc, LinePointTargets& t);
-
 // What a run keeps beyond the profiles and the scene maps (the kept-geometry
 // sink); a null member is not kept. Each line's part is written by the
 // thread that forms the line.
@@ -97,6 +93,18 @@ struct LineKeep {
   float* slant_range_m = nullptr;
   // The line of the arrays' first row (a block's first line; 0: the run's).
   int line0 = 0;
+  // The run's scene-query stages beyond the point targets (which `targets`
+  // makes the first): sim/engine/scene_query.h.
+  std::span<const SceneQueryStage* const> queries = {};
+  // Where the query stages' contributions to other lines go, sorted, for
+  // the caller to add once it holds every block's (a streamed run's pass:
+  // add_carried_contributions). Null: the engine call adds them itself (an
+  // in-memory run, whose one call forms every line; none may aim outside
+  // the call's lines).
+  std::vector<LineContribution>* carried = nullptr;
+  // Lines per engine block (0: the engine's choice). Any value gives the
+  // same bytes; the determinism tests vary it.
+  int block_lines = 0;
 };
 
 // The look geometry, element ends, cast shadow and layover of a line whose
@@ -110,12 +118,16 @@ void line_geometry(const SlarGeometry& g, const LineLookFrame& frame, bool need_
 // elements whose centre falls in a bin. first_sample: the line's sample
 // index of the scratch's element 0, when it holds a span of the line
 // (LineElements::first_index; the same bytes as the whole line then).
-// keep (optional): the run's kept-geometry sink and point targets; g: the
-// run's layout (its line numbering and samples), needed with keep.
+// keep (optional): the run's kept-geometry sink; g: the run's layout (its
+// line numbering and samples), needed with keep or queries. queries: the
+// run's scene-query stages (point targets first), run after the line's
+// elements and before the range window (sim/engine/scene_query.h); their
+// contributions to other lines go to s.carried.
 std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScratch& s,
                              SlarLineProfiles& prof, int line, SlarLineCounts& counts,
                              double range_window_bins, int first_sample = 0,
-                             const LineKeep* keep = nullptr, const SlarGeometry* g = nullptr);
+                             const LineKeep* keep = nullptr, const SlarGeometry* g = nullptr,
+                             std::span<const SceneQueryStage* const> queries = {});
 
 // The kept-geometry sink's step: the line's samples [first, first + n) from
 // the scratch into row `line` of `kept`, the samples outside unseen (NaN,

@@ -228,6 +228,7 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
   keep.targets = &options.targets;
   keep.point_returns = &sim.point_returns;
   keep.hidden_targets = &sim.hidden_targets;
+  keep.block_lines = options.engine_block_lines;
   std::vector<SlarImageChannel> more;
   for (std::size_t c = 1; c < nc; ++c) more.push_back({&rs[c].lut, &rs[c].imaging, &sims[c].image});
   sim.image = form_slar_image_fused(scene, sim.geometry, sim.scene_maps, rs[0].lut, rs[0].imaging,

@@ -6,7 +6,8 @@
 //   - ray_candidates places each target on every (padded) ray whose sector
 //     holds its azimuth, in front of the site, before the rays are formed;
 //   - the line engine (or the streamed block) finds each candidate lit or
-//     hidden as its ray is formed (add_line_point_returns) and adds its power;
+//     hidden as its ray is formed (the scene-query stage PointTargetQuery,
+//     sim/engine/scene_query.h) and adds its power;
 //   - fold_ray_targets gives the returns seen (in target and ray order),
 //     their powers and the names of the targets seen on no ray.
 #pragma once
