@@ -394,6 +394,10 @@ class Result:
 
     kind = property(lambda self: self._impl.kind,
                     doc="'slar', 'sar', 'coherent_sar', 'ppi' or 'streamed'.")
+    summary = property(lambda self: self._impl.summary,
+                       doc="The run's report, as `ris simulate` prints it: a dict of mode, "
+                           "strategy ('in_memory' or 'streamed'), ranks, lines (each its text "
+                           "and values: key, value, unit), warnings and products (file stems).")
     acquisition = property(lambda self: self._impl.acquisition,
                            doc="Whether the run was on an acquisition's radar grid.")
     out_dir = property(lambda self: self._impl.out_dir or None,
