@@ -255,6 +255,11 @@ struct PyResult {
   const ris::SlarRun& slar_run() const {
     require_in_memory();
     const ris::SlarRun* run = ris::slar_image_run(*res);
+    if (std::holds_alternative<ris::MultiChannelSlarRun>(res->run)) {
+      throw ris::InputError(res->info.radar_path, "channel",
+                            "a multi-channel run: take one channel's arrays with "
+                            "channel(name) (the names: channels)");
+    }
     if (run == nullptr) {
       throw ris::InputError(res->info.radar_path, "mode",
                             "this product exists for SLAR and SAR runs only (a PPI run: use "
@@ -324,6 +329,41 @@ struct PyResult {
       return nlohmann::json::parse(in);
     }
     return ris::run_metadata(*res);
+  }
+
+  // A multi-channel run's channel names, in the radar file's order (empty
+  // for a one-channel run).
+  std::vector<std::string> channel_names() const {
+    std::vector<std::string> out;
+    if (const auto* multi = std::get_if<ris::MultiChannelSlarRun>(&res->run)) {
+      for (const ris::ChannelRun& c : multi->channels) out.push_back(c.name);
+    }
+    return out;
+  }
+  // One channel of a multi-channel run as a one-channel result (its arrays
+  // copied; the scene shared).
+  PyResult channel(const std::string& name) const {
+    const auto* multi = std::get_if<ris::MultiChannelSlarRun>(&res->run);
+    if (multi == nullptr) {
+      throw ris::InputError(res->info.radar_path, "channel",
+                            "not a multi-channel run (its radar lists no [[channel]] tables)");
+    }
+    for (const ris::ChannelRun& c : multi->channels) {
+      if (c.name != name) continue;
+      PyResult out;
+      out.res = std::make_shared<ris::RunResult>();
+      out.res->run = c.run;
+      out.res->radar = c.run.sim.radar;
+      out.res->info = res->info;
+      out.res->info.backscatter_path = c.backscatter_path;
+      out.res->scene = res->scene;
+      out.warnings = warnings;
+      return out;
+    }
+    std::string names;
+    for (const std::string& n : channel_names()) names += (names.empty() ? "" : ", ") + n;
+    throw ris::InputError(res->info.radar_path, "channel",
+                          "no channel \"" + name + "\" (the channels: " + names + ")");
   }
 
   // A streamed run's blocks and passes (`ris simulate --stream`'s report).
@@ -973,7 +1013,9 @@ void bind_result(py::module_& m) {
       });
   c.def_property_readonly("acquisition", [](const PyResult& r) { return r.on_acquisition(); })
       .def_property_readonly("out_dir", [](const PyResult& r) { return r.out_dir.string(); })
-      .def("stream_summary", &PyResult::stream_summary);
+      .def("stream_summary", &PyResult::stream_summary)
+      .def_property_readonly("channels", &PyResult::channel_names)
+      .def("channel", &PyResult::channel);
   py::class_<PyRunOptions>(m, "_RunOptions")
       .def(py::init<>())
       .def_readwrite("scene_path", &PyRunOptions::scene_path)

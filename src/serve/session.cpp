@@ -136,6 +136,12 @@ RunResult Session::run(const SceneState& scene, const RadarParams& radar,
                        const std::string& radar_path,
                        const std::shared_ptr<const Sigma0Source>& sigma0,
                        const std::string& backscatter_path, std::uint64_t seed) const {
+  if (radar.channels.size() > 1) {  // the page shows one image, its views one channel's
+    throw InputError(radar_path, "channel",
+                     fmt::format("{} channels: the server shows one channel; list one "
+                                 "[[channel]] (ris simulate writes every channel's products)",
+                                 radar.channels.size()));
+  }
   RunRequest r;
   r.scene_path = scene.path;
   r.scene = scene.scene;
@@ -160,7 +166,9 @@ nlohmann::json Session::run_summary() const {
   std::vector<std::string> views = {"slant", "ground", "scene"};
   // The mode's own report (ris/sim/run.h), and its warnings.
   const RunSummary summary = ris::run_summary(r);
-  j["summary"] = run_summary_json(summary);
+  nlohmann::json report = run_summary_json(summary);
+  strip_directories_in(report);  // file names only, never the server's folders
+  j["summary"] = std::move(report);
   if (r.in_memory()) j["warnings"] = summary.warnings;
   if (const SlarRun* slar = slar_image_run(r)) {  // the page's figures of the image
     const SlarGeometry& g = slar->sim.geometry;

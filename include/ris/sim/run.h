@@ -121,6 +121,19 @@ struct SlarRun {
   std::vector<PointTargetIrf> irfs;  // point targets' impulse responses
 };
 
+// A SLAR or incoherent SAR run of a radar with several channels
+// ([[channel]] tables, ris/sim/slar_channels.h) in memory: each channel's
+// run over the one geometry, in the radar file's order. Its products are
+// each channel's, suffixed by the channel's name (ris/sim/slar_channel_products.h).
+struct ChannelRun {
+  std::string name;              // the products' suffix
+  std::string backscatter_path;  // its backscatter source (the run's unless its own)
+  SlarRun run;
+};
+struct MultiChannelSlarRun {
+  std::vector<ChannelRun> channels;
+};
+
 // A PPI run in memory.
 struct PpiRun {
   PpiSimulation sim;
@@ -148,8 +161,8 @@ struct StreamedAcquisitionRun {
   std::string acquisition_path;  // --acquisition
 };
 
-using ModeRun = std::variant<SlarRun, PpiRun, AcquisitionRun, StreamedSlarRun, StreamedPpiRun,
-                             StreamedAcquisitionRun>;
+using ModeRun = std::variant<SlarRun, MultiChannelSlarRun, PpiRun, AcquisitionRun, StreamedSlarRun,
+                             StreamedPpiRun, StreamedAcquisitionRun>;
 
 // How the run's lines were computed: the whole scene in memory, or streamed
 // in blocks (over `ranks` MPI processes).
@@ -200,7 +213,8 @@ struct RunResult {
 };
 
 // The in-memory SLAR/SAR image of a run (a scene's or an acquisition's);
-// nullptr for a PPI or a streamed run.
+// nullptr for a PPI, a multi-channel (its channels are in
+// MultiChannelSlarRun) or a streamed run.
 const SlarRun* slar_image_run(const RunResult& result);
 SlarRun* slar_image_run(RunResult& result);
 

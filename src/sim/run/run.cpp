@@ -17,6 +17,8 @@
 #include "ris/sim/acquisition_stream.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/sar_coherent.h"
+#include "ris/sim/slar_channel_products.h"
+#include "ris/sim/slar_channels.h"
 #include "ris/sim/slar_products.h"
 #include "ris/util/error.h"
 #include "ris/util/process_group.h"
@@ -157,10 +159,50 @@ void check_out_dir(const RunRequest& r, const RadarParams& radar, std::int64_t r
                                : std::string()));
 }
 
+bool several_channels(const RadarParams& radar) {
+  return radar.channels.size() > 1;
+}
+
+// What the engine cannot yet run on several channels, refused before any
+// work naming the key (a radar listing one [[channel]] runs as any other).
+// `how`: "streamed", "acquisition" or "" (an in-memory scene run).
+void check_channels(const RunRequest& r, const RadarParams& radar, std::string_view how,
+                    bool has_targets) {
+  if (!several_channels(radar)) return;
+  const std::string n = std::to_string(radar.channels.size());
+  if (how == "streamed") {
+    throw InputError(radar.source_file, "channel",
+                     n + " channels: streamed runs take one channel; drop --stream and "
+                         "--block-lines (an in-memory run images every channel over one "
+                         "geometry) or list one [[channel]]");
+  }
+  if (how == "acquisition") {
+    throw InputError(radar.source_file, "channel",
+                     n + " channels: a run on an acquisition's grid takes one channel; list "
+                         "one [[channel]]");
+  }
+  if (radar.mode == RadarMode::ppi) {
+    throw InputError(radar.source_file, "channel",
+                     n + " channels: a PPI takes one channel for now; list one [[channel]]");
+  }
+  if (radar.mode == RadarMode::sar && radar.sar.coherent) {
+    throw InputError(radar.source_file, "sar.coherent",
+                     n + " channels: the coherent SAR is a single-channel run for now; set "
+                         "coherent = false or list one [[channel]]");
+  }
+  if (has_targets) {
+    throw InputError(r.targets_path, "--targets",
+                     n + " channels in " + radar.source_file +
+                         ": point targets are placed in single-channel runs only for now; "
+                         "drop --targets or list one [[channel]]");
+  }
+}
+
 void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   res.strategy = RunStrategy::streamed;
   res.ranks = process_group().size();
   res.radar = load_radar_of(r);
+  check_channels(r, res.radar, "streamed", false);
   check_scene_earth(r, res.radar);
   // As the in-memory run (the streams honour the selection and res.info's
   // compression).
@@ -221,6 +263,46 @@ void render_slar_run(SlarRun& run, bool has_targets, std::uint64_t seed) {
   if (has_targets) run.irfs = measure_point_targets(sim, run.pictures, run.coherent);
 }
 
+// A radar with several channels over one geometry, in memory
+// (ris/sim/slar_channels.h): one pass of the line engine, then each
+// channel's speckle and greytones with the run's seed (each channel the
+// bytes its own run gives). A channel's own backscatter source is loaded
+// here.
+void run_channels(RunResult& res, const LoadedSigma0& sigma0, const SlarOptions& options,
+                  const RunCallbacks& cb, std::uint64_t seed) {
+  std::vector<std::shared_ptr<const Sigma0Source>> sources;
+  std::vector<SlarChannel> channels;
+  MultiChannelSlarRun& run = res.run.emplace<MultiChannelSlarRun>();
+  for (const RadarChannel& c : res.radar.channels) {
+    std::shared_ptr<const Sigma0Source> source = sigma0.source;
+    std::string path = sigma0.path;
+    if (!c.backscatter_path.empty()) {
+      source = load_sigma0_source(c.backscatter_path);
+      path = c.backscatter_path;
+    }
+    sources.push_back(source);
+    channels.push_back({*c.radar, source.get(), path});
+    run.channels.push_back({c.name, path, {}});
+  }
+  std::vector<SlarSimulation> sims = simulate_slar_channels(*res.scene, channels, options);
+  for (std::size_t c = 0; c < sims.size(); ++c) {
+    SlarRun& one = run.channels[c].run;
+    one.sim = std::move(sims[c]);
+    for (const std::string& w : one.sim.warnings)
+      warn(cb, "channel " + run.channels[c].name + ": " + w);
+    render_slar_run(one, false, seed);
+  }
+}
+
+// The channels' products as ris/sim/slar_channel_products.h writes them.
+std::vector<SlarChannelProducts> channel_products(const MultiChannelSlarRun& run) {
+  std::vector<SlarChannelProducts> out;
+  for (const ChannelRun& c : run.channels) {
+    out.push_back({c.name, &c.run.sim, &c.run.pictures, c.backscatter_path});
+  }
+  return out;
+}
+
 // Whether an acquisition run streams: on request (--stream, --block-lines),
 // or when its window is over the in-memory run's cap and the run writes
 // products (as a scene too large for memory streams, should_stream). An
@@ -258,6 +340,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   }
   if (cb.progress) cb.progress("reading inputs", 0.0);
   res.radar = load_radar_of(r);
+  check_channels(r, res.radar, "acquisition", false);
   check_product_selection(r.products, acquisition_product_stems(), "--products");
   const Acquisition acq = read_acquisition(r.acquisition_path, r.acquisition);
   require_regular_input(r.dem_path, "--dem");
@@ -398,6 +481,7 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   }
   res.has_targets = !options.targets.empty();
   res.targets_path = r.targets_path;
+  check_channels(r, radar, "", res.has_targets);
   check_out_dir(r, radar, res.scene->rows, res.scene->cols);
 
   if (radar.mode == RadarMode::ppi) {
@@ -406,6 +490,9 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
     for (const std::string& w : run.sim.warnings) warn(cb, w);
     stage("speckle and greytones", 0.9);
     run.pictures = render_ppi(run.sim, r.seed);
+  } else if (several_channels(radar)) {
+    run_channels(res, sigma0, options, cb, r.seed);
+    stage("speckle and greytones", 0.9);
   } else {
     SlarRun& run = res.run.emplace<SlarRun>();
     run.coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
@@ -444,6 +531,13 @@ void rerender(RunResult& res, std::uint64_t seed, const FilmParams* film) {
     ppi->pictures = render_ppi(ppi->sim, seed);
     return;
   }
+  if (auto* multi = std::get_if<MultiChannelSlarRun>(&res.run)) {
+    for (ChannelRun& c : multi->channels) {
+      if (film != nullptr) c.run.sim.radar.film = *film;
+      render_slar_run(c.run, false, seed);
+    }
+    return;
+  }
   SlarRun& run = *slar_image_run(res);
   if (film != nullptr) run.sim.radar.film = *film;
   render_slar_run(run, res.has_targets, seed);
@@ -460,6 +554,9 @@ nlohmann::json run_metadata(const RunResult& res) {
   if (const auto* ppi = std::get_if<PpiRun>(&res.run)) {
     return ppi_metadata(*res.scene, ppi->sim, ppi->pictures, res.info);
   }
+  if (const auto* multi = std::get_if<MultiChannelSlarRun>(&res.run)) {
+    return slar_channels_metadata(*res.scene, channel_products(*multi), res.info);
+  }
   const SlarRun& run = std::get<SlarRun>(res.run);
   return slar_metadata(*res.scene, run.sim, run.pictures, res.info,
                        slar_run_extra_metadata(res, run));
@@ -475,6 +572,8 @@ double write_run_products(const RunResult& res, const std::filesystem::path& out
     write_acquisition_products(out_dir, *a->grid, a->image.sim, a->image.pictures, res.info);
   } else if (const auto* ppi = std::get_if<PpiRun>(&res.run)) {
     write_ppi_products(out_dir, *res.scene, ppi->sim, ppi->pictures, res.info);
+  } else if (const auto* multi = std::get_if<MultiChannelSlarRun>(&res.run)) {
+    write_slar_channel_products(out_dir, *res.scene, channel_products(*multi), res.info);
   } else {
     const SlarRun& run = std::get<SlarRun>(res.run);
     write_slar_products(out_dir, *res.scene, run.sim, run.pictures, res.info,

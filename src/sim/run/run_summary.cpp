@@ -4,11 +4,13 @@
 // serialise the values.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <utility>
 
 #include "ris/sim/acquisition_products.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/run.h"
+#include "ris/sim/slar_channel_products.h"
 #include "ris/sim/slar_products.h"
 
 namespace ris {
@@ -180,6 +182,42 @@ RunSummary summary_of(const SlarRun& run, const RunResult& res) {
   return s;
 }
 
+// One line for the shared image, then one a channel: its band, polarisation
+// and the suffix of its products.
+RunSummary summary_of(const MultiChannelSlarRun& run, const RunResult& res) {
+  const SlarSimulation& first = run.channels.front().run.sim;
+  RunSummary s;
+  s.mode = slar_mode_name(first.radar);
+  const std::size_t n = run.channels.size();
+  s.lines.push_back(simulated_line(res, res.scene->cols, res.scene->rows, "",
+                                   fmt::format(" ({}, {} channels)", s.mode, n),
+                                   {{"mode", s.mode, ""}, {"channels", n, ""}}));
+  s.lines.push_back(slar_image_line(first));
+  s.lines.push_back(geometry_counts(first.geometry));
+  s.products = {"metadata"};
+  for (std::string_view stem : slar_scene_wide_stems()) {
+    if (res.info.products.wants(stem)) s.products.emplace_back(stem);
+  }
+  for (const ChannelRun& c : run.channels) {
+    const RadarParams& radar = c.run.sim.radar;
+    const std::string pol(to_string(radar.polarisation));
+    s.lines.push_back(line(fmt::format("  channel {}: {:.3f} GHz {}, products *_{}", c.name,
+                                       radar.frequency_hz / 1e9, pol, c.name),
+                           {{"channel", c.name, ""},
+                            {"frequency", radar.frequency_hz, "Hz"},
+                            {"polarisation", pol, ""}}));
+    for (const std::string& w : c.run.sim.warnings) s.warnings.push_back(c.name + ": " + w);
+    for (std::string_view stem : slar_product_stems()) {
+      const auto& wide = slar_scene_wide_stems();
+      if (res.info.products.wants(stem) &&
+          std::find(wide.begin(), wide.end(), stem) == wide.end()) {
+        s.products.push_back(std::string(stem) + "_" + c.name);
+      }
+    }
+  }
+  return s;
+}
+
 RunSummary summary_of(const PpiRun& run, const RunResult& res) {
   const PpiSimulation& ppi = run.sim;
   RunSummary s;
@@ -287,6 +325,9 @@ RunSummary run_summary(const RunResult& res) {
 std::string run_kind_name(const RunResult& res) {
   if (!res.in_memory()) return "streamed";
   if (std::holds_alternative<PpiRun>(res.run)) return "ppi";
+  if (const auto* multi = std::get_if<MultiChannelSlarRun>(&res.run)) {
+    return multi->channels.front().run.sim.radar.mode == RadarMode::sar ? "sar" : "slar";
+  }
   const SlarRun& run = *slar_image_run(res);
   if (run.coherent) return "coherent_sar";
   return run.sim.radar.mode == RadarMode::sar ? "sar" : "slar";
