@@ -243,7 +243,7 @@ struct PyResult {
   std::vector<std::string> warnings;
   std::filesystem::path out_dir;  // where the run wrote its products ("" none)
 
-  bool streamed() const { return res->kind == ris::RunKind::streamed; }
+  bool streamed() const { return !res->in_memory(); }
   void require_in_memory() const {
     if (streamed()) {
       throw ris::InputError(res->info.scene_path, "stream",
@@ -252,37 +252,45 @@ struct PyResult {
                                 out_dir.string() + " (read them with GDAL)");
     }
   }
-  const ris::SlarSimulation& slar() const {
+  const ris::SlarRun& slar_run() const {
     require_in_memory();
-    if (!res->slar) {
+    const ris::SlarRun* run = ris::slar_image_run(*res);
+    if (std::holds_alternative<ris::MultiChannelSlarRun>(res->run)) {
+      throw ris::InputError(res->info.radar_path, "channel",
+                            "a multi-channel run: take one channel's arrays with "
+                            "channel(name) (the names: channels)");
+    }
+    if (run == nullptr) {
       throw ris::InputError(res->info.radar_path, "mode",
                             "this product exists for SLAR and SAR runs only (a PPI run: use "
                             "write() and metadata)");
     }
-    return *res->slar;
+    return *run;
   }
-  const ris::SlarPictures& pictures() const {
-    slar();
-    return *res->slar_pictures;
-  }
-  const ris::PpiSimulation& ppi() const {
+  const ris::SlarSimulation& slar() const { return slar_run().sim; }
+  const ris::SlarPictures& pictures() const { return slar_run().pictures; }
+  const ris::PpiRun& ppi_run() const {
     require_in_memory();
-    if (!res->ppi) {
+    const auto* run = std::get_if<ris::PpiRun>(&res->run);
+    if (run == nullptr) {
       throw ris::InputError(res->info.radar_path, "mode",
                             "this product exists for PPI runs only (a SLAR or SAR run: use "
                             "mean_power_w, slant_grey, ...)");
     }
-    return *res->ppi;
+    return *run;
   }
-  const ris::PpiPictures& ppi_pictures() const {
-    ppi();
-    return *res->ppi_pictures;
+  const ris::PpiSimulation& ppi() const { return ppi_run().sim; }
+  const ris::PpiPictures& ppi_pictures() const { return ppi_run().pictures; }
+  // Whether the run was on an acquisition's radar grid (in memory or streamed).
+  bool on_acquisition() const {
+    return std::holds_alternative<ris::AcquisitionRun>(res->run) ||
+           std::holds_alternative<ris::StreamedAcquisitionRun>(res->run);
   }
   // A scene run's scene (an acquisition run has the product's radar grid
   // instead).
   const ris::Scene& scene() const {
     slar();
-    if (res->acquisition) {
+    if (on_acquisition()) {
       throw ris::InputError(res->info.scene_path, "acquisition",
                             "an acquisition run has no scene grid: its products lie on the "
                             "product's radar grid (mean_power_w, local_incidence_deg, "
@@ -292,16 +300,19 @@ struct PyResult {
   }
   const ris::AcquisitionSimulation& acquisition() const {
     slar();
-    if (!res->acquisition) {
+    const auto* run = std::get_if<ris::AcquisitionRun>(&res->run);
+    if (run == nullptr) {
       throw ris::InputError(res->info.scene_path, "acquisition",
                             "this product exists for acquisition runs only (a scene run: "
                             "scene_mask, local_incidence_deg on the scene grid)");
     }
-    return *res->acquisition;
+    return *run->grid;
   }
   // The image of this run's slant-range products: the SLAR/SAR image or the
   // PPI's B-scope (rays as lines).
-  const ris::SlarImage& slant_image() const { return res->ppi ? ppi().bscope : slar().image; }
+  const ris::SlarImage& slant_image() const {
+    return std::holds_alternative<ris::PpiRun>(res->run) ? ppi().bscope : slar().image;
+  }
   std::vector<py::ssize_t> bscope_shape() const { return {ppi().bscope.lines, ppi().bscope.bins}; }
   std::vector<py::ssize_t> scope_shape() const {
     return {ppi().scope_grid.size, ppi().scope_grid.size};
@@ -317,19 +328,42 @@ struct PyResult {
       std::ifstream in(out_dir / "metadata.json");
       return nlohmann::json::parse(in);
     }
-    if (res->acquisition) {
-      return ris::acquisition_metadata(*res->acquisition, *res->slar, *res->slar_pictures,
-                                       res->info);
+    return ris::run_metadata(*res);
+  }
+
+  // A multi-channel run's channel names, in the radar file's order (empty
+  // for a one-channel run).
+  std::vector<std::string> channel_names() const {
+    std::vector<std::string> out;
+    if (const auto* multi = std::get_if<ris::MultiChannelSlarRun>(&res->run)) {
+      for (const ris::ChannelRun& c : multi->channels) out.push_back(c.name);
     }
-    if (res->kind == ris::RunKind::ppi) {
-      return ris::ppi_metadata(*res->scene, *res->ppi, *res->ppi_pictures, res->info);
+    return out;
+  }
+  // One channel of a multi-channel run as a one-channel result (its arrays
+  // copied; the scene shared).
+  PyResult channel(const std::string& name) const {
+    const auto* multi = std::get_if<ris::MultiChannelSlarRun>(&res->run);
+    if (multi == nullptr) {
+      throw ris::InputError(res->info.radar_path, "channel",
+                            "not a multi-channel run (its radar lists no [[channel]] tables)");
     }
-    nlohmann::json extra = nlohmann::json::object();
-    if (res->has_targets) {
-      extra["point_targets"] = ris::point_target_irf_json(res->irfs, *res->slar, res->targets_path,
-                                                          res->kind == ris::RunKind::coherent_sar);
+    for (const ris::ChannelRun& c : multi->channels) {
+      if (c.name != name) continue;
+      PyResult out;
+      out.res = std::make_shared<ris::RunResult>();
+      out.res->run = c.run;
+      out.res->radar = c.run.sim.radar;
+      out.res->info = res->info;
+      out.res->info.backscatter_path = c.backscatter_path;
+      out.res->scene = res->scene;
+      out.warnings = warnings;
+      return out;
     }
-    return ris::slar_metadata(*res->scene, *res->slar, *res->slar_pictures, res->info, extra);
+    std::string names;
+    for (const std::string& n : channel_names()) names += (names.empty() ? "" : ", ") + n;
+    throw ris::InputError(res->info.radar_path, "channel",
+                          "no channel \"" + name + "\" (the channels: " + names + ")");
   }
 
   // A streamed run's blocks and passes (`ris simulate --stream`'s report).
@@ -338,15 +372,21 @@ struct PyResult {
       throw ris::InputError(res->info.scene_path, "stream", "not a streamed run");
     }
     py::dict d;
-    if (res->ppi_streamed) {
-      const ris::PpiStreamSummary& p = *res->ppi_streamed;
+    if (const auto* ppi = std::get_if<ris::StreamedPpiRun>(&res->run)) {
+      const ris::PpiStreamSummary& p = ppi->summary;
       d["blocks"] = p.blocks;
       d["block_lines"] = p.block_rays;
       d["scene_windows"] = p.windows;
       d["stage_seconds"] = p.stage_seconds;
       return d;
     }
-    const ris::SlarStreamSummary& s = *res->streamed;
+    if (const auto* acq = std::get_if<ris::StreamedAcquisitionRun>(&res->run)) {
+      d["blocks"] = acq->summary.blocks;
+      d["block_lines"] = acq->summary.block_lines;
+      d["stage_seconds"] = acq->summary.stage_seconds;
+      return d;
+    }
+    const ris::SlarStreamSummary& s = std::get<ris::StreamedSlarRun>(res->run).summary;
     d["blocks"] = s.blocks;
     d["block_lines"] = s.block_lines;
     d["stage_seconds"] = s.stage_seconds;
@@ -857,7 +897,7 @@ void bind_result_slar(py::class_<PyResult>& c) {
       .def("local_incidence_deg",
            [](py::object self) {
              const PyResult& r = self.cast<const PyResult&>();
-             if (r.res->acquisition) {  // local_incidence.tif, on the radar grid
+             if (r.on_acquisition()) {  // local_incidence.tif, on the radar grid
                return view(r.acquisition().local_incidence_deg.data(), r.slant_shape(), self);
              }
              return view(r.slar().scene_maps.local_incidence_deg.data(), r.scene_shape(), self);
@@ -941,22 +981,12 @@ void bind_result_ppi(py::class_<PyResult>& c) {
 void bind_result(py::module_& m) {
   py::class_<PyResult> c(m, "_Result");
   c.def_property_readonly("warnings", [](const PyResult& r) { return r.warnings; })
-      .def_property_readonly("kind",
-                             [](const PyResult& r) {
-                               switch (r.res->kind) {
-                                 case ris::RunKind::slar:
-                                   return "slar";
-                                 case ris::RunKind::sar:
-                                   return "sar";
-                                 case ris::RunKind::coherent_sar:
-                                   return "coherent_sar";
-                                 case ris::RunKind::ppi:
-                                   return "ppi";
-                                 case ris::RunKind::streamed:
-                                   return "streamed";
-                               }
-                               return "";
-                             })
+      .def_property_readonly("kind", [](const PyResult& r) { return ris::run_kind_name(*r.res); })
+      .def_property_readonly(
+          "summary",
+          [](const PyResult& r) {
+            return json_to_python(ris::run_summary_json(ris::run_summary(*r.res)));
+          })
       .def_property_readonly("seed", [](const PyResult& r) { return r.res->info.seed; })
       .def("metadata", [](const PyResult& r) { return json_to_python(r.metadata()); });
   bind_result_slar(c);
@@ -974,16 +1004,18 @@ void bind_result(py::module_& m) {
       .def("film",
            [](const PyResult& r) {
              r.require_in_memory();
-             return film_list(r.res->slar ? r.res->slar->radar.film : r.res->ppi->radar.film);
+             const ris::SlarRun* slar = ris::slar_image_run(*r.res);
+             return film_list(slar != nullptr ? slar->sim.radar.film : r.ppi().radar.film);
            })
       .def("write", [](const PyResult& r, const std::string& dir) {
         py::gil_scoped_release nogil;
         return ris::write_run_products(*r.res, dir);
       });
-  c.def_property_readonly("acquisition",
-                          [](const PyResult& r) { return r.res->acquisition != nullptr; })
+  c.def_property_readonly("acquisition", [](const PyResult& r) { return r.on_acquisition(); })
       .def_property_readonly("out_dir", [](const PyResult& r) { return r.out_dir.string(); })
-      .def("stream_summary", &PyResult::stream_summary);
+      .def("stream_summary", &PyResult::stream_summary)
+      .def_property_readonly("channels", &PyResult::channel_names)
+      .def("channel", &PyResult::channel);
   py::class_<PyRunOptions>(m, "_RunOptions")
       .def(py::init<>())
       .def_readwrite("scene_path", &PyRunOptions::scene_path)

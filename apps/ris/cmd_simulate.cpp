@@ -33,9 +33,7 @@
 
 #include "acquisition_options.h"
 #include "command_registry.h"
-#include "ris/sim/ppi_products.h"
 #include "ris/sim/run.h"
-#include "ris/sim/slar_products.h"
 #include "ris/util/process_group.h"
 #include "ris/util/progress.h"
 #include "run_input_options.h"
@@ -55,122 +53,6 @@ struct SimulateArgs {
 
 std::string absolute_out(const std::filesystem::path& out) {
   return std::filesystem::absolute(out).lexically_normal().string();
-}
-
-void print_geometry_counts(const SlarGeometry& g) {
-  const double samples = double(g.lines) * double(g.samples);
-  fmt::print(
-      "  shadow {:.2f}%, layover {:.2f}%, back-facing {:.2f}% of samples; {} no-data cells\n",
-      100.0 * double(g.shadow_samples) / samples, 100.0 * double(g.layover_samples) / samples,
-      100.0 * double(g.back_facing_samples) / samples, g.nodata_cells);
-}
-
-// The point targets' measurements and the names of those hidden (an
-// in-memory or streamed SLAR/SAR run).
-void print_point_targets(const std::vector<PointTargetIrf>& irfs,
-                         const std::vector<std::string>& hidden) {
-  for (const PointTargetIrf& t : irfs) {
-    fmt::print(
-        "  target at R {:.1f} m, s {:.1f} m: 3 dB width {:.2f} m (range) x {:.2f} m (azimuth), "
-        "PSLR {:.1f} dB, ISLR {:.1f} dB\n",
-        t.target.slant_range_m, t.target.along_m, t.irf.range.width_m, t.irf.azimuth.width_m,
-        t.irf.pslr_db, t.irf.islr_db);
-  }
-  for (const std::string& h : hidden) fmt::print("  target {} hidden\n", h);
-}
-
-void print_ppi(const RunRequest& r, const RunResult& res) {
-  const PpiSimulation& ppi = *res.ppi;
-  const SlarGeometry& g = ppi.geometry.rays;
-  fmt::print("simulated {} ({} x {} cells) with {} (PPI)\n", r.scene_path, res.scene->cols,
-             res.scene->rows, r.radar_path);
-  fmt::print("  B-scope: {} rays x {} range bins; scope {} x {} pixels of {:.2f} m\n",
-             ppi.bscope.lines, ppi.bscope.bins, ppi.scope_grid.size, ppi.scope_grid.size,
-             ppi.scope_grid.pixel_m);
-  fmt::print("  antenna at {:.1f} m (terrain {:.1f} m); shadow {:.2f}% of ray samples\n",
-             ppi.geometry.altitude_m, ppi.geometry.site_ground_m,
-             100.0 * double(g.shadow_samples) / (double(g.lines) * double(g.samples)));
-  if (res.has_targets) {
-    fmt::print("  point targets: {} seen, {} hidden\n", ppi.point_returns.size(),
-               ppi.hidden_targets.size());
-  }
-}
-
-void print_slar(const RunRequest& r, const RunResult& res) {
-  const SlarSimulation& sim = *res.slar;
-  const char* mode = res.kind == RunKind::coherent_sar ? "coherent SAR"
-                     : res.kind == RunKind::sar        ? "SAR"
-                                                       : "SLAR";
-  fmt::print("simulated {} ({} x {} cells) with {} ({})\n", r.scene_path, res.scene->cols,
-             res.scene->rows, r.radar_path, mode);
-  fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
-             sim.image.lines, sim.image.bins, sim.ground_grid.count);
-  print_geometry_counts(sim.geometry);
-  print_point_targets(res.irfs, sim.hidden_targets);
-}
-
-// sim: the run's (res.slar in memory; a.sim streamed).
-void print_acquisition(const RunRequest& r, const RunResult& res, const SlarSimulation& sim) {
-  const AcquisitionSimulation& a = *res.acquisition;
-  const GridWindow& w = a.window;
-  fmt::print("simulated {} on {} ({}) with {} ({}, {} Earth)\n", r.dem_path, r.acquisition_path,
-             a.mission, r.radar_path, res.kind == RunKind::sar ? "SAR" : "SLAR",
-             a.earth == EarthModel::flat ? "flat" : "ellipsoidal");
-  fmt::print(
-      "  image: lines {}..{} x bins {}..{} of the product's {} x {} grid; {:.2f} m "
-      "between lines on the ground, {} terrain points per line\n",
-      w.line0, w.line0 + w.lines - 1, w.bin0, w.bin0 + w.bins - 1, a.grid.lines, a.grid.bins,
-      a.ground_azimuth_spacing_m, a.profile_points);
-  const SlarGeometry& g = sim.geometry;
-  const double samples = double(g.lines) * double(g.samples);
-  fmt::print("  shadow {:.2f}%, layover {:.2f}%, back-facing {:.2f}% of terrain points\n",
-             100.0 * double(g.shadow_samples) / samples,
-             100.0 * double(g.layover_samples) / samples,
-             100.0 * double(g.back_facing_samples) / samples);
-}
-
-// Each pass of a streamed run: wall time and this process's CPU time.
-void print_stage_times(const SlarStreamSummary& s) {
-  for (std::size_t i = 0; i < s.stage_seconds.size(); ++i) {
-    const auto& [name, t] = s.stage_seconds[i];
-    fmt::print("  {:.2f} s  {} ({:.2f} s CPU)\n", t, name,
-               i < s.stage_cpu_seconds.size() ? s.stage_cpu_seconds[i] : 0.0);
-  }
-}
-
-void print_streamed(const RunRequest& r, const RunResult& res) {
-  if (res.ppi_streamed) {
-    const PpiStreamSummary& p = *res.ppi_streamed;
-    fmt::print(
-        "simulated {} ({} x {} cells, streamed in {} blocks of {} rays, {} scene windows) "
-        "with {}\n",
-        r.scene_path, p.grid.cols, p.grid.rows, p.blocks, p.block_rays, p.windows, r.radar_path);
-    fmt::print("  B-scope: {} rays x {} range bins; scope {} x {} pixels\n", p.sim.bscope.lines,
-               p.sim.bscope.bins, p.sim.scope_grid.size, p.sim.scope_grid.size);
-    print_geometry_counts(p.sim.geometry.rays);
-    if (res.has_targets) {
-      fmt::print("  point targets: {} seen, {} hidden\n", p.sim.point_returns.size(),
-                 p.sim.hidden_targets.size());
-    }
-    for (const auto& [name, t] : p.stage_seconds) fmt::print("  {:.2f} s  {}\n", t, name);
-    return;
-  }
-  const SlarStreamSummary& s = *res.streamed;
-  if (res.acquisition) {  // ris/sim/acquisition_stream.h
-    print_acquisition(r, res, s.sim);
-    fmt::print("  streamed in {} blocks of {} lines\n", s.blocks, s.block_lines);
-    print_stage_times(s);
-    for (const auto& [name, t] : s.cpu_parts) fmt::print("  {:.2f} s  {}\n", t, name);
-    return;
-  }
-  fmt::print("simulated {} ({} x {} cells, streamed in {} blocks of {} lines) with {}\n",
-             r.scene_path, s.grid.cols, s.grid.rows, s.blocks, s.block_lines, r.radar_path);
-  fmt::print("  image: {} azimuth lines x {} range bins (slant), {} ground-range pixels\n",
-             s.sim.image.lines, s.sim.image.bins, s.sim.ground_grid.count);
-  print_geometry_counts(s.sim.geometry);
-  print_point_targets(s.irfs, s.sim.hidden_targets);
-  print_stage_times(s);
-  for (const auto& [name, t] : s.cpu_parts) fmt::print("  {:.2f} s  {}\n", t, name);
 }
 
 void run_simulate(SimulateArgs& a) {
@@ -201,18 +83,9 @@ void run_simulate(SimulateArgs& a) {
   const RunResult res = run_simulation(r, callbacks);
   // The other ranks of an MPI run computed blocks; rank 0 wrote and reports.
   if (process_group().rank() != 0) return;
-  if (res.kind == RunKind::streamed) {
-    print_streamed(r, res);
-  } else {
-    bar->finish();
-    if (res.acquisition) {
-      print_acquisition(r, res, *res.slar);
-    } else if (res.kind == RunKind::ppi) {
-      print_ppi(r, res);
-    } else {
-      print_slar(r, res);
-    }
-  }
+  if (res.in_memory()) bar->finish();  // a streamed run's passes drew their own
+  // The mode's own report (ris/sim/run.h run_summary), then time and folder.
+  for (const SummaryLine& line : run_summary(res).lines) fmt::print("{}\n", line.text);
   fmt::print("  {:.2f} s; outputs in {}\n", res.seconds, absolute_out(a.out));
 }
 

@@ -394,6 +394,13 @@ class Result:
 
     kind = property(lambda self: self._impl.kind,
                     doc="'slar', 'sar', 'coherent_sar', 'ppi' or 'streamed'.")
+    summary = property(lambda self: self._impl.summary,
+                       doc="The run's report, as `ris simulate` prints it: a dict of mode, "
+                           "strategy ('in_memory' or 'streamed'), ranks, lines (each its text "
+                           "and values: key, value, unit), warnings and products (file stems).")
+    channels = property(lambda self: list(self._impl.channels),
+                        doc="A multi-channel run's channel names ([[channel]] tables; empty "
+                            "for a one-channel run).")
     acquisition = property(lambda self: self._impl.acquisition,
                            doc="Whether the run was on an acquisition's radar grid.")
     out_dir = property(lambda self: self._impl.out_dir or None,
@@ -472,6 +479,11 @@ class Result:
     def site_m(self):
         """PPI: the radar site's (x, y) in the scene's frame, metres."""
         return self._impl.site_m()
+
+    def channel(self, name):
+        """One channel of a multi-channel run as a one-channel Result (its
+        arrays are that channel's; write() writes it alone, unsuffixed)."""
+        return Result(self._impl.channel(name), self.scene)
 
     @property
     def metadata(self):

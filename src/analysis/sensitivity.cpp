@@ -68,12 +68,12 @@ Images simulate(const SensitivityStudy& st, std::shared_ptr<const Scene> scene,
   Images out;
   const SlarImage* img = nullptr;
   std::span<const float> speckled;
-  if (res.slar) {
-    img = &res.slar->image;
-    speckled = res.slar_pictures->speckled_power_w;
-  } else if (res.ppi) {
-    img = &res.ppi->bscope;
-    speckled = res.ppi_pictures->speckled_power_w;
+  if (const SlarRun* slar = slar_image_run(res)) {
+    img = &slar->sim.image;
+    speckled = slar->pictures.speckled_power_w;
+  } else if (const auto* ppi = std::get_if<PpiRun>(&res.run)) {
+    img = &ppi->sim.bscope;
+    speckled = ppi->pictures.speckled_power_w;
   } else {
     throw InputError("scene", "sensitivity", "a streamed run keeps no images to compare");
   }

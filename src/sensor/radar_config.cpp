@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
@@ -454,7 +458,10 @@ void parse_range_window(ConfigTable& t, RadarParams& r) {
   }
 }
 
-RadarParams radar_from_toml(const toml::table& doc, const std::string& source_file) {
+namespace {
+
+// A radar file without [[channel]] tables (or one channel's view of one).
+RadarParams single_radar_from_toml(const toml::table& doc, const std::string& source_file) {
   ConfigTable t(doc, source_file, "");
   RadarParams r;
   r.source_file = source_file;
@@ -590,6 +597,111 @@ RadarParams radar_from_toml(const toml::table& doc, const std::string& source_fi
   if (auto film = t.subtable("film")) parse_film(*film, r.film, r.switches, r.fading);
   t.finish();
   return r;
+}
+
+// The keys a [[channel]] table may set: the file's own keys of the same
+// name, for that channel (frequency and polarisation required).
+constexpr std::array<const char*, 4> kChannelRadarKeys{"frequency", "polarisation",
+                                                       "transmit_power", "antenna_gain_db"};
+
+// A channel's name, the suffix of its products' file names: letters, digits,
+// '-' and '_' (default: its polarisation in lower case, "hh").
+std::string channel_name(ConfigTable& c, Polarisation pol) {
+  std::string name = c.get_string_or("name", "");
+  if (!c.has("name")) {
+    name = std::string(to_string(pol));
+    for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return name;
+  }
+  const bool ok = !name.empty() && std::all_of(name.begin(), name.end(), [](char ch) {
+    return std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_';
+  });
+  if (!ok) {
+    c.fail("name", fmt::format("\"{}\" cannot be a file-name suffix: expected letters, digits, "
+                               "'-' or '_' (e.g. \"c_hh\")",
+                               name));
+  }
+  return name;
+}
+
+// A radar file with [[channel]] tables: each channel is the radar the file
+// gives with the channel's keys at its top level, checked as one; the
+// channel's own keys are checked first so that a message names them
+// ("channel[1].frequency"). The result is the first channel's radar with
+// `channels` filled.
+RadarParams radar_with_channels(const toml::table& doc, const std::string& source_file) {
+  ConfigTable top(doc, source_file, "");
+  for (const char* k : {"frequency", "polarisation"}) {
+    if (top.has(k)) {
+      top.fail(k, fmt::format("a radar with [[channel]] tables gives each channel its {0}: move "
+                              "the top-level {0} into the [[channel]] tables (or drop the "
+                              "[[channel]] tables for a one-channel radar)",
+                              k));
+    }
+  }
+  std::vector<ConfigTable> tables = top.table_array("channel");
+  if (tables.empty()) top.fail("channel", "expected one or more [[channel]] tables");
+  const toml::array* array = doc["channel"].as_array();
+  RIS_CHECK(array != nullptr);  // table_array refused anything else
+  toml::table base = doc;
+  base.erase("channel");
+  const std::filesystem::path folder = std::filesystem::path(source_file).parent_path();
+  std::vector<RadarChannel> channels;
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    ConfigTable& c = tables[i];
+    within(c, "frequency", get_positive(c, "frequency", Quantity::frequency, "Hz"), kFrequencyHz);
+    Polarisation pol = Polarisation::HH;
+    try {
+      pol = parse_polarisation(c.get_string("polarisation"));
+    } catch (const std::invalid_argument& e) {
+      c.fail("polarisation", e.what());
+    }
+    if (c.has("transmit_power")) {
+      within(c, "transmit_power", get_positive(c, "transmit_power", Quantity::power, "W"),
+             kTransmitPowerW);
+    }
+    if (c.has("antenna_gain_db")) {
+      const double gain_db = c.get_double("antenna_gain_db");
+      if (!std::isfinite(gain_db)) c.fail("antenna_gain_db", "expected a finite number of dB");
+      within(c, "antenna_gain_db", gain_db, kGainDb);
+    }
+    RadarChannel ch;
+    ch.name = channel_name(c, pol);
+    for (const RadarChannel& other : channels) {
+      if (other.name == ch.name) {
+        c.fail(c.has("name") ? "name" : "polarisation",
+               fmt::format("two channels are named \"{}\" (a channel's name defaults to its "
+                           "polarisation): give each a name of its own, e.g. name = \"l_{}\"",
+                           ch.name, ch.name));
+      }
+    }
+    if (auto bs = c.get_string_opt("backscatter")) {
+      if (bs->empty()) c.fail("backscatter", "expected the path of a backscatter library or table");
+      const std::filesystem::path p(*bs);
+      ch.backscatter_path = p.is_absolute() ? p.string() : (folder / p).string();
+    }
+    c.finish();
+    // The channel's radar: the file's keys, the channel's at the top level.
+    toml::table one = base;
+    const toml::node* element = array->get(i);
+    const toml::table* own = element != nullptr ? element->as_table() : nullptr;
+    RIS_CHECK(own != nullptr);  // table_array checked every element
+    for (const char* k : kChannelRadarKeys) {
+      if (const toml::node* n = own->get(k)) one.insert_or_assign(k, *n);
+    }
+    ch.radar = std::make_shared<const RadarParams>(single_radar_from_toml(one, source_file));
+    channels.push_back(std::move(ch));
+  }
+  RadarParams r = *channels.front().radar;
+  r.channels = std::move(channels);
+  return r;
+}
+
+}  // namespace
+
+RadarParams radar_from_toml(const toml::table& doc, const std::string& source_file) {
+  if (doc.contains("channel")) return radar_with_channels(doc, source_file);
+  return single_radar_from_toml(doc, source_file);
 }
 
 RadarParams load_radar(const std::string& path) {

@@ -138,6 +138,20 @@ nlohmann::json radar_to_json(const RadarParams& r) {
     track["near_edge_distance_m"] = t.near_edge_ground_m;
   }
   j["track"] = track;
+  // A multi-channel radar: each channel's own keys (a one-channel radar has
+  // none, and its JSON is as it always was).
+  if (!r.channels.empty()) {
+    json channels = json::array();
+    for (const RadarChannel& c : r.channels) {
+      channels.push_back({{"name", c.name},
+                          {"frequency_hz", c.radar->frequency_hz},
+                          {"polarisation", std::string(to_string(c.radar->polarisation))},
+                          {"transmit_power_w", c.radar->transmit_power_w},
+                          {"peak_gain", c.radar->peak_gain},
+                          {"backscatter", c.backscatter_path}});
+    }
+    j["channels"] = channels;
+  }
   return finish_common(j, r);
 }
 

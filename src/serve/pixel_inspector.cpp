@@ -51,8 +51,8 @@ nlohmann::json number(double v) {
 
 // The slant image pixel (line, bin): its own values.
 nlohmann::json slant_pixel(const RunResult& run, int line, int bin) {
-  const SlarSimulation& sim = *run.slar;
-  const SlarPictures& pic = *run.slar_pictures;
+  const SlarSimulation& sim = slar_image_run(run)->sim;
+  const SlarPictures& pic = slar_image_run(run)->pictures;
   const std::size_t i = sim.image.index(line, bin);
   const double R = sim.image.range.centre_m(bin);
   // Incidence at that range over a flat datum: cos(theta) = H / R.
@@ -74,15 +74,15 @@ nlohmann::json slant_pixel(const RunResult& run, int line, int bin) {
 // greytone and flags, and the slant pixel at the same range,
 // R = sqrt(u^2 + (H - h_ref)^2) (ris/image/ground_range.h).
 nlohmann::json ground_pixel(const RunResult& run, int line, int j) {
-  const SlarSimulation& sim = *run.slar;
+  const SlarSimulation& sim = slar_image_run(run)->sim;
   const GroundRangeGrid& g = sim.ground_grid;
   const std::size_t i = static_cast<std::size_t>(line) * g.count + j;
   const double u = g.centre_m(j);
   const double R = std::hypot(u, g.altitude_m - g.reference_height_m);
   nlohmann::json out = {{"line", line},
                         {"ground_range_m", u},
-                        {"greytone", run.slar_pictures->ground_grey[i]},
-                        {"flags", flags_json(run.slar_pictures->ground_mask[i], false)}};
+                        {"greytone", slar_image_run(run)->pictures.ground_grey[i]},
+                        {"flags", flags_json(slar_image_run(run)->pictures.ground_mask[i], false)}};
   const int bin =
       static_cast<int>(std::floor((R - sim.image.range.near_m) / sim.image.range.bin_m));
   if (bin >= 0 && bin < sim.image.bins) out["pixel"] = slant_pixel(run, line, bin);
@@ -96,7 +96,7 @@ nlohmann::json ground_pixel(const RunResult& run, int line, int j) {
 // cell lies in the image at all.
 std::optional<std::pair<int, int>> scene_cell_of_pixel(const RunResult& run, int line, int bin) {
   const Scene& scene = *run.scene;
-  const SlarSimulation& sim = *run.slar;
+  const SlarSimulation& sim = slar_image_run(run)->sim;
   std::vector<std::pair<int, int>> exact;
   std::optional<std::pair<int, int>> nearest;
   double best = INFINITY;
@@ -160,7 +160,7 @@ void add_map_position(const Scene& scene, int row, int col, nlohmann::json& j) {
 
 nlohmann::json scene_cell(const RunResult& run, const Sigma0Source& sigma0, int col, int row) {
   const Scene& scene = *run.scene;
-  const SlarSimulation& sim = *run.slar;
+  const SlarSimulation& sim = slar_image_run(run)->sim;
   const std::size_t i = scene.index(row, col);
   nlohmann::json j = {{"row", row}, {"col", col}};
   add_map_position(scene, row, col, j);
@@ -198,11 +198,11 @@ nlohmann::json scene_cell(const RunResult& run, const Sigma0Source& sigma0, int 
 
 nlohmann::json inspect_pixel(const RunResult& run, const Sigma0Source& sigma0,
                              const std::string& view, int x, int y) {
-  if (run.kind == RunKind::streamed) {
+  if (!run.in_memory()) {
     throw InputError("request", "view", "a streamed run keeps no images");
   }
-  if (run.kind == RunKind::ppi) {
-    const PpiScopeGrid& g = run.ppi->scope_grid;
+  if (const auto* ppi = std::get_if<PpiRun>(&run.run)) {
+    const PpiScopeGrid& g = ppi->sim.scope_grid;
     if (view != "slant") throw InputError("request", "view", "a PPI run is inspected on its scope");
     check_inside(x, y, g.size, g.size, view);
     const std::size_t i = static_cast<std::size_t>(y) * g.size + x;
@@ -211,17 +211,19 @@ nlohmann::json inspect_pixel(const RunResult& run, const Sigma0Source& sigma0,
             {"y", y},
             {"east_m", g.east_m(x)},
             {"north_m", g.north_m(y)},
-            {"speckled_power_w", number(run.ppi_pictures->scope_power_w[i])},
-            {"greytone", run.ppi_pictures->scope_grey[i]},
-            {"flags", flags_json(run.ppi_pictures->scope_mask[i], false)}};
+            {"speckled_power_w", number(ppi->pictures.scope_power_w[i])},
+            {"greytone", ppi->pictures.scope_grey[i]},
+            {"flags", flags_json(ppi->pictures.scope_mask[i], false)}};
   }
+  const SlarRun* slar = slar_image_run(run);
+  if (slar == nullptr) throw InputError("request", "view", "expected a SLAR, SAR or PPI run");
   nlohmann::json j;
   if (view == "slant") {
-    check_inside(x, y, run.slar->image.bins, run.slar->image.lines, view);
+    check_inside(x, y, slar->sim.image.bins, slar->sim.image.lines, view);
     j = slant_pixel(run, y, x);
     add_scene_cell(run, y, x, j);
   } else if (view == "ground") {
-    check_inside(x, y, run.slar->ground_grid.count, run.slar->image.lines, view);
+    check_inside(x, y, slar->sim.ground_grid.count, slar->sim.image.lines, view);
     j = ground_pixel(run, y, x);
     if (j.contains("pixel")) add_scene_cell(run, y, j["pixel"]["bin"].get<int>(), j);
   } else if (view == "scene" || view == "geocoded") {

@@ -21,8 +21,11 @@ namespace {
   throw InputError("request", "view", "no view \"" + view + "\": " + why);
 }
 
-bool is_ppi(const RunResult& run) {
-  return run.kind == RunKind::ppi;
+// The run's in-memory image, or a refusal naming the view.
+const SlarRun& slar_of(const RunResult& run, const std::string& view, const char* why) {
+  const SlarRun* slar = slar_image_run(run);
+  if (slar == nullptr) no_view(view, why);
+  return *slar;
 }
 
 template <typename Vec>
@@ -51,7 +54,7 @@ constexpr std::array<MaskColour, 4> kMasks{{
 }  // namespace
 
 ViewPixels view_pixels(const RunResult& run, const std::string& view) {
-  if (run.kind == RunKind::streamed) no_view(view, "a streamed run keeps no images");
+  if (!run.in_memory()) no_view(view, "a streamed run keeps no images");
   if (view == "scene") {
     ViewPixels p;
     p.cols = run.scene->cols;
@@ -60,16 +63,17 @@ ViewPixels view_pixels(const RunResult& run, const std::string& view) {
     p.data = shaded_category_rgb(*run.scene, ScenePreviewOptions{});
     return p;
   }
-  if (is_ppi(run)) {
-    const PpiPictures& pic = *run.ppi_pictures;
+  if (const auto* ppi = std::get_if<PpiRun>(&run.run)) {
+    const PpiPictures& pic = ppi->pictures;
     if (view == "slant") {
-      return grey(pic.scope_grey, run.ppi->scope_grid.size, run.ppi->scope_grid.size);
+      return grey(pic.scope_grey, ppi->sim.scope_grid.size, ppi->sim.scope_grid.size);
     }
-    if (view == "ground") return grey(pic.bscope_grey, run.ppi->bscope.bins, run.ppi->bscope.lines);
+    if (view == "ground") return grey(pic.bscope_grey, ppi->sim.bscope.bins, ppi->sim.bscope.lines);
     no_view(view, "a PPI run has the views slant (the scope), ground (the B-scope) and scene");
   }
-  const SlarSimulation& sim = *run.slar;
-  const SlarPictures& pic = *run.slar_pictures;
+  const SlarRun& slar = slar_of(run, view, "expected a SLAR, SAR or PPI run");
+  const SlarSimulation& sim = slar.sim;
+  const SlarPictures& pic = slar.pictures;
   if (view == "slant") return grey(pic.slant_grey, sim.image.bins, sim.image.lines);
   if (view == "ground") return grey(pic.ground_grey, sim.ground_grid.count, sim.image.lines);
   if (view == "geocoded") {
@@ -86,10 +90,8 @@ std::vector<std::uint8_t> view_png(const RunResult& run, const std::string& view
 
 std::vector<std::uint8_t> overlay_png(const RunResult& run, const std::string& view,
                                       const std::string& masks) {
-  if (run.kind == RunKind::streamed || is_ppi(run)) {
-    no_view(view, "mask overlays are drawn for SLAR and SAR runs");
-  }
-  const SlarSimulation& sim = *run.slar;
+  const SlarSimulation& sim =
+      slar_of(run, view, "mask overlays are drawn for SLAR and SAR runs").sim;
   const bool slant = view == "slant";
   if (!slant && view != "scene" && view != "geocoded") {
     no_view(view, "overlays exist for slant, scene and geocoded");
@@ -130,22 +132,23 @@ std::vector<std::uint8_t> overlay_png(const RunResult& run, const std::string& v
 }
 
 std::string shadow_map(const RunResult& run) {
-  if (run.kind == RunKind::streamed || is_ppi(run)) {
+  const SlarRun* slar = slar_image_run(run);
+  if (slar == nullptr) {
     throw InputError("request", "", "the shadow map is made for SLAR and SAR runs");
   }
-  return shadow_map_text(run.slar->image);
+  return shadow_map_text(slar->sim.image);
 }
 
 nlohmann::json greytone_histogram(const RunResult& run) {
   std::vector<std::int64_t> counts(256, 0);
-  if (run.kind == RunKind::slar || run.kind == RunKind::sar || run.kind == RunKind::coherent_sar) {
-    const auto& grey = run.slar_pictures->slant_grey;
-    const auto& mask = run.slar->image.mask;
+  if (const SlarRun* slar = slar_image_run(run)) {
+    const auto& grey = slar->pictures.slant_grey;
+    const auto& mask = slar->sim.image.mask;
     for (std::size_t i = 0; i < grey.size(); ++i) {
       if ((mask[i] & pixel_flag::kNoData) == 0) ++counts[grey[i]];
     }
-  } else if (is_ppi(run)) {
-    const PpiPictures& pic = *run.ppi_pictures;
+  } else if (const auto* ppi = std::get_if<PpiRun>(&run.run)) {
+    const PpiPictures& pic = ppi->pictures;
     for (std::size_t i = 0; i < pic.scope_grey.size(); ++i) {
       if ((pic.scope_mask[i] & pixel_flag::kNoData) == 0) ++counts[pic.scope_grey[i]];
     }
@@ -163,18 +166,19 @@ nlohmann::json map_furniture(const RunResult& run, const Sigma0Source& sigma0) {
     key.push_back({{"mask", m.name}, {"rgba", m.rgba}});
   }
   out["overlay_key"] = key;
-  if (run.kind == RunKind::streamed) return out;
-  const bool ppi = is_ppi(run);
+  if (!run.in_memory()) return out;
+  const auto* ppi = std::get_if<PpiRun>(&run.run);
+  const SlarRun* slar = slar_image_run(run);
   nlohmann::json legend = nlohmann::json::array();
-  for (const std::uint16_t c : ppi ? run.ppi->categories : run.slar->categories) {
+  for (const std::uint16_t c : ppi != nullptr ? ppi->sim.categories : slar->sim.categories) {
     const Rgb8 rgb = category_colour(c);
     legend.push_back({{"id", c},
                       {"name", sigma0.has_category(c) ? sigma0.category_name(c) : ""},
                       {"rgb", {rgb.r, rgb.g, rgb.b}}});
   }
   out["legend"] = legend;
-  if (ppi) return out;
-  const SlarSimulation& sim = *run.slar;
+  if (ppi != nullptr) return out;
+  const SlarSimulation& sim = slar->sim;
   out["range_bin_m"] = sim.image.range.bin_m;
   out["line_spacing_m"] = sim.image.line_spacing_m;
   // Heading of the flight, clockwise from north (scene y): lines run along it.
@@ -186,8 +190,13 @@ nlohmann::json map_furniture(const RunResult& run, const Sigma0Source& sigma0) {
 }
 
 nlohmann::json sigma0_curves(const RunResult& run, const Sigma0Source& sigma0) {
-  const bool ppi = is_ppi(run);
-  const std::vector<std::uint16_t>& categories = ppi ? run.ppi->categories : run.slar->categories;
+  const auto* ppi = std::get_if<PpiRun>(&run.run);
+  const SlarRun* slar = slar_image_run(run);
+  if (ppi == nullptr && slar == nullptr) {
+    throw InputError("request", "", "a streamed run keeps no categories in memory");
+  }
+  const std::vector<std::uint16_t>& categories =
+      ppi != nullptr ? ppi->sim.categories : slar->sim.categories;
   const RadarBand band{run.radar.frequency_hz, run.radar.polarisation};
   std::vector<double> angles_deg(90);
   std::vector<double> angles_rad(90);

@@ -60,22 +60,6 @@ std::string toml_text(const toml::table& doc) {
   return s.str();
 }
 
-const char* kind_name(RunKind k) {
-  switch (k) {
-    case RunKind::slar:
-      return "slar";
-    case RunKind::sar:
-      return "sar";
-    case RunKind::coherent_sar:
-      return "coherent_sar";
-    case RunKind::ppi:
-      return "ppi";
-    case RunKind::streamed:
-      return "streamed";
-  }
-  return "?";
-}
-
 }  // namespace
 
 Session::SceneState Session::scene_from_doc(toml::table doc, const std::string& path) {
@@ -152,6 +136,12 @@ RunResult Session::run(const SceneState& scene, const RadarParams& radar,
                        const std::string& radar_path,
                        const std::shared_ptr<const Sigma0Source>& sigma0,
                        const std::string& backscatter_path, std::uint64_t seed) const {
+  if (radar.channels.size() > 1) {  // the page shows one image, its views one channel's
+    throw InputError(radar_path, "channel",
+                     fmt::format("{} channels: the server shows one channel; list one "
+                                 "[[channel]] (ris simulate writes every channel's products)",
+                                 radar.channels.size()));
+  }
   RunRequest r;
   r.scene_path = scene.path;
   r.scene = scene.scene;
@@ -169,25 +159,28 @@ RunResult Session::run(const SceneState& scene, const RadarParams& radar,
 nlohmann::json Session::run_summary() const {
   const RunResult& r = result_;
   nlohmann::json j = {{"id", run_id_},
-                      {"kind", kind_name(r.kind)},
+                      {"kind", run_kind_name(r)},
                       {"seed", r.info.seed},
                       {"film_only", last_film_only_},
                       {"seconds", last_seconds_}};
   std::vector<std::string> views = {"slant", "ground", "scene"};
-  if (r.slar) {
-    const SlarGeometry& g = r.slar->geometry;
+  // The mode's own report (ris/sim/run.h), and its warnings.
+  const RunSummary summary = ris::run_summary(r);
+  nlohmann::json report = run_summary_json(summary);
+  strip_directories_in(report);  // file names only, never the server's folders
+  j["summary"] = std::move(report);
+  if (r.in_memory()) j["warnings"] = summary.warnings;
+  if (const SlarRun* slar = slar_image_run(r)) {  // the page's figures of the image
+    const SlarGeometry& g = slar->sim.geometry;
     const double samples = double(g.lines) * double(g.samples);
-    j["lines"] = r.slar->image.lines;
-    j["bins"] = r.slar->image.bins;
-    j["near_range_m"] = r.slar->image.range.near_m;
-    j["range_bin_m"] = r.slar->image.range.bin_m;
+    j["lines"] = slar->sim.image.lines;
+    j["bins"] = slar->sim.image.bins;
+    j["near_range_m"] = slar->sim.image.range.near_m;
+    j["range_bin_m"] = slar->sim.image.range.bin_m;
     j["shadow_percent"] = 100.0 * double(g.shadow_samples) / samples;
     j["layover_percent"] = 100.0 * double(g.layover_samples) / samples;
     j["back_facing_percent"] = 100.0 * double(g.back_facing_samples) / samples;
-    j["warnings"] = r.slar->warnings;
     views.push_back("geocoded");
-  } else if (r.ppi) {
-    j["warnings"] = r.ppi->warnings;
   }
   nlohmann::json images = nlohmann::json::object();
   for (const std::string& v : views) {
@@ -287,11 +280,13 @@ SimulateOutcome Session::simulate(const std::string& body) {
   const bool allow = t.get_bool_or("allow_extrapolation", allow_extrapolation_);
   t.finish();
   const bool same_library = bs_name == backscatter_name_ && allow == allow_extrapolation_;
-  const bool same_inputs = same_library && result_.kind != RunKind::streamed;
+  const bool same_inputs = same_library && result_.in_memory();
   if (same_inputs && film_only_change(radar_doc_, doc, radar_, radar)) {
     // Film, fading law and switch: the image chain after the mean power.
+    SlarRun* slar = slar_image_run(result_);
     for (RadarParams* used :
-         {&(result_.slar ? result_.slar->radar : result_.ppi->radar), &result_.radar}) {
+         {slar != nullptr ? &slar->sim.radar : &std::get<PpiRun>(result_.run).sim.radar,
+          &result_.radar}) {
       used->switches.fading = radar.switches.fading;
       used->fading = radar.fading;
     }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -158,6 +159,19 @@ struct PpiParams {
   bool full_circle() const { return scan_width_rad >= 2.0 * 3.14159265358979323846 - 1e-9; }
 };
 
+struct RadarParams;
+
+// One channel of a multi-channel radar file (`[[channel]]` tables,
+// docs/radar-format.md): its name (the suffix of its products), its own
+// backscatter source when it has one, and the whole radar it is (the file's
+// keys with the channel's frequency, polarisation, power and gain: the radar
+// a one-channel file with those keys gives).
+struct RadarChannel {
+  std::string name;
+  std::string backscatter_path;  // "": the run's backscatter source
+  std::shared_ptr<const RadarParams> radar;
+};
+
 struct RadarParams {
   std::string source_file;  // where it was read from
   std::string name;         // free text
@@ -194,6 +208,11 @@ struct RadarParams {
   FilmParams film;
   GreytoneSwitches switches;
   FadingLaw fading = FadingLaw::exact_gamma;
+
+  // A multi-channel radar file's channels, in the file's order; this radar
+  // is then the first channel's. Empty: one channel, this radar (the file
+  // lists no [[channel]]).
+  std::vector<RadarChannel> channels;
 
   double wavelength_m() const;
 };

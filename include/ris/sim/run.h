@@ -27,13 +27,17 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/acquisition.h"
 #include "ris/sensor/radar_params.h"
 #include "ris/sim/acquisition_simulation.h"
+#include "ris/sim/acquisition_stream.h"
 #include "ris/sim/fault_plan.h"
 #include "ris/sim/point_target.h"
 #include "ris/sim/point_target_irf.h"
@@ -107,34 +111,124 @@ struct RunCallbacks {
   std::function<void(const std::string&)> warning;
 };
 
-enum class RunKind { slar, sar, coherent_sar, ppi, streamed };
+// A SLAR or SAR run in memory on a scene (the mode is the radar's: SLAR,
+// incoherent or coherent SAR): the simulation, its pictures and the point
+// targets' measurements.
+struct SlarRun {
+  SlarSimulation sim;
+  SlarPictures pictures;
+  bool coherent = false;             // coherent SAR: speckle from the phase history
+  std::vector<PointTargetIrf> irfs;  // point targets' impulse responses
+};
+
+// A SLAR or incoherent SAR run of a radar with several channels
+// ([[channel]] tables, ris/sim/slar_channels.h) in memory: each channel's
+// run over the one geometry, in the radar file's order. Its products are
+// each channel's, suffixed by the channel's name (ris/sim/slar_channel_products.h).
+struct ChannelRun {
+  std::string name;              // the products' suffix
+  std::string backscatter_path;  // its backscatter source (the run's unless its own)
+  SlarRun run;
+};
+struct MultiChannelSlarRun {
+  std::vector<ChannelRun> channels;
+};
+
+// A PPI run in memory.
+struct PpiRun {
+  PpiSimulation sim;
+  PpiPictures pictures;
+};
+
+// A run in memory on an acquisition's radar grid: its image (as a SLAR/SAR
+// run's, never coherent, no point targets) and its grid window and
+// radar-grid layers (`grid->sim` is moved into `image.sim`).
+struct AcquisitionRun {
+  SlarRun image;
+  std::shared_ptr<const AcquisitionSimulation> grid;
+  std::string acquisition_path;  // --acquisition
+};
+
+// Streamed runs keep no arrays: their products are on disk.
+struct StreamedSlarRun {
+  SlarStreamSummary summary;
+};
+struct StreamedPpiRun {
+  PpiStreamSummary summary;
+};
+struct StreamedAcquisitionRun {
+  AcquisitionStreamSummary summary;
+  std::string acquisition_path;  // --acquisition
+};
+
+using ModeRun = std::variant<SlarRun, MultiChannelSlarRun, PpiRun, AcquisitionRun, StreamedSlarRun,
+                             StreamedPpiRun, StreamedAcquisitionRun>;
+
+// How the run's lines were computed: the whole scene in memory, or streamed
+// in blocks (over `ranks` MPI processes).
+enum class RunStrategy { in_memory, streamed };
+
+// One value of a summary line: a key, its value (a number or a string) and
+// its unit ("" when it has none).
+struct SummaryValue {
+  std::string key;
+  nlohmann::json value;
+  std::string unit;
+};
+
+// One line of a run's report: the text `ris simulate` prints (without the
+// newline) and the values it shows, for a program to read.
+struct SummaryLine {
+  std::string text;
+  std::vector<SummaryValue> values;
+};
+
+// What a run reports of itself (run_summary): its mode ("SLAR", "SAR",
+// "coherent SAR", "PPI"), strategy, lines, warnings and the products it
+// writes (file stems in the output folder, metadata.json's included).
+struct RunSummary {
+  std::string mode;
+  RunStrategy strategy = RunStrategy::in_memory;
+  int ranks = 1;
+  std::vector<SummaryLine> lines;
+  std::vector<std::string> warnings;
+  std::vector<std::string> products;
+};
 
 struct RunResult {
-  RunKind kind = RunKind::slar;
+  ModeRun run;
+  RunStrategy strategy = RunStrategy::in_memory;
+  int ranks = 1;  // MPI processes of a streamed run
   RadarParams radar;
   SlarRunInfo info;  // paths, seed, threads, products, compression
-  // In-memory runs: the scene (shared with the request when it gave one).
+  // In-memory scene runs: the scene (shared with the request when it gave one).
   std::shared_ptr<const Scene> scene;
-  // SLAR and SAR.
-  std::optional<SlarSimulation> slar;
-  std::optional<SlarPictures> slar_pictures;
-  bool has_targets = false;          // point targets were given
-  std::string targets_path;          // where from (metadata.json)
-  std::vector<PointTargetIrf> irfs;  // point targets' impulse responses
-  // PPI.
-  std::optional<PpiSimulation> ppi;
-  std::optional<PpiPictures> ppi_pictures;
-  // An acquisition run: its grid window and radar-grid layers (its
-  // simulation is in `slar`).
-  std::shared_ptr<const AcquisitionSimulation> acquisition;
-  // A streamed run (no arrays kept: the products are on disk).
-  std::optional<SlarStreamSummary> streamed;
-  // A streamed PPI run (kind streamed; `streamed` is then empty).
-  std::optional<PpiStreamSummary> ppi_streamed;
+  bool has_targets = false;  // point targets were given
+  std::string targets_path;  // where from (metadata.json)
   // Wall time: the whole run, and writing the products.
   double seconds = 0.0;
   double write_seconds = 0.0;
+
+  bool in_memory() const { return strategy == RunStrategy::in_memory; }
 };
+
+// The in-memory SLAR/SAR image of a run (a scene's or an acquisition's);
+// nullptr for a PPI, a multi-channel (its channels are in
+// MultiChannelSlarRun) or a streamed run.
+const SlarRun* slar_image_run(const RunResult& result);
+SlarRun* slar_image_run(RunResult& result);
+
+// The run as one word: "slar", "sar", "coherent_sar", "ppi" (in memory) or
+// "streamed" (what the server and the Python bindings call its kind).
+std::string run_kind_name(const RunResult& result);
+
+// The run's report (what `ris simulate` prints before its time and output
+// folder), from the mode's own result.
+RunSummary run_summary(const RunResult& result);
+
+// The summary as JSON: {"mode", "strategy", "ranks", "lines": [{"text",
+// "values": [{"key", "value", "unit"}]}], "warnings", "products"}.
+nlohmann::json run_summary_json(const RunSummary& summary);
 
 // Runs one simulation. Throws InputError for bad input (naming the file or
 // option and what was expected); nothing is written then.
@@ -152,6 +246,10 @@ std::string backscatter_library_for(const std::string& backscatter_path,
 // targets are measured again. The geometry and mean power are not
 // recomputed. Not for a streamed run (InputError).
 void rerender(RunResult& result, std::uint64_t seed, const FilmParams* film = nullptr);
+
+// metadata.json of an in-memory run, as write_run_products writes it. Not
+// for a streamed run (InputError: read the metadata.json it wrote).
+nlohmann::json run_metadata(const RunResult& result);
 
 // Writes the result's products into out_dir (as run_simulation does);
 // returns the seconds taken. Not for a streamed run (InputError).

@@ -17,6 +17,8 @@
 #include "ris/sim/acquisition_stream.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/sar_coherent.h"
+#include "ris/sim/slar_channel_products.h"
+#include "ris/sim/slar_channels.h"
 #include "ris/sim/slar_products.h"
 #include "ris/util/error.h"
 #include "ris/util/process_group.h"
@@ -157,9 +159,50 @@ void check_out_dir(const RunRequest& r, const RadarParams& radar, std::int64_t r
                                : std::string()));
 }
 
+bool several_channels(const RadarParams& radar) {
+  return radar.channels.size() > 1;
+}
+
+// What the engine cannot yet run on several channels, refused before any
+// work naming the key (a radar listing one [[channel]] runs as any other).
+// `how`: "streamed", "acquisition" or "" (an in-memory scene run).
+void check_channels(const RunRequest& r, const RadarParams& radar, std::string_view how,
+                    bool has_targets) {
+  if (!several_channels(radar)) return;
+  const std::string n = std::to_string(radar.channels.size());
+  if (how == "streamed") {
+    throw InputError(radar.source_file, "channel",
+                     n + " channels: streamed runs take one channel; drop --stream and "
+                         "--block-lines (an in-memory run images every channel over one "
+                         "geometry) or list one [[channel]]");
+  }
+  if (how == "acquisition") {
+    throw InputError(radar.source_file, "channel",
+                     n + " channels: a run on an acquisition's grid takes one channel; list "
+                         "one [[channel]]");
+  }
+  if (radar.mode == RadarMode::ppi) {
+    throw InputError(radar.source_file, "channel",
+                     n + " channels: a PPI takes one channel for now; list one [[channel]]");
+  }
+  if (radar.mode == RadarMode::sar && radar.sar.coherent) {
+    throw InputError(radar.source_file, "sar.coherent",
+                     n + " channels: the coherent SAR is a single-channel run for now; set "
+                         "coherent = false or list one [[channel]]");
+  }
+  if (has_targets) {
+    throw InputError(r.targets_path, "--targets",
+                     n + " channels in " + radar.source_file +
+                         ": point targets are placed in single-channel runs only for now; "
+                         "drop --targets or list one [[channel]]");
+  }
+}
+
 void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
-  res.kind = RunKind::streamed;
+  res.strategy = RunStrategy::streamed;
+  res.ranks = process_group().size();
   res.radar = load_radar_of(r);
+  check_channels(r, res.radar, "streamed", false);
   check_scene_earth(r, res.radar);
   // As the in-memory run (the streams honour the selection and res.info's
   // compression).
@@ -194,8 +237,8 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
     o.quiet = r.quiet;
     o.faults = r.faults;
     o.targets = std::move(targets);
-    res.ppi_streamed =
-        simulate_ppi_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
+    res.run = StreamedPpiRun{
+        simulate_ppi_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o)};
     return;
   }
   SlarStreamOptions o;
@@ -204,24 +247,60 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
   o.faults = r.faults;
   o.targets = std::move(targets);
   o.targets_file = r.targets_path;
-  res.streamed =
-      simulate_slar_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o);
-  res.irfs = res.streamed->irfs;
+  const StreamedSlarRun& run = res.run.emplace<StreamedSlarRun>(
+      simulate_slar_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o));
   // Once, by rank 0, in an MPI run (every rank sets up the same stages).
   if (process_group().rank() == 0)
-    for (const std::string& w : res.streamed->sim.warnings) warn(cb, w);
+    for (const std::string& w : run.summary.sim.warnings) warn(cb, w);
 }
 
 // Speckle, greytones and point-target measurements of a kept SLAR/SAR run.
-void render_slar_run(RunResult& res, std::uint64_t seed) {
-  const SlarSimulation& sim = *res.slar;
-  const bool coherent = res.kind == RunKind::coherent_sar;
-  res.slar_pictures =
-      coherent ? render_slar(sim, seed, coherent_sar_intensity(sim, seed)) : render_slar(sim, seed);
-  res.irfs.clear();
-  if (res.has_targets) {
-    res.irfs = measure_point_targets(sim, *res.slar_pictures, coherent);
+void render_slar_run(SlarRun& run, bool has_targets, std::uint64_t seed) {
+  const SlarSimulation& sim = run.sim;
+  run.pictures = run.coherent ? render_slar(sim, seed, coherent_sar_intensity(sim, seed))
+                              : render_slar(sim, seed);
+  run.irfs.clear();
+  if (has_targets) run.irfs = measure_point_targets(sim, run.pictures, run.coherent);
+}
+
+// A radar with several channels over one geometry, in memory
+// (ris/sim/slar_channels.h): one pass of the line engine, then each
+// channel's speckle and greytones with the run's seed (each channel the
+// bytes its own run gives). A channel's own backscatter source is loaded
+// here.
+void run_channels(RunResult& res, const LoadedSigma0& sigma0, const SlarOptions& options,
+                  const RunCallbacks& cb, std::uint64_t seed) {
+  std::vector<std::shared_ptr<const Sigma0Source>> sources;
+  std::vector<SlarChannel> channels;
+  MultiChannelSlarRun& run = res.run.emplace<MultiChannelSlarRun>();
+  for (const RadarChannel& c : res.radar.channels) {
+    std::shared_ptr<const Sigma0Source> source = sigma0.source;
+    std::string path = sigma0.path;
+    if (!c.backscatter_path.empty()) {
+      source = load_sigma0_source(c.backscatter_path);
+      path = c.backscatter_path;
+    }
+    sources.push_back(source);
+    channels.push_back({*c.radar, source.get(), path});
+    run.channels.push_back({c.name, path, {}});
   }
+  std::vector<SlarSimulation> sims = simulate_slar_channels(*res.scene, channels, options);
+  for (std::size_t c = 0; c < sims.size(); ++c) {
+    SlarRun& one = run.channels[c].run;
+    one.sim = std::move(sims[c]);
+    for (const std::string& w : one.sim.warnings)
+      warn(cb, "channel " + run.channels[c].name + ": " + w);
+    render_slar_run(one, false, seed);
+  }
+}
+
+// The channels' products as ris/sim/slar_channel_products.h writes them.
+std::vector<SlarChannelProducts> channel_products(const MultiChannelSlarRun& run) {
+  std::vector<SlarChannelProducts> out;
+  for (const ChannelRun& c : run.channels) {
+    out.push_back({c.name, &c.run.sim, &c.run.pictures, c.backscatter_path});
+  }
+  return out;
 }
 
 // Whether an acquisition run streams: on request (--stream, --block-lines),
@@ -261,6 +340,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   }
   if (cb.progress) cb.progress("reading inputs", 0.0);
   res.radar = load_radar_of(r);
+  check_channels(r, res.radar, "acquisition", false);
   check_product_selection(r.products, acquisition_product_stems(), "--products");
   const Acquisition acq = read_acquisition(r.acquisition_path, r.acquisition);
   require_regular_input(r.dem_path, "--dem");
@@ -292,29 +372,35 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
     so.faults = r.faults;
     AcquisitionStreamSummary s = simulate_acquisition_streamed(
         acq, dem_file, res.radar, *sigma0.source, o, res.info, r.out_dir, so);
-    res.kind = RunKind::streamed;
-    SlarStreamSummary& summary = res.streamed.emplace();
-    summary.sim = s.acquisition.sim;
-    summary.block_lines = s.block_lines;
-    summary.blocks = s.blocks;
-    summary.stage_seconds = std::move(s.stage_seconds);
-    summary.stage_cpu_seconds = std::move(s.stage_cpu_seconds);
-    summary.cpu_parts = std::move(s.cpu_parts);
-    res.acquisition = std::make_shared<AcquisitionSimulation>(std::move(s.acquisition));
+    res.strategy = RunStrategy::streamed;
+    res.ranks = process_group().size();
+    const StreamedAcquisitionRun& run =
+        res.run.emplace<StreamedAcquisitionRun>(std::move(s), r.acquisition_path);
     // Once, by rank 0, in an MPI run (every rank sets up the same stages).
     if (process_group().rank() == 0)
-      for (const std::string& w : summary.sim.warnings) warn(cb, w);
+      for (const std::string& w : run.summary.acquisition.sim.warnings) warn(cb, w);
     return;
   }
   if (cb.progress) cb.progress("geometry + image formation on the acquisition's grid", 0.1);
   auto a = std::make_shared<AcquisitionSimulation>(
       simulate_acquisition(acq, *dem, res.radar, *sigma0.source, o));
-  res.kind = res.radar.mode == RadarMode::sar ? RunKind::sar : RunKind::slar;
-  res.slar = std::move(a->sim);
-  res.acquisition = std::move(a);
-  for (const std::string& w : res.slar->warnings) warn(cb, w);
+  AcquisitionRun& run = res.run.emplace<AcquisitionRun>();
+  run.image.sim = std::move(a->sim);
+  run.grid = std::move(a);
+  run.acquisition_path = r.acquisition_path;
+  for (const std::string& w : run.image.sim.warnings) warn(cb, w);
   if (cb.progress) cb.progress("speckle and greytones", 0.9);
-  render_slar_run(res, r.seed);
+  render_slar_run(run.image, false, r.seed);
+}
+
+// metadata.json's point_targets of a SLAR/SAR run given targets (else none).
+nlohmann::json slar_run_extra_metadata(const RunResult& res, const SlarRun& run) {
+  nlohmann::json extra = nlohmann::json::object();
+  if (res.has_targets) {
+    extra["point_targets"] =
+        point_target_irf_json(run.irfs, run.sim, res.targets_path, run.coherent);
+  }
+  return extra;
 }
 
 }  // namespace
@@ -347,11 +433,11 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   }
   if (!r.acquisition_path.empty()) {
     run_acquisition(r, cb, res);
-    if (res.kind != RunKind::streamed && !r.out_dir.empty()) {
+    if (res.in_memory() && !r.out_dir.empty()) {
       if (cb.progress) cb.progress("writing products", 0.95);
       res.write_seconds = write_run_products(res, r.out_dir);
     }
-    if (cb.progress && res.kind != RunKind::streamed) cb.progress("done", 1.0);
+    if (cb.progress && res.in_memory()) cb.progress("done", 1.0);
     res.seconds = seconds_since(t0);
     return res;
   }
@@ -395,23 +481,25 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   }
   res.has_targets = !options.targets.empty();
   res.targets_path = r.targets_path;
+  check_channels(r, radar, "", res.has_targets);
   check_out_dir(r, radar, res.scene->rows, res.scene->cols);
 
   if (radar.mode == RadarMode::ppi) {
-    res.kind = RunKind::ppi;
-    res.ppi = simulate_ppi(*res.scene, radar, *sigma0.source, options);
-    for (const std::string& w : res.ppi->warnings) warn(cb, w);
+    PpiRun& run = res.run.emplace<PpiRun>();
+    run.sim = simulate_ppi(*res.scene, radar, *sigma0.source, options);
+    for (const std::string& w : run.sim.warnings) warn(cb, w);
     stage("speckle and greytones", 0.9);
-    res.ppi_pictures = render_ppi(*res.ppi, r.seed);
+    run.pictures = render_ppi(run.sim, r.seed);
+  } else if (several_channels(radar)) {
+    run_channels(res, sigma0, options, cb, r.seed);
+    stage("speckle and greytones", 0.9);
   } else {
-    const bool coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
-    res.kind = radar.mode == RadarMode::slar ? RunKind::slar
-               : coherent                    ? RunKind::coherent_sar
-                                             : RunKind::sar;
-    res.slar = simulate_slar(*res.scene, radar, *sigma0.source, options);
-    for (const std::string& w : res.slar->warnings) warn(cb, w);
+    SlarRun& run = res.run.emplace<SlarRun>();
+    run.coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
+    run.sim = simulate_slar(*res.scene, radar, *sigma0.source, options);
+    for (const std::string& w : run.sim.warnings) warn(cb, w);
     stage("speckle and greytones", 0.9);
-    render_slar_run(res, r.seed);
+    render_slar_run(run, res.has_targets, r.seed);
   }
   if (!r.out_dir.empty()) {
     stage("writing products", 0.95);
@@ -422,38 +510,74 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   return res;
 }
 
+const SlarRun* slar_image_run(const RunResult& res) {
+  if (const auto* s = std::get_if<SlarRun>(&res.run)) return s;
+  if (const auto* a = std::get_if<AcquisitionRun>(&res.run)) return &a->image;
+  return nullptr;
+}
+
+SlarRun* slar_image_run(RunResult& res) {
+  return const_cast<SlarRun*>(slar_image_run(std::as_const(res)));
+}
+
 void rerender(RunResult& res, std::uint64_t seed, const FilmParams* film) {
-  if (res.kind == RunKind::streamed) {
+  if (!res.in_memory()) {
     throw InputError(res.info.scene_path, "",
                      "a streamed run keeps no images in memory to render again");
   }
   res.info.seed = seed;
-  if (res.kind == RunKind::ppi) {
-    if (film != nullptr) res.ppi->radar.film = *film;
-    res.ppi_pictures = render_ppi(*res.ppi, seed);
+  if (auto* ppi = std::get_if<PpiRun>(&res.run)) {
+    if (film != nullptr) ppi->sim.radar.film = *film;
+    ppi->pictures = render_ppi(ppi->sim, seed);
     return;
   }
-  if (film != nullptr) res.slar->radar.film = *film;
-  render_slar_run(res, seed);
+  if (auto* multi = std::get_if<MultiChannelSlarRun>(&res.run)) {
+    for (ChannelRun& c : multi->channels) {
+      if (film != nullptr) c.run.sim.radar.film = *film;
+      render_slar_run(c.run, false, seed);
+    }
+    return;
+  }
+  SlarRun& run = *slar_image_run(res);
+  if (film != nullptr) run.sim.radar.film = *film;
+  render_slar_run(run, res.has_targets, seed);
+}
+
+nlohmann::json run_metadata(const RunResult& res) {
+  if (!res.in_memory()) {
+    throw InputError(res.info.scene_path, "",
+                     "a streamed run's metadata is the metadata.json it wrote");
+  }
+  if (const auto* a = std::get_if<AcquisitionRun>(&res.run)) {
+    return acquisition_metadata(*a->grid, a->image.sim, a->image.pictures, res.info);
+  }
+  if (const auto* ppi = std::get_if<PpiRun>(&res.run)) {
+    return ppi_metadata(*res.scene, ppi->sim, ppi->pictures, res.info);
+  }
+  if (const auto* multi = std::get_if<MultiChannelSlarRun>(&res.run)) {
+    return slar_channels_metadata(*res.scene, channel_products(*multi), res.info);
+  }
+  const SlarRun& run = std::get<SlarRun>(res.run);
+  return slar_metadata(*res.scene, run.sim, run.pictures, res.info,
+                       slar_run_extra_metadata(res, run));
 }
 
 double write_run_products(const RunResult& res, const std::filesystem::path& out_dir) {
-  if (res.kind == RunKind::streamed) {
+  if (!res.in_memory()) {
     throw InputError(res.info.scene_path, "",
                      "a streamed run writes its products while it runs; none are kept");
   }
   const Clock::time_point t0 = Clock::now();
-  if (res.acquisition) {
-    write_acquisition_products(out_dir, *res.acquisition, *res.slar, *res.slar_pictures, res.info);
-  } else if (res.kind == RunKind::ppi) {
-    write_ppi_products(out_dir, *res.scene, *res.ppi, *res.ppi_pictures, res.info);
+  if (const auto* a = std::get_if<AcquisitionRun>(&res.run)) {
+    write_acquisition_products(out_dir, *a->grid, a->image.sim, a->image.pictures, res.info);
+  } else if (const auto* ppi = std::get_if<PpiRun>(&res.run)) {
+    write_ppi_products(out_dir, *res.scene, ppi->sim, ppi->pictures, res.info);
+  } else if (const auto* multi = std::get_if<MultiChannelSlarRun>(&res.run)) {
+    write_slar_channel_products(out_dir, *res.scene, channel_products(*multi), res.info);
   } else {
-    nlohmann::json extra = nlohmann::json::object();
-    if (res.has_targets) {
-      extra["point_targets"] = point_target_irf_json(res.irfs, *res.slar, res.targets_path,
-                                                     res.kind == RunKind::coherent_sar);
-    }
-    write_slar_products(out_dir, *res.scene, *res.slar, *res.slar_pictures, res.info, extra);
+    const SlarRun& run = std::get<SlarRun>(res.run);
+    write_slar_products(out_dir, *res.scene, run.sim, run.pictures, res.info,
+                        slar_run_extra_metadata(res, run));
   }
   return seconds_since(t0);
 }

@@ -51,12 +51,13 @@ TEST(RunSimulation, LoadedInputsGiveTheSameRunAsPaths) {
   r.radar = load_radar(kRadar);
   r.sigma0 = load_sigma0_source(default_sigma0_library_path());
   const RunResult loaded = run_simulation(r);
-  ASSERT_EQ(by_path.kind, RunKind::slar);
-  ASSERT_TRUE(by_path.slar && loaded.slar && by_path.slar_pictures && loaded.slar_pictures);
+  ASSERT_EQ(run_kind_name(by_path), "slar");
+  const auto* a = std::get_if<SlarRun>(&by_path.run);
+  const auto* b = std::get_if<SlarRun>(&loaded.run);
+  ASSERT_TRUE(a != nullptr && b != nullptr);
   EXPECT_EQ(loaded.scene, r.scene);  // shared, not copied
-  EXPECT_TRUE(same_floats(by_path.slar->image.mean_power_w, loaded.slar->image.mean_power_w));
-  EXPECT_TRUE(
-      same_floats(by_path.slar_pictures->speckled_power_w, loaded.slar_pictures->speckled_power_w));
+  EXPECT_TRUE(same_floats(a->sim.image.mean_power_w, b->sim.image.mean_power_w));
+  EXPECT_TRUE(same_floats(a->pictures.speckled_power_w, b->pictures.speckled_power_w));
   EXPECT_EQ(by_path.write_seconds, 0.0);  // no out_dir: nothing written
 }
 
@@ -65,25 +66,57 @@ TEST(RunSimulation, LoadedInputsGiveTheSameRunAsPaths) {
 // change the greytones only.
 TEST(RunSimulation, RerenderEqualsAFreshRunWithThatSeed) {
   RunResult res = run_simulation(standard_request());
-  const UninitVector<float> mean = res.slar->image.mean_power_w;
+  const SlarRun& run = std::get<SlarRun>(res.run);
+  const UninitVector<float> mean = run.sim.image.mean_power_w;
   rerender(res, 11);
   RunRequest r11 = standard_request();
   r11.seed = 11;
-  const RunResult fresh = run_simulation(r11);
-  EXPECT_TRUE(same_floats(res.slar->image.mean_power_w, mean));
-  EXPECT_TRUE(
-      same_floats(res.slar_pictures->speckled_power_w, fresh.slar_pictures->speckled_power_w));
-  EXPECT_TRUE(std::equal(res.slar_pictures->slant_grey.begin(), res.slar_pictures->slant_grey.end(),
-                         fresh.slar_pictures->slant_grey.begin()));
+  const RunResult fresh_res = run_simulation(r11);
+  const SlarRun& fresh = std::get<SlarRun>(fresh_res.run);
+  EXPECT_TRUE(same_floats(run.sim.image.mean_power_w, mean));
+  EXPECT_TRUE(same_floats(run.pictures.speckled_power_w, fresh.pictures.speckled_power_w));
+  EXPECT_TRUE(std::equal(run.pictures.slant_grey.begin(), run.pictures.slant_grey.end(),
+                         fresh.pictures.slant_grey.begin()));
   EXPECT_EQ(res.info.seed, 11u);
-  FilmParams film = res.slar->radar.film;
+  FilmParams film = run.sim.radar.film;
   film.gamma *= 2.0;
   rerender(res, 11, &film);
-  EXPECT_TRUE(
-      same_floats(res.slar_pictures->speckled_power_w, fresh.slar_pictures->speckled_power_w));
-  EXPECT_FALSE(std::equal(res.slar_pictures->slant_grey.begin(),
-                          res.slar_pictures->slant_grey.end(),
-                          fresh.slar_pictures->slant_grey.begin()));
+  EXPECT_TRUE(same_floats(run.pictures.speckled_power_w, fresh.pictures.speckled_power_w));
+  EXPECT_FALSE(std::equal(run.pictures.slant_grey.begin(), run.pictures.slant_grey.end(),
+                          fresh.pictures.slant_grey.begin()));
+}
+
+// Each mode's result gives its own summary: the SLAR's lines name its image
+// size and geometry counts (values as well as text), a PPI's its B-scope;
+// the kind is computed from the result, the strategy is a property.
+TEST(RunSimulation, EachModeSummarisesItself) {
+  const RunResult slar = run_simulation(standard_request());
+  const RunSummary s = run_summary(slar);
+  EXPECT_EQ(s.mode, "SLAR");
+  EXPECT_EQ(s.strategy, RunStrategy::in_memory);
+  ASSERT_EQ(s.lines.size(), 3u);
+  EXPECT_EQ(s.lines[0].text,
+            "simulated " + kScene + " (1000 x 700 cells) with " + kRadar + " (SLAR)");
+  const SlarRun& run = std::get<SlarRun>(slar.run);
+  EXPECT_EQ(s.lines[1].values.at(0).key, "lines");
+  EXPECT_EQ(s.lines[1].values.at(0).value, run.sim.image.lines);
+  EXPECT_EQ(s.lines[2].values.at(0).unit, "%");
+  EXPECT_NE(std::find(s.products.begin(), s.products.end(), "mean_power_slant"), s.products.end());
+  const nlohmann::json j = run_summary_json(s);
+  EXPECT_EQ(j["strategy"], "in_memory");
+  EXPECT_EQ(j["lines"][1]["values"][1]["key"], "bins");
+
+  RunRequest ppi = standard_request();
+  ppi.radar_path = std::string(ris::test::data_dir()) + "/radars/ppi-ground-mast-30m.toml";
+  const RunResult p = run_simulation(ppi);
+  EXPECT_EQ(run_kind_name(p), "ppi");
+  EXPECT_EQ(slar_image_run(p), nullptr);
+  const RunSummary ps = run_summary(p);
+  EXPECT_EQ(ps.mode, "PPI");
+  ASSERT_GE(ps.lines.size(), 2u);
+  EXPECT_TRUE(ps.lines[1].text.starts_with("  B-scope: 720 rays x 400 range bins"));
+  EXPECT_EQ(std::find(ps.products.begin(), ps.products.end(), "mean_power_slant"),
+            ps.products.end());
 }
 
 // --products writes only the products asked for (and metadata.json, which
