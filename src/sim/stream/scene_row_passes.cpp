@@ -103,10 +103,9 @@ SceneGeocodedPass::SceneGeocodedPass(const SceneStreamReader& in, int band_rows,
       fail_block_(fail_block),
       power_out_(power_out),
       grey_out_(grey_out),
-      bar_(bar) {
-  pix_line_.resize(z_.size());
-  pix_bin_.resize(z_.size());
-}
+      bar_(bar),
+      pix_line_(z_.size()),
+      pix_bin_(z_.size()) {}
 
 RowBand SceneGeocodedPass::compute(int b) {
   const double t0 = process_cpu_seconds();
