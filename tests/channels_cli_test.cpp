@@ -217,6 +217,34 @@ TEST(ChannelsCli, RefusalsNameTheKey) {
           "", "a PPI takes one channel for now");
 }
 
+// The commands that image one channel refuse a multi-channel file naming
+// the key and themselves (they took its first channel without a word);
+// `ris radar info` lists the channels.
+TEST(ChannelsCli, OneChannelCommandsRefuseSeveralAndInfoListsThem) {
+  test::TempDir dir;
+  test::write_file(dir / "r.toml", multi_radar());
+  const std::string radar = test::q(dir / "r.toml");
+  for (const std::string& cmd :
+       {"study --radar " + radar + " --out " + test::q(dir / "study"),
+        "sensitivity --radar " + radar + " --out " + test::q(dir / "sens")}) {
+    const test::RunResult r = test::run_ris(cmd);
+    EXPECT_EQ(r.exit_code, 1) << cmd << "\n" << r.output;
+    EXPECT_NE(r.output.find("'channel'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("images one channel; this file lists 3 [[channel]] tables (hh, hv, "
+                            "c_vv)"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("ris " + cmd.substr(0, cmd.find(' '))), std::string::npos) << r.output;
+  }
+  EXPECT_FALSE(fs::exists(dir / "study"));
+  EXPECT_FALSE(fs::exists(dir / "sens"));
+  const test::RunResult info = test::run_ris("radar info " + radar);
+  EXPECT_EQ(info.exit_code, 0) << info.output;
+  EXPECT_NE(info.output.find("channels                  3"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("c_vv"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("5.3 GHz VV"), std::string::npos) << info.output;
+}
+
 // One [[channel]] is a one-channel radar: the same products, unsuffixed.
 TEST(ChannelsCli, OneChannelIsAOneChannelRun) {
   test::TempDir dir;

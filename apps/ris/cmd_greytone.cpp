@@ -30,7 +30,7 @@ struct GreytoneOptions {
 };
 
 void run_greytone(const GreytoneOptions& o) {
-  const RadarParams radar = load_radar(o.radar_path);
+  const RadarParams radar = load_one_channel_radar(o.radar_path, "ris greytone");
   RasterF64 power = [&] {
     try {
       return read_raster_f64(o.power_path);

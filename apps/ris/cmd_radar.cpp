@@ -68,6 +68,17 @@ void print_info(const std::string& path) {
       r.mode == RadarMode::slar ? "slar" : (r.mode == RadarMode::sar ? "sar" : "ppi");
   fmt::print("  mode                      {}, {:.4g} GHz {}, wavelength {:.4f} m\n", mode,
              r.frequency_hz * 1e-9, to_string(r.polarisation), d.wavelength_m);
+  if (r.channels.size() > 1) {
+    // A multi-channel file: the figures below are its first channel's.
+    fmt::print("  channels                  {} (the figures below are the first's):\n",
+               r.channels.size());
+    for (const RadarChannel& c : r.channels) {
+      fmt::print(
+          "    {:<23} {:.4g} GHz {}{}\n", c.name, c.radar->frequency_hz * 1e-9,
+          to_string(c.radar->polarisation),
+          c.backscatter_path.empty() ? std::string() : ", backscatter " + c.backscatter_path);
+    }
+  }
   if (r.mode == RadarMode::ppi) print_ppi(r);
   if (r.mode == RadarMode::ppi && r.ppi.height_above_ground_m) {
     fmt::print(

@@ -92,7 +92,7 @@ void run(const SensitivityArgs& a) {
   for (const std::string& v : a.vary) axes.push_back(parse_axis(v));
   SensitivityStudy st;
   st.scene = std::make_shared<Scene>(load_scene_source(a.scene).scene);
-  st.radar = load_radar(a.radar);
+  st.radar = load_one_channel_radar(a.radar, "ris sensitivity");
   st.backscatter_path = a.backscatter.empty() ? default_sigma0_library_path() : a.backscatter;
   st.sigma0 = load_sigma0_source(st.backscatter_path);
   st.seed = a.seed;

@@ -178,7 +178,7 @@ void run_study_command(const StudyArgs& given) {
       bar->set_stage(std::string(stage));
     };
   }
-  const RadarParams radar = load_radar(a.radar);
+  const RadarParams radar = load_one_channel_radar(a.radar, "ris study");
   const Scene scene = load_study_scene(a.scene);
   const std::string backscatter =
       a.backscatter.empty() ? default_sigma0_library_path() : a.backscatter;
