@@ -14,6 +14,7 @@
 #include "command_registry.h"
 #include "ris/image/greytone_image.h"
 #include "ris/io/raster_io.h"
+#include "ris/sensor/one_channel_radar.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/util/error.h"
 #include "seed_option.h"

@@ -21,6 +21,7 @@
 #include "ris/image/line_chart.h"
 #include "ris/io/atomic_file.h"
 #include "ris/scene/scene_source.h"
+#include "ris/sensor/one_channel_radar.h"
 #include "ris/sensor/polarisation.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/util/error.h"

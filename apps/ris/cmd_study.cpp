@@ -29,6 +29,7 @@
 #include "ris/backscatter/library.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/scene/scene_io.h"
+#include "ris/sensor/one_channel_radar.h"
 #include "ris/sensor/radar_config.h"
 #include "ris/util/error.h"
 #include "ris/util/progress.h"

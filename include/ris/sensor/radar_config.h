@@ -24,12 +24,6 @@ namespace ris {
 // in (mid-swath values of this radar) so that RadarParams is complete.
 RadarParams load_radar(const std::string& path);
 
-// load_radar for a command that images one channel (`ris study`, `ris
-// sensitivity`, `ris greytone`): a file listing several [[channel]] tables
-// is refused naming the key `channel` and the command, rather than taken
-// as its first channel without a word. `command`: "ris study" etc.
-RadarParams load_one_channel_radar(const std::string& path, const std::string& command);
-
 // The same from an already-parsed document; `source_file` names it in errors.
 RadarParams radar_from_toml(const toml::table& doc, const std::string& source_file);
 
