@@ -3,7 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include <fmt/format.h>
+#include <omp.h>
+
+#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 
 namespace ris::detail {
@@ -11,6 +16,14 @@ namespace ris::detail {
 namespace {
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr float kNanF = std::numeric_limits<float>::quiet_NaN();
+// How much denser than over the swath at the DEM's mid height a profile's
+// points may be (span_of_line). Every run of the suite stays under it (the
+// densest, a 15-deg plane over 200 bins, 3.4 times).
+constexpr double kMaxDensity = 4.0;
+// Each thread's scratch per profile point: the engine's line (LineScratch,
+// 57 bytes; its element pass, 24), the profile (65) and the source's look,
+// range and ground distance (24), rounded up.
+constexpr std::int64_t kScratchBytesPerPoint = 192;
 
 ZeroDopplerFrame frame_of_line(const Acquisition& acq, int grid_line) {
   const OrbitState st = acq.orbit.interpolate(acq.grid.time_of_line(grid_line));
@@ -32,6 +45,46 @@ std::uint16_t AcquisitionRun::category_at(double lat_rad, double lon_rad) const 
                       static_cast<std::size_t>(c)];
 }
 
+namespace {
+
+// Where trace_terrain_profile puts the ground at ray look angle th and
+// height h: the ray met on the ellipsoid raised to h_ref (the profile's
+// reference), then moved along that surface's normal to h. False when the
+// ray misses it.
+bool ground_at(const ZeroDopplerFrame& f, const Ellipsoid& e, double h_ref, double th, double h,
+               Vec3& out) {
+  const double t = f.range_to_ellipsoid(th, e, h_ref);
+  if (!std::isfinite(t)) return false;
+  const double ia2 = 1.0 / ((e.semi_major_m() + h_ref) * (e.semi_major_m() + h_ref));
+  const double ib2 = 1.0 / ((e.semi_minor_m() + h_ref) * (e.semi_minor_m() + h_ref));
+  const Vec3 x0 = f.point(t, th);
+  out = x0 + Vec3{x0.x * ia2, x0.y * ia2, x0.z * ib2}.normalized() * (h - h_ref);
+  return true;
+}
+
+// The profile's ray look angle (ProfileSpan's, from the geodetic nadir) of
+// the ground at height h and slant range r: the root of |X(th) - p| = r by
+// bisection on [0, pi/2] (the range grows with th up to the horizon; a ray
+// past it counts as infinitely far). 0 when r is shorter than the range
+// straight down to h.
+double ray_look_of_range(const ZeroDopplerFrame& f, const Ellipsoid& e, double h_ref, double h,
+                         double r) {
+  const auto range_at = [&](double th) {
+    Vec3 x;
+    return ground_at(f, e, h_ref, th, h, x) ? (x - f.sensor_m).norm()
+                                            : std::numeric_limits<double>::infinity();
+  };
+  double lo = 0.0, hi = 0.5 * kPi;
+  if (range_at(lo) >= r) return 0.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (range_at(mid) < r ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+}  // namespace
+
 ProfileSpan AcquisitionRun::span_of_line(const ZeroDopplerFrame& f) const {
   const RadarGrid& g = acq.grid;
   const Ellipsoid& e = acq.ellipsoid;
@@ -41,6 +94,7 @@ ProfileSpan AcquisitionRun::span_of_line(const ZeroDopplerFrame& f) const {
   const double margin = 2.0 * (dem_max_m - dem_min_m) + 4.0 * dr;
   const double r_near = g.range_of_bin(window.bin0);
   const double r_far = g.range_of_bin(window.bin0 + window.bins - 1);
+  const double h_ref = 0.5 * (dem_min_m + dem_max_m);
   const Geodetic& sub = f.sensor_geodetic;
   const auto rho = [&](double h) { return e.to_ecef({sub.lat_rad, sub.lon_rad, h}).norm(); };
   // Look angles on the sphere through the highest (near) and lowest (far)
@@ -50,27 +104,58 @@ ProfileSpan AcquisitionRun::span_of_line(const ZeroDopplerFrame& f) const {
   const double look_far = f.look_on_sphere(r_far, rho(dem_min_m));
   const double tilt = std::acos(std::clamp(f.nadir.dot(f.sensor_m.normalized() * -1.0), -1.0, 1.0));
   const double pad = margin / r_near + tilt;
+  // That span, widened to the ground that can fall in the swath's bins at
+  // some height of the DEM where it misses it (relief large against the
+  // swath: docs/geometry.md): the slant range grows with ground distance
+  // and falls with height, so that ground runs from the near edge on the
+  // lowest terrain to the far edge on the highest.
   ProfileSpan s;
-  s.look_lo_rad = std::max(0.0, look_near - pad);
-  s.look_hi_rad = look_far + pad;
+  s.look_lo_rad = std::min(std::max(0.0, look_near - pad),
+                           ray_look_of_range(f, e, h_ref, dem_min_m, r_near - 0.5 * dr));
+  s.look_hi_rad =
+      std::max(look_far + pad, ray_look_of_range(f, e, h_ref, dem_max_m, r_far + 0.5 * dr));
   // samples_per_bin points per range bin over the swath, as densely over
-  // the pads.
-  const double per_rad =
-      (r_far - r_near + dr) / (dr / samples_per_bin) / std::max(look_far - look_near, 1e-9);
-  s.points = static_cast<std::size_t>((s.look_hi_rad - s.look_lo_rad) * per_rad) + 2;
+  // the pads: the swath's look angles between its near range on the
+  // highest terrain and its far range on the lowest, which close up (and
+  // cross) as the relief grows against the swath; so at most kMaxDensity
+  // times as densely as over the swath at the DEM's mid height.
+  const double swath_ref = f.look_on_sphere(r_far + 0.5 * dr, rho(h_ref)) -
+                           f.look_on_sphere(r_near - 0.5 * dr, rho(h_ref));
+  const double per_rad = (r_far - r_near + dr) / (dr / samples_per_bin) /
+                         std::max(look_far - look_near, swath_ref / kMaxDensity);
+  // Bounded before the cast (acquisition_max_points refuses more than
+  // kMaxItems before anything is allocated).
+  const double points =
+      std::min((s.look_hi_rad - s.look_lo_rad) * per_rad + 2.0, static_cast<double>(kMaxItems));
+  s.points = static_cast<std::size_t>(std::isfinite(points) ? std::max(points, 2.0) : 2.0);
   if (max_points > 0) s.points = std::min(s.points, max_points);
-  s.height_ref_m = 0.5 * (dem_min_m + dem_max_m);
+  s.height_ref_m = h_ref;
   return s;
 }
 
 std::size_t acquisition_max_points(AcquisitionRun& run) {
   run.max_points = 0;
-  std::size_t n = 2;
+  double n = 2.0;
   const GridWindow& w = run.window;
   for (int l : {w.line0, w.line0 + w.lines / 2, w.line0 + w.lines - 1}) {
-    n = std::max(n, run.span_of_line(frame_of_line(run.acq, l)).points);
+    n = std::max(n, static_cast<double>(run.span_of_line(frame_of_line(run.acq, l)).points));
   }
-  return n + n / 4 + 16;
+  // Checked before the engine allocates them: the count, then each
+  // thread's scratch.
+  const std::string& file = run.dem.source;
+  const std::string what = fmt::format(
+      "terrain profile points a line ({}'s window of {} range bins of {} m at {} points a bin, "
+      "over the DEM's heights {:.0f} to {:.0f} m: check those heights, an undeclared no-data "
+      "value such as -32768 makes a huge relief, or crop the DEM to the radar grid's footprint)",
+      run.acq.source, w.bins, run.acq.grid.range_spacing_m, run.samples_per_bin, run.dem_min_m,
+      run.dem_max_m);
+  const std::int64_t points =
+      checked_count(n + std::floor(n / 4.0) + 16.0, kMaxItems - 1, file, "", what);
+  const int threads = omp_get_max_threads();
+  require_memory(
+      checked_mul(checked_mul(points, kScratchBytesPerPoint, file, ""), threads, file, ""), file,
+      "", fmt::format("{} x {} threads: {}", points, threads, what));
+  return static_cast<std::size_t>(points);
 }
 
 DemRect dem_rect_of_lines(const AcquisitionRun& run, int line0, int line1) {

@@ -60,12 +60,17 @@ struct AcquisitionRun {
 
   // The category at a latitude/longitude (radians): the nearest posting's.
   std::uint16_t category_at(double lat_rad, double lon_rad) const;
-  // The profile's ray look angles for a line and its point count.
+  // The profile's ray look angles for a line and its point count: at least
+  // the ground whose slant range can fall in the window's bins at some
+  // height in [dem_min_m, dem_max_m], at most max_points (when set) and
+  // kMaxItems points.
   ProfileSpan span_of_line(const ZeroDopplerFrame& f) const;
 };
 
 // The points a line's profile needs at most (the scratch's size): the
 // span's count at the window's first, middle and last lines, plus a margin.
+// InputError naming the DEM (what to check) when that count, or each
+// thread's scratch for it, is more than ris allows (ris/util/resource_guard.h).
 std::size_t acquisition_max_points(AcquisitionRun& run);
 
 // A rectangle of postings of the DEM's file grid.
