@@ -224,9 +224,9 @@ TEST(ChannelsCli, OneChannelCommandsRefuseSeveralAndInfoListsThem) {
   test::TempDir dir;
   test::write_file(dir / "r.toml", multi_radar());
   const std::string radar = test::q(dir / "r.toml");
-  for (const std::string& cmd :
-       {"study --radar " + radar + " --out " + test::q(dir / "study"),
-        "sensitivity --radar " + radar + " --out " + test::q(dir / "sens")}) {
+  for (const std::string& cmd : {"study --radar " + radar + " --out " + test::q(dir / "study"),
+                                 "sensitivity --vary cell_factor=1,2 --radar " + radar + " --out " +
+                                     test::q(dir / "sens")}) {
     const test::RunResult r = test::run_ris(cmd);
     EXPECT_EQ(r.exit_code, 1) << cmd << "\n" << r.output;
     EXPECT_NE(r.output.find("'channel'"), std::string::npos) << r.output;
