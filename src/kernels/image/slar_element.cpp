@@ -189,6 +189,32 @@ struct BinRange {
   }
 };
 
+// The element_power_ratio of eight elements (pass 1's power half, and a
+// further channel's whole pass 1: ratio_pass), with neutral inputs where
+// an element is not visible (range 1, area 0, a tabulated category, angles
+// 0: ratio 0); area is 0 there already. 0 when nothing is tabulated.
+__attribute__((always_inline)) inline F8 power_ratio_block(const PowerTables& pt, I8 vis, F8 area,
+                                                           F8 r, const BinsPassIo& io,
+                                                           std::size_t j) {
+  const F8 zero = splat(0.0f);
+  if (!pt.tabulated) return zero;
+  const I8 cat = __builtin_convertvector(load<U16x8>(io.category + j), I8);
+  const I8 c = vis ? cat : splat(pt.any_category);
+  // Each lane's sigma0 curve (the category's offset), through memory as
+  // the table entries in pair_block.
+  alignas(32) std::int32_t cc[kLanes], curve[kLanes];
+  store(cc, c);
+  asm("" : "+m"(cc));
+  for (int l = 0; l < kLanes; ++l) curve[l] = pt.curve_offset[cc[l]];
+  const F8 sigma0 = pair_block<Sigma0Lut::kSteps>(
+      pt.sigma0_pairs, curve, vis ? load<F8>(io.local_incidence + j) : zero, Sigma0Lut::kInvStep);
+  const F8 g2 = pt.uniform ? splat(pt.g2_uniform)
+                           : pair_block<TwoWayGainTable::kSteps>(
+                                 pt.gain2_pairs, nullptr, vis ? load<F8>(io.incidence + j) : zero,
+                                 kGainInvStep);
+  return element_power_ratio(g2, sigma0, area, vis ? r : splat(1.0f));
+}
+
 __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std::size_t j,
                                                       float near_m, float inv_dr, int bins,
                                                       const PowerTables& pt, I8 valid,
@@ -234,25 +260,7 @@ __attribute__((always_inline)) inline void bins_block(const BinsPassIo& io, std:
   store(io.frac_next + j, fast ? frac : zero);
   const F8 area = vis ? load<F8>(io.area + j) : zero;
   store(io.area_out + j, area);
-  F8 ratio = zero;
-  if (pt.tabulated) {
-    const I8 cat = __builtin_convertvector(load<U16x8>(io.category + j), I8);
-    const I8 c = vis ? cat : splat(pt.any_category);
-    // Each lane's sigma0 curve (the category's offset), through memory as
-    // the table entries in pair_block.
-    alignas(32) std::int32_t cc[kLanes], curve[kLanes];
-    store(cc, c);
-    asm("" : "+m"(cc));
-    for (int l = 0; l < kLanes; ++l) curve[l] = pt.curve_offset[cc[l]];
-    const F8 sigma0 = pair_block<Sigma0Lut::kSteps>(
-        pt.sigma0_pairs, curve, vis ? load<F8>(io.local_incidence + j) : zero, Sigma0Lut::kInvStep);
-    const F8 g2 = pt.uniform ? splat(pt.g2_uniform)
-                             : pair_block<TwoWayGainTable::kSteps>(
-                                   pt.gain2_pairs, nullptr, vis ? load<F8>(io.incidence + j) : zero,
-                                   kGainInvStep);
-    ratio = element_power_ratio(g2, sigma0, area, vis ? r : splat(1.0f));
-  }
-  store(io.ratio_out + j, ratio);
+  store(io.ratio_out + j, power_ratio_block(pt, vis, area, r, io, j));
 }
 
 // Pass 1 over the line; the last partial block through a padded copy (its
@@ -303,6 +311,38 @@ RIS_V4_VECTOR_CLONES void bins_pass(int n, float near_m, float inv_dr, int bins,
   }
 }
 
+// A further channel's pass 1 on eight elements: their power ratio only (the
+// bins, fractions and areas are the geometry's, io.area_out holding the
+// areas pass 1 stored: 0 where not visible, as bins_block reads them).
+__attribute__((always_inline)) inline void ratio_block(const BinsPassIo& io, std::size_t j,
+                                                       const PowerTables& pt) {
+  const I8 f = vec8::widen_u8(load<U8x8>(io.flags + j));
+  const I8 vis = (f & kHidden) == 0;
+  store(io.ratio_out + j,
+        power_ratio_block(pt, vis, load<F8>(io.area_out + j), load<F8>(io.range + j), io, j));
+}
+
+// A further channel's pass 1 over the line (its last partial block through
+// a padded copy, as bins_pass).
+RIS_V4_VECTOR_CLONES void ratio_pass(int n, const PowerTables& pt, const BinsPassIo& io) {
+  const std::size_t full = static_cast<std::size_t>(n / kLanes) * kLanes;
+  for (std::size_t j = 0; j < full; j += kLanes) ratio_block(io, j, pt);
+  const std::size_t rest = static_cast<std::size_t>(n) - full;
+  if (rest == 0) return;
+  std::uint8_t flags[kLanes];
+  float in[4][kLanes] = {}, ratio[kLanes];
+  std::uint16_t category[kLanes] = {};
+  std::fill(flags, flags + kLanes, sample_flag::kNoData);
+  std::copy_n(io.flags + full, rest, flags);
+  const float* const src[4] = {io.range, io.incidence, io.local_incidence, io.area_out};
+  for (int k = 0; k < 4; ++k) std::copy_n(src[k] + full, rest, in[k]);
+  std::copy_n(io.category + full, rest, category);
+  const BinsPassIo pad{flags,    in[0],   nullptr, nullptr, in[1], in[2], nullptr,
+                       category, nullptr, nullptr, nullptr, ratio, in[3]};
+  ratio_block(pad, 0, pt);
+  std::copy_n(ratio, rest, io.ratio_out + full);
+}
+
 // An element's power P_i = ratio k_radar 2^-40 from its
 // element_power_ratio (SlarElementContext::power_scale; 0 where not
 // visible: its ratio is 0).
@@ -317,7 +357,9 @@ inline double element_power(double power_scale, float ratio) {
 // bin `bins`. Each element's (power, area) split between b0 and b0 + 1 in
 // double here, as it is added (a pass of its own that stored the two
 // pairs cost more than the scatter's extra arithmetic: this loop waits on
-// its read-modify-writes).
+// its read-modify-writes). kGeometry: also the touch bits and centre counts
+// (the first channel; a further channel adds its power and the areas only).
+template <bool kGeometry>
 void scatter_pass(int j0, int n, int first_index, double power_scale, LineElementScratch& s) {
   using D2 = double __attribute__((vector_size(16)));
   const std::size_t stride = s.stride();
@@ -340,6 +382,7 @@ void scatter_pass(int j0, int n, int first_index, double power_scale, LineElemen
     const D2 l = pa - h;
     add(acc + 2 * b, l);
     add(acc + 2 * b + 2, h);
+    if constexpr (!kGeometry) return;
     const std::int32_t c = code[jj];
     // The two bins' touch bits as one 16-bit OR (little-endian: the first
     // bin's in the low byte, as code holds them).
@@ -370,7 +413,9 @@ void scatter_pass(int j0, int n, int first_index, double power_scale, LineElemen
 // line; one loop per type, so that each vectorises. Only the bins in
 // [lo, hi) were added to: the others are 0 in every copy (their power and
 // area outputs 0, touch bits and counts unchanged).
-RIS_VECTOR_CLONES void merge_pass(int bins, int lo, int hi, std::size_t stride,
+// geometry false (a further channel): the power and area only, touch and
+// counts neither read nor written (the first channel's merge cleared them).
+RIS_VECTOR_CLONES void merge_pass(bool geometry, int bins, int lo, int hi, std::size_t stride,
                                   double* __restrict acc, std::uint64_t* __restrict counts,
                                   std::uint8_t* __restrict touch, double* __restrict out_power,
                                   double* __restrict out_area, std::uint8_t* __restrict out_touch,
@@ -386,6 +431,12 @@ RIS_VECTOR_CLONES void merge_pass(int bins, int lo, int hi, std::size_t stride,
     const std::size_t k = 2 * b;
     out_power[b] = (acc[k] + acc[k + 2 * s1]) + (acc[k + 2 * s2] + acc[k + 2 * s3]);
     out_area[b] = (acc[k + 1] + acc[k + 1 + 2 * s1]) + (acc[k + 1 + 2 * s2] + acc[k + 1 + 2 * s3]);
+  }
+  if (!geometry) {
+    for (std::size_t q = 0; q < LineElementScratch::kCopies; ++q) {
+      std::fill(acc + 2 * (q * stride + b0), acc + 2 * (q * stride + b1), 0.0);
+    }
+    return;
   }
   for (std::size_t b = b0; b < b1; ++b) {
     out_touch[b] |=
@@ -404,6 +455,32 @@ RIS_VECTOR_CLONES void merge_pass(int bins, int lo, int hi, std::size_t stride,
     std::fill(touch + q * stride + b0, touch + q * stride + b1, std::uint8_t{0});
     std::fill(counts + q * stride + b0, counts + q * stride + b1, std::uint64_t{0});
   }
+}
+
+// An element's bin coordinates in double precision (pass 3's): its centre
+// and ends, and the interval they span.
+struct ElementSpan {
+  double pos, xa, xb, lo, hi;
+};
+inline ElementSpan element_span(const SlarElementContext& c, const LineElements& e, std::size_t j) {
+  ElementSpan x{};
+  x.pos = (double(e.slant_range_m[j]) - c.near_m) * c.inv_dr;
+  x.xa = (double(e.near_end_m[j]) - c.near_m) * c.inv_dr;
+  x.xb = (double(e.far_end_m[j]) - c.near_m) * c.inv_dr;
+  x.lo = std::min(std::min(x.xa, x.xb), x.pos);
+  x.hi = std::max(std::max(x.xa, x.xb), x.pos);
+  return x;
+}
+
+// Pass 3's power: a visible element's power and area, half each from its
+// near end to its centre and from its centre to its far end, into copy 0
+// by spread() (its ratio in s.ratio).
+inline void spread_element(const ElementSpan& x, const SlarElementContext& c, const LineElements& e,
+                           LineElementScratch& s, std::size_t j) {
+  const double half_power = 0.5 * element_power(c.power_scale, s.ratio[j]);
+  const double half_area = 0.5 * double(e.area_m2[j]);
+  spread(s.acc.data(), s.acc.data() + 1, x.xa, x.pos, half_power, half_area, c.bins, 2);
+  spread(s.acc.data(), s.acc.data() + 1, x.pos, x.xb, half_power, half_area, c.bins, 2);
 }
 
 }  // namespace
@@ -442,7 +519,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
                         s.ratio.data() + o,
                         s.area.data() + o};
     bins_pass(m, near_f, inv_dr_f, bins, pt, io, t, range);
-    scatter_pass(j0, m, e.first_index, c.power_scale, s);
+    scatter_pass<true>(j0, m, e.first_index, c.power_scale, s);
   }
 
   // Pass 3: the elements spanning more than two bins or the swath's edge,
@@ -471,30 +548,23 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     }
     const std::uint8_t f = e.flags[jj];
     const bool vis = sample_visible(f);
-    const double pos = (double(e.slant_range_m[jj]) - c.near_m) * c.inv_dr;
-    const double xa = (double(e.near_end_m[jj]) - c.near_m) * c.inv_dr;
-    const double xb = (double(e.far_end_m[jj]) - c.near_m) * c.inv_dr;
-    const double lo = std::min(std::min(xa, xb), pos), hi = std::max(std::max(xa, xb), pos);
-    if (hi < 0.0 || lo >= bins) continue;  // in single precision only
-    const int b0 = first_bin(lo), b1 = last_bin(hi, bins);
+    const ElementSpan x = element_span(c, e, jj);
+    if (x.hi < 0.0 || x.lo >= bins) continue;  // in single precision only
+    const int b0 = first_bin(x.lo), b1 = last_bin(x.hi, bins);
     range.add(b0, b1);
     std::uint8_t bits = slar_touch::kData;
     if (vis) bits |= slar_touch::kVisible;
     if (vis && (f & sample_flag::kLayover)) bits |= slar_touch::kLayover;
     for (int b = b0; b <= b1; ++b) s.touch[static_cast<std::size_t>(b)] |= bits;
-    if (!vis) continue;
-    // Half the element (near end to centre, centre to far end) each.
-    const double half_power = 0.5 * element_power(c.power_scale, s.ratio[jj]);
-    const double half_area = 0.5 * double(e.area_m2[jj]);
-    spread(s.acc.data(), s.acc.data() + 1, xa, pos, half_power, half_area, bins, 2);
-    spread(s.acc.data(), s.acc.data() + 1, pos, xb, half_power, half_area, bins, 2);
+    if (vis) spread_element(x, c, e, s, jj);
   }
 
   const bool any = range.lo <= range.hi;
   const int lo = any ? std::clamp(range.lo, 0, bins) : 0;
   const int hi = any ? std::clamp(range.hi + 1, lo, bins) : 0;
-  merge_pass(bins, lo, hi, s.stride(), s.acc.data(), s.counts.data(), s.touch.data(), out.power_w,
-             out.area_m2, out.touch, out.mapped_count, out.visible_count);
+  s.formed = {n, c.near_m, c.inv_dr, lo, hi};
+  merge_pass(true, bins, lo, hi, s.stride(), s.acc.data(), s.counts.data(), s.touch.data(),
+             out.power_w, out.area_m2, out.touch, out.mapped_count, out.visible_count);
   if (element_power_w) {
     for (int j = 0; j < n; ++j) {
       element_power_w[j] =
@@ -502,6 +572,49 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
     }
   }
   return t;
+}
+
+void form_channel_profile(const SlarElementContext& c, const LineElements& e, LineElementScratch& s,
+                          double* power_w, double* area_m2) {
+  const int n = e.samples;
+  // The line the scratch holds must be this one, in these range bins.
+  RIS_CHECK(s.formed.samples == n && s.bins == c.bins && s.formed.near_m == c.near_m &&
+            s.formed.inv_dr == c.inv_dr);
+  const Sigma0Lut& lut = *c.lut;
+  const PowerTables pt{!lut.empty(),         c.gain2->uniform(),    c.g2_uniform,
+                       c.gain2_pairs.data(), c.sigma0_pairs.data(), lut.offsets(),
+                       lut.any_category()};
+  // Passes 1-2 in the chunks form_line_profile uses (the L1 cache); the
+  // elements' order within each copy is the same, so the same sums.
+  constexpr int kChunk = 256;
+  for (int j0 = 0; j0 < n; j0 += kChunk) {
+    const int m = std::min(kChunk, n - j0);
+    const auto o = static_cast<std::size_t>(j0);
+    const BinsPassIo io{e.flags + o,
+                        e.slant_range_m + o,
+                        nullptr,
+                        nullptr,
+                        (e.incidence_rad ? e.incidence_rad : e.local_incidence_rad) + o,
+                        e.local_incidence_rad + o,
+                        nullptr,
+                        e.category + o,
+                        nullptr,
+                        nullptr,
+                        nullptr,
+                        s.ratio.data() + o,
+                        s.area.data() + o};
+    ratio_pass(m, pt, io);
+    scatter_pass<false>(j0, m, e.first_index, c.power_scale, s);
+  }
+  // Pass 3's elements (the list the first channel gathered), their power.
+  for (int g = 0; g < s.n_general; ++g) {
+    const std::size_t jj = static_cast<std::size_t>(s.general[static_cast<std::size_t>(g)]);
+    const ElementSpan x = element_span(c, e, jj);
+    if (x.hi < 0.0 || x.lo >= c.bins || !sample_visible(e.flags[jj])) continue;
+    spread_element(x, c, e, s, jj);
+  }
+  merge_pass(false, c.bins, s.formed.lo, s.formed.hi, s.stride(), s.acc.data(), nullptr, nullptr,
+             power_w, area_m2, nullptr, nullptr, nullptr);
 }
 
 }  // namespace ris::detail

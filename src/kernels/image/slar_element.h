@@ -183,6 +183,13 @@ struct LineElementScratch {
   std::vector<double> acc;
   std::vector<std::uint64_t> counts;
   std::vector<std::uint8_t> touch;
+  // The line form_line_profile formed last: its elements, range bins and
+  // the bins it added to, [lo, hi) (form_channel_profile's inputs).
+  struct Formed {
+    int samples = -1;
+    double near_m = 0.0, inv_dr = 0.0;
+    int lo = 0, hi = 0;
+  } formed;
   LineElementScratch(int samples, int bins);
   std::size_t stride() const { return static_cast<std::size_t>(bins) + 2; }
 };
@@ -195,5 +202,18 @@ struct LineElementScratch {
 LineElementTally form_line_profile(const SlarElementContext& c, const LineElements& e,
                                    LineElementScratch& s, const LineProfileRow& out,
                                    float* element_power_w);
+
+// A further channel of the line form_line_profile has just formed in s, from
+// the same elements e (the channel axis: another frequency, polarisation or
+// backscatter source over one geometry): only the power depends on the
+// channel (its radar equation, gain and sigma0 in c), so only the elements'
+// power ratios are computed again; their bins, fractions, areas and the
+// pass-3 list are the first channel's, read from s. Writes the channel's
+// profile before the range window (power_w, area_m2: `bins` values each,
+// overwritten), the same bytes as form_line_profile with c would give; the
+// touch bits and centre counts are the geometry's (the first channel's
+// row). c's range bins must be the first channel's (checked).
+void form_channel_profile(const SlarElementContext& c, const LineElements& e, LineElementScratch& s,
+                          double* power_w, double* area_m2);
 
 }  // namespace ris::detail

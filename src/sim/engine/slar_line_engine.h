@@ -169,12 +169,11 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
               in_swath += accumulate_line(stages.ctx, span.n, s, prof, line, local,
                                           stages.range_window_bins, span.first, stages.keep, &g,
                                           queries.stages);
-              // The other channels from the same geometry (the counts are
-              // the geometry's: the first channel's).
+              // The other channels from the same geometry and elements:
+              // their power only (the counts are the geometry's).
               for (const ExtraChannel& c : stages.channels) {
-                SlarLineCounts same;
-                accumulate_line(*c.ctx, span.n, s, *c.prof, line, same, c.range_window_bins,
-                                span.first, nullptr, &g);
+                accumulate_channel_line(*c.ctx, span.n, s, prof, *c.prof, line, c.range_window_bins,
+                                        span.first);
               }
               source.store_maps(line, span, s);
             }

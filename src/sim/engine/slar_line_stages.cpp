@@ -6,6 +6,7 @@
 #include <limits>
 #include <utility>
 
+#include "ris/util/error.h"
 #include "ris/util/units.h"
 
 namespace ris::detail {
@@ -72,6 +73,32 @@ std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScr
   }
   if (keep && keep->geometry) keep_line_geometry(*keep->geometry, line, first_sample, samples, s);
   return t.in_swath;
+}
+
+void accumulate_channel_line(const SlarElementContext& ctx, int samples, LineScratch& s,
+                             const SlarLineProfiles& first, SlarLineProfiles& prof, int line,
+                             double range_window_bins, int first_sample) {
+  const std::size_t row = prof.index(line, 0);
+  RIS_CHECK(prof.bins == first.bins && first.index(line, 0) == row);
+  const LineElements e{
+      samples,           s.flags.data(),     s.range.data(),           s.near_end.data(),
+      s.far_end.data(),  s.incidence.data(), s.local_incidence.data(), s.area.data(),
+      s.category.data(), first_sample};
+  form_channel_profile(ctx, e, s.elements, s.acc.acc.data(), s.acc.acc_area.data());
+  if (range_window_bins > 0.0) s.acc.apply_range_window(range_window_bins);
+  const std::size_t bins = static_cast<std::size_t>(prof.bins);
+  for (std::size_t b = 0; b < bins; ++b) {
+    prof.power_w[row + b] = static_cast<float>(s.acc.acc[b]);
+    prof.area_m2[row + b] = static_cast<float>(s.acc.acc_area[b]);
+  }
+  // The touch bits and centre counts follow from the geometry alone.
+  const auto copy_row = [&](const auto& from, auto& to) {
+    std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(row), bins,
+                to.begin() + static_cast<std::ptrdiff_t>(row));
+  };
+  copy_row(first.touch, prof.touch);
+  copy_row(first.mapped_count, prof.mapped_count);
+  copy_row(first.visible_count, prof.visible_count);
 }
 
 void keep_line_geometry(SlarGeometry& kept, int line, int first, int n, const LineScratch& s) {

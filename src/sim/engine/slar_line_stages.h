@@ -129,6 +129,16 @@ std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScr
                              const LineKeep* keep = nullptr, const SlarGeometry* g = nullptr,
                              std::span<const SceneQueryStage* const> queries = {});
 
+// A further channel's per-line step (the channel axis), right after the
+// first channel's accumulate_line on the same line and scratch: the
+// channel's power from the same elements (form_channel_profile), its range
+// window, its row of prof; the touch bits and centre counts copied from
+// the first channel's row (the geometry's). The same bytes as
+// accumulate_line with ctx would give, at a fraction of its work.
+void accumulate_channel_line(const SlarElementContext& ctx, int samples, LineScratch& s,
+                             const SlarLineProfiles& first, SlarLineProfiles& prof, int line,
+                             double range_window_bins, int first_sample);
+
 // The kept-geometry sink's step: the line's samples [first, first + n) from
 // the scratch into row `line` of `kept`, the samples outside unseen (NaN,
 // category 0, kUnseen: as the stage path leaves a sample without terrain).
