@@ -1,6 +1,7 @@
 // ris polsar end to end: a simulated quad-pol SLC set (the category
 // covariances' sampler) through the command, against Orfeo ToolBox's
 // H/A/alpha of the same SLCs, on NISAR products, and its refusals.
+#include <fmt/format.h>
 #include <gdal.h>
 #include <gtest/gtest.h>
 #include <hdf5.h>
@@ -150,40 +151,78 @@ TEST(PolsarCli, AgreesWithOrfeoToolBox) {
   if (!fs::exists(kOtb)) GTEST_SKIP() << "otb-bin is not installed (" << kOtb << ")";
   TempDir dir;
   const SimulatedSet s = simulate(dir);
-  const fs::path out = dir / "polsar";
-  ASSERT_EQ(run_ris("polsar " + rasters(s) + " --window 3 --out " + q(out)).exit_code, 0);
-  const fs::path otb = dir / "otb_haa.tif";
-  const std::string cmd = std::string(kOtb) + " -inhh " + q(s.hh) + " -inhv " + q(s.hv) +
-                          " -invv " + q(s.vv) + " -decomp haa -inco.kernelsize 1 -out " + q(otb) +
-                          " cfloat > " + q(dir / "otb.log") + " 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << test::read_file(dir / "otb.log");
-  const std::vector<double> h = read_band(out / "h_a_alpha.tif", 1);
-  const std::vector<double> a = read_band(out / "h_a_alpha.tif", 2);
-  const std::vector<double> al = read_band(out / "h_a_alpha.tif", 3);
-  const std::vector<double> oh = read_band(otb, 1), oal = read_band(otb, 2), oa = read_band(otb, 3);
-  double dh = 0.0, dal = 0.0, da = 0.0, mean_dal = 0.0;
-  int n = 0;
-  for (int r = 1; r < s.n - 1; ++r) {
-    for (int c = 1; c < s.n - 1; ++c) {
-      const auto i = static_cast<std::size_t>(r * s.n + c);
-      dh = std::max(dh, std::abs(h[i] - oh[i]));
-      dal = std::max(dal, std::abs(al[i] - oal[i]));
-      da = std::max(da, std::abs(a[i] - oa[i]));
-      mean_dal += std::abs(al[i] - oal[i]);
-      ++n;
+  for (int radius : {1, 3}) {
+    const int w = 2 * radius + 1;
+    const fs::path out = dir / fmt::format("polsar{}", w);
+    ASSERT_EQ(
+        run_ris(fmt::format("polsar {} --window {} --out {}", rasters(s), w, q(out))).exit_code, 0);
+    const fs::path otb = dir / fmt::format("otb_haa{}.tif", w);
+    const std::string cmd = fmt::format(
+        "{} -inhh {} -inhv {} -invv {} -decomp haa -inco.kernelsize {} -out {} cfloat "
+        "> {} 2>&1",
+        kOtb, q(s.hh), q(s.hv), q(s.vv), radius, q(otb), q(dir / "otb.log"));
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << test::read_file(dir / "otb.log");
+    const std::vector<double> h = read_band(out / "h_a_alpha.tif", 1);
+    const std::vector<double> a = read_band(out / "h_a_alpha.tif", 2);
+    const std::vector<double> al = read_band(out / "h_a_alpha.tif", 3);
+    const std::vector<double> oh = read_band(otb, 1), oal = read_band(otb, 2),
+                              oa = read_band(otb, 3);
+    double dh = 0.0, dal = 0.0, da = 0.0, mean_dal = 0.0;
+    int n = 0;
+    for (int r = radius; r < s.n - radius; ++r) {
+      for (int c = radius; c < s.n - radius; ++c) {
+        const auto i = static_cast<std::size_t>(r * s.n + c);
+        dh = std::max(dh, std::abs(h[i] - oh[i]));
+        dal = std::max(dal, std::abs(al[i] - oal[i]));
+        da = std::max(da, std::abs(a[i] - oa[i]));
+        mean_dal += std::abs(al[i] - oal[i]);
+        ++n;
+      }
     }
+    EXPECT_LT(dal, 0.5) << "alpha (deg), window " << w;
+    EXPECT_LT(dh, 0.01) << "entropy, window " << w;
+    EXPECT_LT(da, 0.01) << "anisotropy, window " << w;
+    RecordProperty(fmt::format("w{}_max_abs_diff_alpha_deg", w), fmt::format("{:.3g}", dal));
+    RecordProperty(fmt::format("w{}_max_abs_diff_entropy", w), fmt::format("{:.3g}", dh));
+    RecordProperty(fmt::format("w{}_max_abs_diff_anisotropy", w), fmt::format("{:.3g}", da));
+    std::printf(
+        "ris vs OTB, %d x %d window, %d interior pixels: max |d alpha| %.3g deg (mean "
+        "%.3g), max |d H| %.3g, max |d A| %.3g\n",
+        w, w, n, dal, mean_dal / n, dh, da);
   }
-  EXPECT_LT(dal, 0.5) << "alpha (deg)";
-  EXPECT_LT(dh, 0.01) << "entropy";
-  EXPECT_LT(da, 0.01) << "anisotropy";
-  RecordProperty("max_abs_diff_alpha_deg", std::to_string(dal));
-  RecordProperty("mean_abs_diff_alpha_deg", std::to_string(mean_dal / n));
-  RecordProperty("max_abs_diff_entropy", std::to_string(dh));
-  RecordProperty("max_abs_diff_anisotropy", std::to_string(da));
-  std::printf(
-      "ris vs OTB over %d interior pixels: max |d alpha| %.3g deg (mean %.3g), max |d H| "
-      "%.3g, max |d A| %.3g\n",
-      n, dal, mean_dal / n, dh, da);
+}
+
+// The Pauli components: OTB's -decomp pauli gives (HH+VV)/sqrt2, (HH-VV)/sqrt2,
+// sqrt2 HV (complex); their powers are ris's single-look T11, T22, T33, the
+// blue, red and green of pauli.png.
+TEST(PolsarCli, PauliComponentsAgreeWithOrfeoToolBox) {
+  if (!fs::exists(kOtb)) GTEST_SKIP() << "otb-bin is not installed (" << kOtb << ")";
+  TempDir dir;
+  const SimulatedSet s = simulate(dir);
+  const fs::path out = dir / "polsar";
+  ASSERT_EQ(run_ris("polsar " + rasters(s) + " --window 1 --out " + q(out)).exit_code, 0);
+  const fs::path otb = dir / "otb_pauli.tif";
+  const std::string cmd =
+      fmt::format("{} -inhh {} -inhv {} -invv {} -decomp pauli -out {} cfloat > {} 2>&1", kOtb,
+                  q(s.hh), q(s.hv), q(s.vv), q(otb), q(dir / "otb.log"));
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << test::read_file(dir / "otb.log");
+  ensure_gdal_registered();
+  GDALDatasetH ds = GDALOpen(otb.c_str(), GA_ReadOnly);
+  ASSERT_NE(ds, nullptr);
+  double worst = 0.0;
+  const std::array<int, 3> t3_band = {1, 6, 9};  // T11, T22, T33
+  for (int b = 0; b < 3; ++b) {
+    std::vector<std::complex<double>> v(static_cast<std::size_t>(s.n * s.n));
+    ASSERT_EQ(GDALRasterIO(GDALGetRasterBand(ds, b + 1), GF_Read, 0, 0, s.n, s.n, v.data(), s.n,
+                           s.n, GDT_CFloat64, 0, 0),
+              CE_None);
+    const std::vector<double> t = read_band(out / "t3.tif", t3_band[static_cast<std::size_t>(b)]);
+    for (std::size_t i = 0; i < v.size(); ++i)
+      worst = std::max(worst, std::abs(t[i] - std::norm(v[i])) / std::max(t[i], 1e-12));
+  }
+  GDALClose(ds);
+  EXPECT_LT(worst, 1e-5);
+  RecordProperty("pauli_max_rel_diff", fmt::format("{:.3g}", worst));
 }
 
 TEST(PolsarCli, RefusesChannelsOnDifferentGrids) {
@@ -239,6 +278,8 @@ TEST(PolsarCli, NisarProducts) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("no SLC layer HV, VH, VV"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("holds HH"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("listOfPolarizations names HH, HV, VH, VV"), std::string::npos)
+      << r.output;
   EXPECT_FALSE(fs::exists(out));
   const fs::path copy = dir / "quad.h5";
   fs::copy_file(kSanAnd, copy);

@@ -4,9 +4,11 @@
 
 #include <fmt/format.h>
 #include <gdal.h>
+#include <gdal_priv.h>
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 
 #include "ris/io/gdal_util.h"
 #include "ris/io/safe_paths.h"
@@ -97,6 +99,30 @@ QuadPolSlc assemble(std::array<OneChannel, 4>& ch, const std::array<std::string,
   return s;
 }
 
+// The product's listOfPolarizations in `group` ("/science/LSAR/SLC/swaths/
+// frequencyA"), comma separated, or "" when it has none or it cannot be read.
+std::string listed_polarisations(const std::string& path, const std::string& group) {
+  const std::unique_ptr<GDALDataset> ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY));
+  if (!ds) return "";
+  const auto root = ds->GetRootGroup();
+  const auto a = root ? root->OpenMDArrayFromFullname(group + "/listOfPolarizations") : nullptr;
+  if (!a || a->GetDimensionCount() != 1) return "";
+  const std::size_t n = static_cast<std::size_t>(a->GetDimensions()[0]->GetSize());
+  if (n == 0 || n > 16) return "";
+  std::vector<char*> v(n, nullptr);
+  const GUInt64 start = 0;
+  const std::size_t count = n;
+  std::string out;
+  if (a->Read(&start, &count, nullptr, nullptr, GDALExtendedDataType::CreateString(), v.data())) {
+    for (char* p : v) {
+      if (p != nullptr) out += (out.empty() ? "" : ", ") + std::string(p);
+    }
+  }
+  for (char* p : v) CPLFree(p);
+  return out;
+}
+
 }  // namespace
 
 QuadPolSlc read_quad_pol_rasters(const std::array<std::string, 4>& paths) {
@@ -121,7 +147,7 @@ QuadPolSlc read_quad_pol_nisar(const std::string& path, const std::string& frequ
   if (!ds) throw InputError(path, "", "GDAL cannot open it: " + last_gdal_error());
   // The SLC layers under swaths/frequency<F>/ by polarisation.
   std::array<std::string, 4> names;
-  std::string held;
+  std::string held, group;
   char** subs = GDALGetMetadata(handle(ds), "SUBDATASETS");
   const std::string folder = "/swaths/frequency" + frequency + "/";
   for (int i = 0; subs != nullptr && subs[i] != nullptr; ++i) {
@@ -132,6 +158,10 @@ QuadPolSlc read_quad_pol_nisar(const std::string& path, const std::string& frequ
     const auto at = name.find(folder);
     if (at == std::string::npos || name.find("SLC/swaths") == std::string::npos) continue;
     const std::string leaf = name.substr(at + folder.size());
+    const auto root = name.find("://");
+    if (group.empty() && root != std::string::npos) {
+      group = name.substr(root + 2, at + folder.size() - 1 - (root + 2));
+    }
     for (std::size_t p = 0; p < 4; ++p) {
       if (leaf == kPols[p]) {
         names[p] = name;
@@ -143,12 +173,16 @@ QuadPolSlc read_quad_pol_nisar(const std::string& path, const std::string& frequ
   for (std::size_t p = 0; p < 4; ++p)
     if (names[p].empty()) missing += (missing.empty() ? "" : ", ") + std::string(kPols[p]);
   if (!missing.empty()) {
+    const std::string listed = group.empty() ? "" : listed_polarisations(path, group);
     throw InputError(
         path, "frequency" + frequency,
         fmt::format("not a quad-pol product: no SLC layer {} under science/*/SLC/swaths/"
-                    "frequency{} (the file holds {}; its listOfPolarizations may name more than "
-                    "it stores); give four single-polarisation rasters instead",
-                    missing, frequency, held.empty() ? std::string("none") : held));
+                    "frequency{} (the file holds {}{}); give four single-polarisation rasters "
+                    "instead",
+                    missing, frequency, held.empty() ? std::string("none") : held,
+                    listed.empty()
+                        ? std::string()
+                        : "; its listOfPolarizations names " + listed + ", more than it stores"));
   }
   std::array<OneChannel, 4> ch;
   std::array<std::string, 4> labels;
