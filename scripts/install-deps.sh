@@ -17,6 +17,12 @@ packages=(
   libkissfft-dev
   # Boost.Math's Gauss-Legendre rules (header-only): the I2EM's HV integral
   libboost-dev
+  # Eigen (header-only): the Hermitian eigen-decomposition of the polarimetric
+  # decompositions (ris polsar, docs/polarimetry.md)
+  libeigen3-dev
+  # Orfeo ToolBox's applications: the independent H/A/alpha that
+  # tests/polsar_cli_test.cpp compares ris polsar with (skipped without it)
+  otb-bin
   # Random123 (header-only): the reference Philox the tests compare ris's with
   librandom123-dev
   # The libFuzzer harnesses (make fuzz, fuzz/): clang and its libFuzzer
