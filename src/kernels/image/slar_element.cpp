@@ -54,6 +54,15 @@ LineElementScratch::LineElementScratch(int samples, int bins_)
   general.resize(first.size());
 }
 
+void LineElementScratch::reserve_channels(int n) {
+  channels = n;
+  const auto k = static_cast<std::size_t>(n);
+  channel_acc.assign(k * kCopies * stride(), 0.0);
+  channel_ratio.assign(k * kChunk, 0.0f);
+  channel_general_ratio.assign(k * first.size(), 0.0f);
+  formed_area.assign(static_cast<std::size_t>(bins), 0.0);
+}
+
 namespace {
 
 constexpr std::int32_t kSkip = sample_flag::kNoData | sample_flag::kUnseen;
@@ -357,9 +366,7 @@ inline double element_power(double power_scale, float ratio) {
 // bin `bins`. Each element's (power, area) split between b0 and b0 + 1 in
 // double here, as it is added (a pass of its own that stored the two
 // pairs cost more than the scatter's extra arithmetic: this loop waits on
-// its read-modify-writes). kGeometry: also the touch bits and centre counts
-// (the first channel; a further channel adds its power and the areas only).
-template <bool kGeometry>
+// its read-modify-writes).
 void scatter_pass(int j0, int n, int first_index, double power_scale, LineElementScratch& s) {
   using D2 = double __attribute__((vector_size(16)));
   const std::size_t stride = s.stride();
@@ -382,7 +389,6 @@ void scatter_pass(int j0, int n, int first_index, double power_scale, LineElemen
     const D2 l = pa - h;
     add(acc + 2 * b, l);
     add(acc + 2 * b + 2, h);
-    if constexpr (!kGeometry) return;
     const std::int32_t c = code[jj];
     // The two bins' touch bits as one 16-bit OR (little-endian: the first
     // bin's in the low byte, as code holds them).
@@ -413,9 +419,7 @@ void scatter_pass(int j0, int n, int first_index, double power_scale, LineElemen
 // line; one loop per type, so that each vectorises. Only the bins in
 // [lo, hi) were added to: the others are 0 in every copy (their power and
 // area outputs 0, touch bits and counts unchanged).
-// geometry false (a further channel): the power and area only, touch and
-// counts neither read nor written (the first channel's merge cleared them).
-RIS_VECTOR_CLONES void merge_pass(bool geometry, int bins, int lo, int hi, std::size_t stride,
+RIS_VECTOR_CLONES void merge_pass(int bins, int lo, int hi, std::size_t stride,
                                   double* __restrict acc, std::uint64_t* __restrict counts,
                                   std::uint8_t* __restrict touch, double* __restrict out_power,
                                   double* __restrict out_area, std::uint8_t* __restrict out_touch,
@@ -431,12 +435,6 @@ RIS_VECTOR_CLONES void merge_pass(bool geometry, int bins, int lo, int hi, std::
     const std::size_t k = 2 * b;
     out_power[b] = (acc[k] + acc[k + 2 * s1]) + (acc[k + 2 * s2] + acc[k + 2 * s3]);
     out_area[b] = (acc[k + 1] + acc[k + 1 + 2 * s1]) + (acc[k + 1 + 2 * s2] + acc[k + 1 + 2 * s3]);
-  }
-  if (!geometry) {
-    for (std::size_t q = 0; q < LineElementScratch::kCopies; ++q) {
-      std::fill(acc + 2 * (q * stride + b0), acc + 2 * (q * stride + b1), 0.0);
-    }
-    return;
   }
   for (std::size_t b = b0; b < b1; ++b) {
     out_touch[b] |=
@@ -499,7 +497,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   const PowerTables pt{!lut.empty(),         c.gain2->uniform(),    c.g2_uniform,
                        c.gain2_pairs.data(), c.sigma0_pairs.data(), lut.offsets(),
                        lut.any_category()};
-  constexpr int kChunk = 256;
+  constexpr int kChunk = LineElementScratch::kChunk;
   BinRange range;
   const float near_f = static_cast<float>(c.near_m), inv_dr_f = static_cast<float>(c.inv_dr);
   for (int j0 = 0; j0 < n; j0 += kChunk) {
@@ -519,7 +517,7 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
                         s.ratio.data() + o,
                         s.area.data() + o};
     bins_pass(m, near_f, inv_dr_f, bins, pt, io, t, range);
-    scatter_pass<true>(j0, m, e.first_index, c.power_scale, s);
+    scatter_pass(j0, m, e.first_index, c.power_scale, s);
   }
 
   // Pass 3: the elements spanning more than two bins or the swath's edge,
@@ -563,8 +561,9 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   const int lo = any ? std::clamp(range.lo, 0, bins) : 0;
   const int hi = any ? std::clamp(range.hi + 1, lo, bins) : 0;
   s.formed = {n, c.near_m, c.inv_dr, lo, hi};
-  merge_pass(true, bins, lo, hi, s.stride(), s.acc.data(), s.counts.data(), s.touch.data(),
-             out.power_w, out.area_m2, out.touch, out.mapped_count, out.visible_count);
+  merge_pass(bins, lo, hi, s.stride(), s.acc.data(), s.counts.data(), s.touch.data(), out.power_w,
+             out.area_m2, out.touch, out.mapped_count, out.visible_count);
+  if (s.channels > 0) std::copy_n(out.area_m2, bins, s.formed_area.begin());
   if (element_power_w) {
     for (int j = 0; j < n; ++j) {
       element_power_w[j] =
@@ -574,47 +573,113 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
   return t;
 }
 
-void form_channel_profile(const SlarElementContext& c, const LineElements& e, LineElementScratch& s,
-                          double* power_w, double* area_m2) {
+void scatter_channel_elements(std::span<const SlarElementContext* const> channels,
+                              const LineElements& e, LineElementScratch& s) {
   const int n = e.samples;
-  // The line the scratch holds must be this one, in these range bins.
-  RIS_CHECK(s.formed.samples == n && s.bins == c.bins && s.formed.near_m == c.near_m &&
-            s.formed.inv_dr == c.inv_dr);
-  const Sigma0Lut& lut = *c.lut;
-  const PowerTables pt{!lut.empty(),         c.gain2->uniform(),    c.g2_uniform,
-                       c.gain2_pairs.data(), c.sigma0_pairs.data(), lut.offsets(),
-                       lut.any_category()};
-  // Passes 1-2 in the chunks form_line_profile uses (the L1 cache); the
-  // elements' order within each copy is the same, so the same sums.
-  constexpr int kChunk = 256;
+  const int nc = static_cast<int>(channels.size());
+  RIS_CHECK(nc <= s.channels);
+  const std::size_t stride = s.stride();
+  for (const SlarElementContext* c : channels) {
+    // The line the scratch holds must be this one, in these range bins.
+    RIS_CHECK(s.formed.samples == n && s.bins == c->bins && s.formed.near_m == c->near_m &&
+              s.formed.inv_dr == c->inv_dr);
+  }
+  constexpr int kChunk = LineElementScratch::kChunk;
+  float* const ratio = s.channel_ratio.data();
+  double* const acc = s.channel_acc.data();
+  const std::int32_t* __restrict first = s.first.data();
+  const float* __restrict frac_next = s.frac_next.data();
+  float* const general_ratio = s.channel_general_ratio.data();
+  const std::size_t samples = s.first.size();
+  int g_next = 0;
   for (int j0 = 0; j0 < n; j0 += kChunk) {
     const int m = std::min(kChunk, n - j0);
     const auto o = static_cast<std::size_t>(j0);
-    const BinsPassIo io{e.flags + o,
-                        e.slant_range_m + o,
-                        nullptr,
-                        nullptr,
-                        (e.incidence_rad ? e.incidence_rad : e.local_incidence_rad) + o,
-                        e.local_incidence_rad + o,
-                        nullptr,
-                        e.category + o,
-                        nullptr,
-                        nullptr,
-                        nullptr,
-                        s.ratio.data() + o,
-                        s.area.data() + o};
-    ratio_pass(m, pt, io);
-    scatter_pass<false>(j0, m, e.first_index, c.power_scale, s);
+    // Pass 1: each channel's power ratios for the chunk.
+    for (int k = 0; k < nc; ++k) {
+      const SlarElementContext& c = *channels[static_cast<std::size_t>(k)];
+      const Sigma0Lut& lut = *c.lut;
+      const PowerTables pt{!lut.empty(),         c.gain2->uniform(),    c.g2_uniform,
+                           c.gain2_pairs.data(), c.sigma0_pairs.data(), lut.offsets(),
+                           lut.any_category()};
+      const BinsPassIo io{e.flags + o,
+                          e.slant_range_m + o,
+                          nullptr,
+                          nullptr,
+                          (e.incidence_rad ? e.incidence_rad : e.local_incidence_rad) + o,
+                          e.local_incidence_rad + o,
+                          nullptr,
+                          e.category + o,
+                          nullptr,
+                          nullptr,
+                          nullptr,
+                          ratio + static_cast<std::size_t>(k) * kChunk,
+                          s.area.data() + o};
+      ratio_pass(m, pt, io);
+    }
+    // Pass 2 for every channel at once: each element's bin and fraction
+    // read once; its power into copy (first_index + j) % 4 of each channel
+    // as scatter_pass adds it (the same operations, in the same order).
+    for (int j = j0; j < j0 + m; ++j) {
+      const std::size_t jj = static_cast<std::size_t>(j);
+      const std::size_t q = static_cast<std::size_t>((e.first_index + j) & 3);
+      const std::size_t b = q * stride + static_cast<std::size_t>(first[jj]);
+      const double fr = double(frac_next[jj]);
+      for (int k = 0; k < nc; ++k) {
+        const std::size_t kk = static_cast<std::size_t>(k);
+        const double p = element_power(channels[kk]->power_scale, ratio[kk * kChunk + (jj - o)]);
+        const double h = p * fr;
+        double* a = acc + kk * LineElementScratch::kCopies * stride + b;
+        a[0] += p - h;
+        a[1] += h;
+      }
+    }
+    // Pass 3's elements of the chunk (the list the first channel gathered,
+    // in element order): their ratios kept for after the last chunk.
+    for (; g_next < s.n_general; ++g_next) {
+      const std::size_t jj = static_cast<std::size_t>(s.general[static_cast<std::size_t>(g_next)]);
+      if (jj >= o + static_cast<std::size_t>(m)) break;
+      for (std::size_t k = 0; k < static_cast<std::size_t>(nc); ++k) {
+        general_ratio[k * samples + static_cast<std::size_t>(g_next)] =
+            ratio[k * kChunk + (jj - o)];
+      }
+    }
   }
-  // Pass 3's elements (the list the first channel gathered), their power.
+  // Pass 3 into copy 0 of each channel, after pass 2 as form_line_profile
+  // adds them (the same sums in the same order).
   for (int g = 0; g < s.n_general; ++g) {
     const std::size_t jj = static_cast<std::size_t>(s.general[static_cast<std::size_t>(g)]);
-    const ElementSpan x = element_span(c, e, jj);
-    if (x.hi < 0.0 || x.lo >= c.bins || !sample_visible(e.flags[jj])) continue;
-    spread_element(x, c, e, s, jj);
+    if (!sample_visible(e.flags[jj])) continue;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(nc); ++k) {
+      const SlarElementContext& c = *channels[k];
+      const ElementSpan x = element_span(c, e, jj);
+      if (x.hi < 0.0 || x.lo >= c.bins) continue;
+      const double half =
+          0.5 *
+          element_power(c.power_scale, general_ratio[k * samples + static_cast<std::size_t>(g)]);
+      double* a = acc + k * LineElementScratch::kCopies * stride;
+      spread_fractions(x.xa, x.pos, c.bins, [&](int bin, double f) { a[bin] += half * f; });
+      spread_fractions(x.pos, x.xb, c.bins, [&](int bin, double f) { a[bin] += half * f; });
+    }
   }
-  merge_pass(false, c.bins, s.formed.lo, s.formed.hi, s.stride(), s.acc.data(), nullptr, nullptr,
-             power_w, area_m2, nullptr, nullptr, nullptr);
+}
+
+RIS_VECTOR_CLONES void merge_channel(LineElementScratch& s, int channel,
+                                     double* __restrict power_w) {
+  RIS_CHECK(channel < s.channels);
+  const std::size_t stride = s.stride();
+  double* __restrict acc = s.channel_acc.data() +
+                           static_cast<std::size_t>(channel) * LineElementScratch::kCopies * stride;
+  const auto b0 = static_cast<std::size_t>(s.formed.lo), b1 = static_cast<std::size_t>(s.formed.hi);
+  const auto bins = static_cast<std::size_t>(s.bins);
+  std::fill(power_w, power_w + b0, 0.0);
+  std::fill(power_w + b1, power_w + bins, 0.0);
+  for (std::size_t b = b0; b < b1; ++b) {
+    power_w[b] = (acc[b] + acc[b + stride]) + (acc[b + 2 * stride] + acc[b + 3 * stride]);
+  }
+  for (std::size_t q = 0; q < LineElementScratch::kCopies; ++q) {
+    std::fill(acc + q * stride + b0, acc + q * stride + b1, 0.0);
+  }
 }
 
 }  // namespace ris::detail

@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "ris/backscatter/sigma0_lut.h"
@@ -50,23 +51,29 @@ inline int last_bin(double hi, int bins) {
 // and x1 (either order) to acc; the part outside [0, bins) is lost. A
 // zero-length interval puts everything into its bin. Bin b is acc[b *
 // stride] (and acc_area[b * stride]): stride 2 for interleaved pairs.
-inline void spread(double* acc, double* acc_area, double x0, double x1, double power, double area,
-                   int bins, std::size_t stride = 1) {
+// spread_fractions calls add(b, f) with the fraction f of the interval in
+// each bin b it touches (spread's arithmetic, for any accumulator).
+template <class Add>
+inline void spread_fractions(double x0, double x1, int bins, Add add) {
   const double lo = std::min(x0, x1), hi = std::max(x0, x1);
   if (hi < 0.0 || lo >= bins) return;
   const int b0 = first_bin(lo), b1 = last_bin(hi, bins);
   const double width = hi - lo;
   if (b0 == b1 && width <= 0.0) {
-    acc[static_cast<std::size_t>(b0) * stride] += power;
-    acc_area[static_cast<std::size_t>(b0) * stride] += area;
+    add(b0, 1.0);  // x * 1.0 is x: the whole value, exactly
     return;
   }
   const double inv_width = 1.0 / width;
   for (int b = b0; b <= b1; ++b) {
-    const double f = (std::min(hi, double(b + 1)) - std::max(lo, double(b))) * inv_width;
+    add(b, (std::min(hi, double(b + 1)) - std::max(lo, double(b))) * inv_width);
+  }
+}
+inline void spread(double* acc, double* acc_area, double x0, double x1, double power, double area,
+                   int bins, std::size_t stride = 1) {
+  spread_fractions(x0, x1, bins, [&](int b, double f) {
     acc[static_cast<std::size_t>(b) * stride] += power * f;
     acc_area[static_cast<std::size_t>(b) * stride] += area * f;
-  }
+  });
 }
 
 // The constant part of one run's image formation.
@@ -184,12 +191,24 @@ struct LineElementScratch {
   std::vector<std::uint64_t> counts;
   std::vector<std::uint8_t> touch;
   // The line form_line_profile formed last: its elements, range bins and
-  // the bins it added to, [lo, hi) (form_channel_profile's inputs).
+  // the bins it added to, [lo, hi) (the further channels' inputs).
   struct Formed {
     int samples = -1;
     double near_m = 0.0, inv_dr = 0.0;
     int lo = 0, hi = 0;
   } formed;
+  // Passes 1-2 work a chunk of elements at a time (the L1 cache).
+  static constexpr int kChunk = 256;
+  // The further channels (the channel axis; reserve_channels): their
+  // number; per channel its four power-only profile copies (channel k copy q
+  // bin b at (k kCopies + q) stride + b), a chunk of power ratios, the
+  // ratios of pass 3's elements; the first channel's area profile (every
+  // channel's: it follows from the geometry).
+  int channels = 0;
+  std::vector<double> channel_acc;
+  std::vector<float> channel_ratio, channel_general_ratio;
+  std::vector<double> formed_area;
+  void reserve_channels(int n);
   LineElementScratch(int samples, int bins);
   std::size_t stride() const { return static_cast<std::size_t>(bins) + 2; }
 };
@@ -203,17 +222,22 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
                                    LineElementScratch& s, const LineProfileRow& out,
                                    float* element_power_w);
 
-// A further channel of the line form_line_profile has just formed in s, from
-// the same elements e (the channel axis: another frequency, polarisation or
-// backscatter source over one geometry): only the power depends on the
-// channel (its radar equation, gain and sigma0 in c), so only the elements'
-// power ratios are computed again; their bins, fractions, areas and the
-// pass-3 list are the first channel's, read from s. Writes the channel's
-// profile before the range window (power_w, area_m2: `bins` values each,
-// overwritten), the same bytes as form_line_profile with c would give; the
-// touch bits and centre counts are the geometry's (the first channel's
-// row). c's range bins must be the first channel's (checked).
-void form_channel_profile(const SlarElementContext& c, const LineElements& e, LineElementScratch& s,
-                          double* power_w, double* area_m2);
+// The further channels of the line form_line_profile has just formed in s,
+// from the same elements e (the channel axis: other frequencies,
+// polarisations or backscatter sources over one geometry;
+// s.reserve_channels(channels.size()) first). Only an element's power
+// depends on the channel (its radar equation, gain and sigma0), so only
+// that is computed again; the bins, fractions and pass-3 list are the first
+// channel's, read from s, and each element's bin is read once for all the
+// channels. Their profiles stay in s until merge_channel; each is the
+// same bytes as form_line_profile with its context would give, and so is
+// the area (s.formed_area, the first channel's). The contexts' range bins
+// must be the first channel's (checked).
+void scatter_channel_elements(std::span<const SlarElementContext* const> channels,
+                              const LineElements& e, LineElementScratch& s);
+
+// Channel `channel`'s profile (power, before the range window: `bins`
+// values, overwritten) from its copies, which are cleared for the next line.
+void merge_channel(LineElementScratch& s, int channel, double* power_w);
 
 }  // namespace ris::detail

@@ -70,19 +70,6 @@ constexpr bool makes_geometry() {
   }
 }
 
-// A channel of a run beyond its first (the channel axis: another frequency,
-// polarisation or backscatter source over the same geometry,
-// ris/sim/slar_channels.h): its element context (radar equation, gain
-// table, sigma0 look-up), its range window and its profiles, which each line
-// fills after the first channel's from the same per-line geometry in the
-// scratch. The range bins are the first channel's. No kept geometry and no
-// point targets (the first channel keeps what is kept).
-struct ExtraChannel {
-  const SlarElementContext* ctx = nullptr;
-  double range_window_bins = 0.0;
-  SlarLineProfiles* prof = nullptr;
-};
-
 // Whether a channel's gain table reads each sample's incidence.
 inline bool channels_need_incidence(std::span<const ExtraChannel> channels) {
   return std::any_of(channels.begin(), channels.end(),
@@ -154,6 +141,9 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
   {
     LineScratch s(g, prof.bins);
     SlarLineCounts local;
+    std::vector<const SlarElementContext*> contexts;
+    for (const ExtraChannel& c : stages.channels) contexts.push_back(c.ctx);
+    s.elements.reserve_channels(static_cast<int>(contexts.size()));
     auto thread_source = make_thread_source(s);
 #pragma omp for schedule(dynamic, 1)
     for (int block = 0; block < blocks; ++block) {
@@ -171,9 +161,9 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
                                           queries.stages);
               // The other channels from the same geometry and elements:
               // their power only (the counts are the geometry's).
-              for (const ExtraChannel& c : stages.channels) {
-                accumulate_channel_line(*c.ctx, span.n, s, prof, *c.prof, line, c.range_window_bins,
-                                        span.first);
+              if (!stages.channels.empty()) {
+                accumulate_channel_lines(stages.channels, contexts, span.n, s, prof, line,
+                                         span.first);
               }
               source.store_maps(line, span, s);
             }

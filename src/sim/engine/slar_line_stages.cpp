@@ -75,30 +75,37 @@ std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScr
   return t.in_swath;
 }
 
-void accumulate_channel_line(const SlarElementContext& ctx, int samples, LineScratch& s,
-                             const SlarLineProfiles& first, SlarLineProfiles& prof, int line,
-                             double range_window_bins, int first_sample) {
-  const std::size_t row = prof.index(line, 0);
-  RIS_CHECK(prof.bins == first.bins && first.index(line, 0) == row);
+void accumulate_channel_lines(std::span<const ExtraChannel> channels,
+                              std::span<const SlarElementContext* const> contexts, int samples,
+                              LineScratch& s, const SlarLineProfiles& first, int line,
+                              int first_sample) {
+  const std::size_t row = first.index(line, 0);
   const LineElements e{
       samples,           s.flags.data(),     s.range.data(),           s.near_end.data(),
       s.far_end.data(),  s.incidence.data(), s.local_incidence.data(), s.area.data(),
       s.category.data(), first_sample};
-  form_channel_profile(ctx, e, s.elements, s.acc.acc.data(), s.acc.acc_area.data());
-  if (range_window_bins > 0.0) s.acc.apply_range_window(range_window_bins);
-  const std::size_t bins = static_cast<std::size_t>(prof.bins);
-  for (std::size_t b = 0; b < bins; ++b) {
-    prof.power_w[row + b] = static_cast<float>(s.acc.acc[b]);
-    prof.area_m2[row + b] = static_cast<float>(s.acc.acc_area[b]);
+  scatter_channel_elements(contexts, e, s.elements);
+  const std::size_t bins = static_cast<std::size_t>(first.bins);
+  for (std::size_t k = 0; k < channels.size(); ++k) {
+    const ExtraChannel& c = channels[k];
+    SlarLineProfiles& prof = *c.prof;
+    RIS_CHECK(prof.bins == first.bins && prof.index(line, 0) == row);
+    merge_channel(s.elements, static_cast<int>(k), s.acc.acc.data());
+    std::copy(s.elements.formed_area.begin(), s.elements.formed_area.end(), s.acc.acc_area.begin());
+    if (c.range_window_bins > 0.0) s.acc.apply_range_window(c.range_window_bins);
+    for (std::size_t b = 0; b < bins; ++b) {
+      prof.power_w[row + b] = static_cast<float>(s.acc.acc[b]);
+      prof.area_m2[row + b] = static_cast<float>(s.acc.acc_area[b]);
+    }
+    // The touch bits and centre counts follow from the geometry alone.
+    const auto copy_row = [&](const auto& from, auto& to) {
+      std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(row), bins,
+                  to.begin() + static_cast<std::ptrdiff_t>(row));
+    };
+    copy_row(first.touch, prof.touch);
+    copy_row(first.mapped_count, prof.mapped_count);
+    copy_row(first.visible_count, prof.visible_count);
   }
-  // The touch bits and centre counts follow from the geometry alone.
-  const auto copy_row = [&](const auto& from, auto& to) {
-    std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(row), bins,
-                to.begin() + static_cast<std::ptrdiff_t>(row));
-  };
-  copy_row(first.touch, prof.touch);
-  copy_row(first.mapped_count, prof.mapped_count);
-  copy_row(first.visible_count, prof.visible_count);
 }
 
 void keep_line_geometry(SlarGeometry& kept, int line, int first, int n, const LineScratch& s) {

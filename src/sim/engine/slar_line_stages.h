@@ -129,15 +129,31 @@ std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScr
                              const LineKeep* keep = nullptr, const SlarGeometry* g = nullptr,
                              std::span<const SceneQueryStage* const> queries = {});
 
-// A further channel's per-line step (the channel axis), right after the
-// first channel's accumulate_line on the same line and scratch: the
-// channel's power from the same elements (form_channel_profile), its range
-// window, its row of prof; the touch bits and centre counts copied from
-// the first channel's row (the geometry's). The same bytes as
-// accumulate_line with ctx would give, at a fraction of its work.
-void accumulate_channel_line(const SlarElementContext& ctx, int samples, LineScratch& s,
-                             const SlarLineProfiles& first, SlarLineProfiles& prof, int line,
-                             double range_window_bins, int first_sample);
+// A channel of a run beyond its first (the channel axis: another frequency,
+// polarisation or backscatter source over the same geometry,
+// ris/sim/slar_channels.h): its element context (radar equation, gain
+// table, sigma0 look-up), its range window and its profiles, which each line
+// fills after the first channel's from the same per-line geometry in the
+// scratch. The range bins are the first channel's. No kept geometry and no
+// point targets (the first channel keeps what is kept).
+struct ExtraChannel {
+  const SlarElementContext* ctx = nullptr;
+  double range_window_bins = 0.0;
+  SlarLineProfiles* prof = nullptr;
+};
+
+// The further channels' per-line step (the channel axis), right after the
+// first channel's accumulate_line on the same line and scratch: their
+// power from the same elements (scatter_channel_elements; contexts: the
+// channels' element contexts, in order; s.elements.reserve_channels done),
+// each channel's range window and row of its profiles; the area, touch
+// bits and centre counts are the first channel's row (the geometry's). The
+// same bytes as accumulate_line with each channel's context would give, at
+// a fraction of its work.
+void accumulate_channel_lines(std::span<const ExtraChannel> channels,
+                              std::span<const SlarElementContext* const> contexts, int samples,
+                              LineScratch& s, const SlarLineProfiles& first, int line,
+                              int first_sample);
 
 // The kept-geometry sink's step: the line's samples [first, first + n) from
 // the scratch into row `line` of `kept`, the samples outside unseen (NaN,
@@ -148,7 +164,6 @@ void keep_line_geometry(SlarGeometry& kept, int line, int first, int n, const Li
 // fills prof (allocated), maps (sized to the scene) and counts.
 // keep (optional): the kept-geometry sink and point targets. channels: the
 // run's channels after the first (sim/engine/slar_line_engine.h).
-struct ExtraChannel;
 void run_oblique_lines(const Scene& scene, const SlarGeometry& g, const Sigma0Lut& lut,
                        const SlarImagingParams& p, const std::string& radar_file,
                        SlarLineProfiles& prof, SceneGeometryMaps& maps, SlarLineCounts& counts,
