@@ -43,6 +43,22 @@ TEST(SbrClosedForm, SquarePlateNormalIncidence) {
   EXPECT_LT(r.rcs_m2[1], 1e-6 * expected);
 }
 
+TEST(SbrClosedForm, DielectricPlateScalesByFresnelPower) {
+  // PO of a dielectric plate at normal incidence: |Gamma|^2 4 pi a^4 / lambda^2,
+  // Gamma = (1 - sqrt(eps)) / (1 + sqrt(eps)); needs both J and M.
+  const double a = 0.3;
+  const std::complex<double> eps{5.24, -0.56};
+  EmbreeScene scene(make_plate(a));
+  SurfaceResponse glassy;
+  glassy.pec = false;
+  glassy.eps = eps;
+  const SbrResult r = trace_sbr(scene, {glassy}, kF, radar_direction(0, 0), {});
+  const double gamma2 = std::norm((1.0 - std::sqrt(eps)) / (1.0 + std::sqrt(eps)));
+  const double expected = gamma2 * 4.0 * kPi * std::pow(a, 4) / (kLambda * kLambda);
+  EXPECT_NEAR(db(r.rcs_m2[0]), db(expected), 0.5);
+  EXPECT_NEAR(db(r.rcs_m2[3]), db(expected), 0.5);
+}
+
 TEST(SbrClosedForm, SquarePlatePatternFollowsSincSquared) {
   // PO: sigma = 4 pi a^4 / lambda^2 cos^2(t) sinc^2(k a sin t) (Ruck et al.
   // 1970, Radar Cross Section Handbook, 7.2), over the main lobe and the
