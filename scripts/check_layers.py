@@ -18,7 +18,8 @@ import sys
 # simulation), so it sits above sim too: it may include sim, and only apps and
 # benches include it. serve is the HTTP server of `ris serve`
 # (it runs simulations through sim and draws through image).
-LAYERS = ["util", "io", "scene", "sensor", "backscatter", "geometry", "image",
+LAYERS = ["util", "io", "scene", "sensor", "backscatter", "geometry", "objects",
+          "image",
           "sim", "analysis", "perf", "serve", "apps"]
 RANK = {name: i for i, name in enumerate(LAYERS)}
 # The SIMD kernels (src/kernels/<folder>/, beside their portable twins) are

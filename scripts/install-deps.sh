@@ -41,6 +41,9 @@ packages=(
   libopenmpi-dev openmpi-bin
   # The Python module's to_xarray() (optional at run time; its tests run when it imports)
   python3-xarray
+  # Cultural objects (issue 32, src/objects/, docs/objects.md): Embree 3's BVH for
+  # the shooting-and-bouncing-rays tracer, and Assimp to read OBJ/PLY/STL/glTF meshes
+  libembree-dev libassimp-dev
 )
 
 missing=()

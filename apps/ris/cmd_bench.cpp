@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_objects.h"
 #include "command_registry.h"
 #include "ris/backscatter/library.h"
 #include "ris/perf/bench_setup.h"
@@ -78,7 +79,8 @@ struct BenchArgs {
   bool oblique = true;
   bool io = true;
   std::uint64_t seed = 7;
-  bool topo = false;  // ris topo's DEM pass instead (ris/perf/topo_bench.h)
+  bool topo = false;     // ris topo's DEM pass instead (ris/perf/topo_bench.h)
+  bool objects = false;  // the SBR tracer instead (apps/ris/bench_objects.h)
   double topo_posting_arcsec = TopoBenchOptions{}.posting_arcsec;
 };
 
@@ -233,6 +235,10 @@ void run_topo_bench_command(const BenchArgs& a) {
 }
 
 void run_bench(const BenchArgs& a) {
+  if (a.objects) {
+    run_objects_bench(a.repeats);
+    return;
+  }
   if (a.topo) {
     run_topo_bench_command(a);
     return;
@@ -395,6 +401,8 @@ void add_bench(CLI::App& app) {
   cmd->add_flag("!--no-io", args->io, "Skip the product-writing (I/O) timing");
   cmd->add_flag("--topo", args->topo,
                 "Instead: ris topo's DEM pass on the airborne example, DEM cells/s on 2 threads");
+  cmd->add_flag("--objects", args->objects,
+                "Instead: the SBR tracer of cultural objects, rays/s on 2 threads");
   cmd->add_option("--topo-posting", args->topo_posting_arcsec,
                   "--topo: the DEM's posting, arc-seconds")
       ->capture_default_str();
