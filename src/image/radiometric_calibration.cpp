@@ -1,0 +1,102 @@
+#include "ris/image/radiometric_calibration.h"
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "ris/util/error.h"
+#include "ris/util/units.h"
+
+namespace ris {
+
+std::string_view backscatter_name(Backscatter b) {
+  switch (b) {
+    case Backscatter::sigma0:
+      return "sigma0";
+    case Backscatter::beta0:
+      return "beta0";
+    case Backscatter::gamma0:
+      return "gamma0";
+  }
+  return "sigma0";
+}
+
+SlantCalibration slant_calibration(const SlarImagingParams& p, double line_spacing_m,
+                                   double altitude_m, double reference_height_m) {
+  RIS_CHECK(p.range.count > 0 && line_spacing_m > 0.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto n = static_cast<std::size_t>(p.range.count);
+  SlantCalibration cal;
+  cal.reference_height_m = reference_height_m;
+  cal.unit_power_w.assign(n, nan);
+  cal.sin_incidence.assign(n, nan);
+  cal.cos_incidence.assign(n, nan);
+  // P_t lambda^2 / (4 pi)^3, as the image's elements take it.
+  const double k_radar =
+      p.transmit_power_w * p.wavelength_m * p.wavelength_m / std::pow(4.0 * kPi, 3.0);
+  const double height_m = altitude_m - reference_height_m;
+  // The cells as the image integrates them: a range window of
+  // range_window_bins bins (else one bin), an azimuth window of
+  // azimuth_window_lines lines (else R phi at the bin centre).
+  const double range_cell_m =
+      p.range_window_bins > 0.0 ? p.range_window_bins * p.range.bin_m : p.range.bin_m;
+  for (int b = 0; b < p.range.count; ++b) {
+    const double r = p.range.centre_m(b);
+    if (!(height_m > 0.0) || !(r > height_m)) continue;  // no ground at this range
+    const double cos_t = height_m / r;
+    const double sin_t = std::sqrt((1.0 - cos_t) * (1.0 + cos_t));
+    const double g = (p.elevation_gain ? p.elevation_gain(std::acos(cos_t)) : 1.0) * p.peak_gain;
+    const double azimuth_cell_m = p.azimuth_window_lines > 0.0
+                                      ? p.azimuth_window_lines * line_spacing_m
+                                      : slar_footprint_m(r, p.azimuth_beamwidth_rad);
+    const double area_m2 = azimuth_cell_m * range_cell_m / sin_t;
+    const double r2 = r * r;
+    const double unit = k_radar * g * g * area_m2 / (r2 * r2);
+    const auto i = static_cast<std::size_t>(b);
+    cal.sin_incidence[i] = sin_t;
+    cal.cos_incidence[i] = cos_t;
+    if (unit > 0.0) cal.unit_power_w[i] = unit;  // a null of the pattern: no reference
+  }
+  return cal;
+}
+
+double calibration_factor(const SlantCalibration& cal, Backscatter b, int bin) {
+  const auto i = static_cast<std::size_t>(bin);
+  RIS_CHECK(i < cal.unit_power_w.size());
+  const double to_sigma0 = 1.0 / cal.unit_power_w[i];
+  switch (b) {
+    case Backscatter::sigma0:
+      return to_sigma0;
+    case Backscatter::beta0:
+      return to_sigma0 / cal.sin_incidence[i];
+    case Backscatter::gamma0:
+      return to_sigma0 / cal.cos_incidence[i];
+  }
+  return to_sigma0;
+}
+
+void calibrate_slant_image(std::span<const float> power_w, int bins, const SlantCalibration& cal,
+                           Backscatter b, bool decibels, std::span<float> out) {
+  RIS_CHECK(bins > 0 && static_cast<std::size_t>(bins) == cal.unit_power_w.size());
+  RIS_CHECK(power_w.size() == out.size() && power_w.size() % static_cast<std::size_t>(bins) == 0);
+  const auto nb = static_cast<std::size_t>(bins);
+  std::vector<double> factor(nb);
+  for (int k = 0; k < bins; ++k)
+    factor[static_cast<std::size_t>(k)] = calibration_factor(cal, b, k);
+  const std::ptrdiff_t lines = static_cast<std::ptrdiff_t>(power_w.size() / nb);
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t line = 0; line < lines; ++line) {
+    const std::size_t row = static_cast<std::size_t>(line) * nb;
+    for (std::size_t k = 0; k < nb; ++k) {
+      const double v = double(power_w[row + k]) * factor[k];  // NaN stays NaN
+      if (!decibels) {
+        out[row + k] = static_cast<float>(v);
+      } else {
+        out[row + k] = v > 0.0 ? static_cast<float>(10.0 * std::log10(v)) : kNaN;
+      }
+    }
+  }
+}
+
+}  // namespace ris
