@@ -13,6 +13,7 @@
 #include <set>
 #include <string>
 
+#include "acquisition_paths.h"
 #include "build_paths.h"
 #include "refusal_checks.h"
 #include "ris/io/raster_io.h"
@@ -83,6 +84,32 @@ TEST(CalibratedCli, WithoutTheFlagOnlyANamedCoefficientIsWritten) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(test::listing(dir / "b"),
             (std::set<std::string>{"metadata.json", "mean_power_slant.tif", "mask_slant.tif"}));
+}
+
+// On a product's grid the image is beta0 as a NISAR RSLC's |z|^2 is: the
+// same units for `ris compare` (docs/outputs.md).
+TEST(CalibratedCli, AnAcquisitionRunWritesBeta0OnTheProductsGrid) {
+  test::TempDir dir;
+  const test::RunResult r = test::run_ris(
+      "simulate --quiet -a " + test::winnipeg_h5() + " --dem " +
+      test::q(test::test_dem("winnipeg_dem.tif")) +
+      " --calibrated --products beta0_slant,sigma0_slant_db --out " + test::q(dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(test::listing(dir / "out"),
+            (std::set<std::string>{"metadata.json", "beta0_slant.tif", "sigma0_slant_db.tif"}));
+  const RasterF64 b0 = read_raster_f64(dir / "out" / "beta0_slant.tif");
+  const RasterF64 s0 = read_raster_f64(dir / "out" / "sigma0_slant_db.tif");
+  EXPECT_EQ(b0.cols, 250);
+  EXPECT_EQ(b0.rows, 250);
+  // sigma0 = beta0 sin(theta) with theta in (0, 90) deg: below beta0.
+  int below = 0, finite = 0;
+  for (std::size_t i = 0; i < b0.data.size(); ++i) {
+    if (!std::isfinite(b0.data[i]) || !std::isfinite(s0.data[i]) || b0.data[i] <= 0.0) continue;
+    ++finite;
+    below += s0.data[i] < 10.0 * std::log10(b0.data[i]);
+  }
+  EXPECT_GT(finite, 50000);
+  EXPECT_EQ(below, finite);
 }
 
 TEST(CalibratedCli, WhatCannotBeCalibratedIsRefusedNamingTheKey) {

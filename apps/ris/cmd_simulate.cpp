@@ -116,7 +116,8 @@ void add_simulate(CLI::App& app) {
   cmd->add_flag("--calibrated", r.calibrated,
                 "Also write the image calibrated as a SAR product: sigma0, beta0 and gamma0 "
                 "over the reference height, linear and in dB (sigma0_slant.tif, "
-                "sigma0_slant_db.tif, ...; SLAR and SAR scene runs in memory; docs/outputs.md)");
+                "sigma0_slant_db.tif, ...; SLAR and SAR runs in memory, on a scene or an "
+                "acquisition's grid; docs/outputs.md)");
   cmd->add_flag("--overviews,!--no-overviews", r.overviews,
                 "Internal overviews on products larger than one 256-pixel tile, so a GIS opens "
                 "them at any zoom (default; --no-overviews: none, a faster write)");

@@ -58,8 +58,19 @@ struct SlantCalibration {
 };
 
 // p: the image's imaging parameters (range bins, P_t, lambda, gain, windows).
+// A scene run's flat Earth: the sensor altitude_m above the datum.
 SlantCalibration slant_calibration(const SlarImagingParams& p, double line_spacing_m,
                                    double altitude_m, double reference_height_m);
+
+// The general form, per bin of p.range: the look angle from nadir at which
+// the reference surface lies at the bin's range (the gain's argument), the
+// incidence to its normal there, and the azimuth cell on it (m); NaN look:
+// no ground at that range. The flat Earth's slant_calibration and an
+// acquisition's ellipsoid (ris/sim/acquisition_calibration.h) both end here.
+SlantCalibration calibration_from_angles(const SlarImagingParams& p, double reference_height_m,
+                                         std::span<const double> look_rad,
+                                         std::span<const double> incidence_rad,
+                                         std::span<const double> azimuth_cell_m);
 
 // The factor that turns bin b's power (W) into b's backscatter coefficient.
 double calibration_factor(const SlantCalibration& cal, Backscatter b, int bin);

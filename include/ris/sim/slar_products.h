@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -100,6 +101,15 @@ std::string calibrated_product_stem(Backscatter b, bool decibels);
 bool wants_calibrated(const SlarRunInfo& info, std::string_view stem);
 // Whether a selection names any calibrated image.
 bool names_calibrated(const ProductSelection& selection);
+// The calibrated images a run writes (wants_calibrated), into a metadata
+// "products" object with their descriptions, and as one task each that
+// computes the image from pic's power after fading and calls write(file,
+// lines x bins values).
+void add_calibrated_descriptions(nlohmann::json& products, const SlarSimulation& sim,
+                                 const SlarRunInfo& info);
+void add_calibrated_tasks(std::vector<std::function<void()>>& tasks, const SlarSimulation& sim,
+                          const SlarPictures& pic, const SlarRunInfo& info,
+                          const std::function<void(const std::string&, const float*)>& write);
 
 // Writes the products info.products selects (all by default) with
 // info.compression, concurrently (one thread per file at a time).

@@ -266,17 +266,7 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
   if (picture_file("geocoded_grey", scene.cols, scene.rows, info.max_png_pixels) !=
       "geocoded_grey.png")
     out["products"].erase("geocoded_grey.png");  // too large for a PNG: the .tif alone
-  for (const Backscatter b : kCalibratedBackscatter) {
-    for (const bool db : {false, true}) {
-      const std::string stem = calibrated_product_stem(b, db);
-      if (!wants_calibrated(info, stem)) continue;
-      out["products"][stem + ".tif"] = fmt::format(
-          "float32 {}{} of the power after fading, slant range, calibrated over the reference "
-          "height {:.1f} m (docs/outputs.md, \"Calibrated products\"); NaN where no data{}",
-          backscatter_name(b), db ? " in dB" : "", sim.calibration.reference_height_m,
-          db ? " or zero power" : "");
-    }
-  }
+  add_calibrated_descriptions(out["products"], sim, info);
   out["products"] = selected_products(out["products"], info.products);
   return out;
 }
@@ -303,6 +293,38 @@ bool names_calibrated(const ProductSelection& selection) {
     }
   }
   return false;
+}
+
+void add_calibrated_descriptions(json& products, const SlarSimulation& sim,
+                                 const SlarRunInfo& info) {
+  for (const Backscatter b : kCalibratedBackscatter) {
+    for (const bool db : {false, true}) {
+      const std::string stem = calibrated_product_stem(b, db);
+      if (!wants_calibrated(info, stem)) continue;
+      products[stem + ".tif"] = fmt::format(
+          "float32 {}{} of the power after fading, slant range, calibrated over the reference "
+          "height {:.1f} m (docs/outputs.md, \"Calibrated products\"); NaN where no data{}",
+          backscatter_name(b), db ? " in dB" : "", sim.calibration.reference_height_m,
+          db ? " or zero power" : "");
+    }
+  }
+}
+
+void add_calibrated_tasks(std::vector<std::function<void()>>& tasks, const SlarSimulation& sim,
+                          const SlarPictures& pic, const SlarRunInfo& info,
+                          const std::function<void(const std::string&, const float*)>& write) {
+  for (const Backscatter b : kCalibratedBackscatter) {
+    for (const bool db : {false, true}) {
+      const std::string stem = calibrated_product_stem(b, db);
+      if (!wants_calibrated(info, stem)) continue;
+      RIS_CHECK(!sim.calibration.empty());  // refused before the run (run.cpp)
+      tasks.emplace_back([&sim, &pic, write, b, db, stem] {
+        std::vector<float> v(pic.speckled_power_w.size());
+        calibrate_slant_image(pic.speckled_power_w, sim.image.bins, sim.calibration, b, db, v);
+        write(stem + ".tif", v.data());
+      });
+    }
+  }
 }
 
 bool wants_calibrated(const SlarRunInfo& info, std::string_view stem) {
@@ -390,20 +412,9 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
   task("speckled_power_slant", [&] {
     write("speckled_power_slant.tif", pic.speckled_power_w.data(), img.bins, img.lines);
   });
-  // The calibrated images (--calibrated, or named in --products): the power
-  // after fading as sigma0, beta0 and gamma0, linear and in dB.
-  for (const Backscatter b : kCalibratedBackscatter) {
-    for (const bool db : {false, true}) {
-      const std::string stem = calibrated_product_stem(b, db);
-      if (!wants_calibrated(info, stem)) continue;
-      RIS_CHECK(!sim.calibration.empty());  // refused before the run (run.cpp)
-      tasks.emplace_back([&, b, db, stem] {
-        std::vector<float> v(pic.speckled_power_w.size());
-        calibrate_slant_image(pic.speckled_power_w, img.bins, sim.calibration, b, db, v);
-        write(stem + ".tif", v.data(), img.bins, img.lines);
-      });
-    }
-  }
+  add_calibrated_tasks(tasks, sim, pic, info, [&](const std::string& file, const float* v) {
+    write(file, v, img.bins, img.lines);
+  });
   picture("slant_range", pic.slant_grey.data(), img.bins, img.lines);
   picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines);
   task("mask_slant", [&] { write("mask_slant.tif", img.mask.data(), img.bins, img.lines); });

@@ -229,7 +229,7 @@ void check_channels(const RunRequest& r, const RadarParams& radar, std::string_v
 // calibrated images yet.
 void refuse_streamed_calibration(const RunRequest& r) {
   if (!asks_calibrated(r)) return;
-  throw InputError(r.scene_path, "--calibrated",
+  throw InputError(r.acquisition_path.empty() ? r.scene_path : r.acquisition_path, "--calibrated",
                    "a streamed run writes no calibrated images yet; leave out --stream and "
                    "--block-lines (a scene too large for memory streams by itself: crop it), "
                    "or leave out --calibrated");
@@ -380,6 +380,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   res.radar = load_radar_of(r);
   check_channels(r, res.radar, "acquisition", false);
   check_product_selection(r.products, acquisition_product_stems(), "--products");
+  check_calibrated(r, res.radar);
   const Acquisition acq = read_acquisition(r.acquisition_path, r.acquisition);
   require_regular_input(r.dem_path, "--dem");
   const EllipsoidalDemFile dem_file(r.dem_path);  // its grid: the heights are read below
@@ -404,6 +405,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   o.backscatter_file = sigma0.path;
   std::optional<EllipsoidalDem> dem;
   if (should_stream_acquisition(r, cb, acq, dem_file, dem)) {  // ris/sim/acquisition_stream.h
+    refuse_streamed_calibration(r);
     SlarStreamOptions so;
     so.block_lines = r.block_lines;
     so.quiet = r.quiet;
@@ -470,12 +472,6 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
                                  process_group().size()));
   }
   if (!r.acquisition_path.empty()) {
-    if (r.calibrated) {
-      throw InputError(r.acquisition_path, "--calibrated",
-                       "an acquisition run writes no calibrated images yet (the product's own "
-                       "convention, beta0 for a NISAR RSLC, is not built); leave out "
-                       "--calibrated");
-    }
     run_acquisition(r, cb, res);
     if (res.in_memory() && !r.out_dir.empty()) {
       if (cb.progress) cb.progress("writing products", 0.95);
