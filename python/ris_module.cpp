@@ -407,6 +407,7 @@ struct PyRunOptions {
   std::vector<std::string> products;
   std::string compress = "fast";
   bool overviews = true;
+  bool calibrated = false;  // also sigma0/beta0/gamma0 (--calibrated)
   // An acquisition run (`--acquisition` and what goes with it).
   std::string acquisition, frequency = "A", swath, dem, land_cover, earth;
   int burst = -1;
@@ -435,6 +436,7 @@ ris::RunRequest run_request(const PyScene* scene, const PyRadar& radar, const Py
   r.products.stems = o.products;
   r.compression = ris::parse_compression_preset(o.compress, "compress");
   r.overviews = o.overviews;
+  r.calibrated = o.calibrated;
   if (!o.acquisition.empty()) {
     r.acquisition_path = o.acquisition;
     r.acquisition.frequency = o.frequency;
@@ -1029,6 +1031,7 @@ void bind_result(py::module_& m) {
       .def_readwrite("products", &PyRunOptions::products)
       .def_readwrite("compress", &PyRunOptions::compress)
       .def_readwrite("overviews", &PyRunOptions::overviews)
+      .def_readwrite("calibrated", &PyRunOptions::calibrated)
       .def_readwrite("acquisition", &PyRunOptions::acquisition)
       .def_readwrite("frequency", &PyRunOptions::frequency)
       .def_readwrite("burst", &PyRunOptions::burst)

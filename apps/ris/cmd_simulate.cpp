@@ -4,7 +4,8 @@
 //
 //   ris simulate [--scene S] [--radar R] [--backscatter B] [--targets T]
 //                [--out DIR] [--seed N] [--threads N] [--quiet]
-//                [--stream] [--block-lines N] [--products LIST] [--compress fast|small|none]
+//                [--stream] [--block-lines N] [--products LIST] [--calibrated]
+//                [--compress fast|small|none]
 //   ris simulate --acquisition P --dem D [--frequency A|B] [--burst N] [--swath S]
 //                [--category N] [--full-grid] [--earth flat|ellipsoid] [--radar R] ...
 //
@@ -112,6 +113,11 @@ void add_simulate(CLI::App& app) {
                   "Write only these products, comma-separated file stems (docs/outputs.md; "
                   "default: all; metadata.json always)")
       ->delimiter(',');
+  cmd->add_flag("--calibrated", r.calibrated,
+                "Also write the image calibrated as a SAR product: sigma0, beta0 and gamma0 "
+                "over the reference height, linear and in dB (sigma0_slant.tif, "
+                "sigma0_slant_db.tif, ...; SLAR and SAR runs in memory, on a scene or an "
+                "acquisition's grid; docs/outputs.md)");
   cmd->add_flag("--overviews,!--no-overviews", r.overviews,
                 "Internal overviews on products larger than one 256-pixel tile, so a GIS opens "
                 "them at any zoom (default; --no-overviews: none, a faster write)");

@@ -633,7 +633,7 @@ def _finish(impl, scene):
 
 def simulate(scene, radar, backscatter=None, seed=1, threads=0, targets=None, progress=None,
              out=None, stream=False, block_lines=0, products=None, compress="fast",
-             overviews=True):
+             overviews=True, calibrated=False):
     """Runs one simulation, as ``ris simulate`` does, with the GIL released.
 
     scene: a Scene (or a path, loaded with load_scene); a streamed run
@@ -654,9 +654,12 @@ def simulate(scene, radar, backscatter=None, seed=1, threads=0, targets=None, pr
         ``result.metadata``, ``result.stream_summary``).
     products, compress, overviews: ``--products`` (a list of file stems),
         ``--compress`` (fast, small, none), ``--no-overviews`` (False).
+    calibrated: also write sigma0, beta0 and gamma0, linear and in dB
+        (``--calibrated``; docs/outputs.md, "Calibrated products").
     """
     o = _run_options(backscatter, seed, threads, targets, out, stream, block_lines, products,
                      compress, overviews)
+    o.calibrated = bool(calibrated)
     radar = _as_radar(radar)
     if o.stream:
         path = scene.path if isinstance(scene, Scene) else scene

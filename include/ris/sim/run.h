@@ -80,6 +80,9 @@ struct RunRequest {
   // Geocoding's resampling, gdalwarp's names: "near" (default) or
   // "bilinear" (in-memory runs; ris/image/geocode.h).
   std::string geocode_resampling = "near";
+  // Also the calibrated images (sigma0/beta0/gamma0, linear and dB;
+  // in-memory SLAR and SAR scene runs; ris/image/radiometric_calibration.h).
+  bool calibrated = false;
 
   // A run on a real acquisition's radar grid instead of a scene
   // (ris/sim/acquisition_simulation.h; scene_path is not read): the product

@@ -56,6 +56,9 @@ struct SlarRunInfo {
   bool overviews = true;
   // How the geocoded products take their pixels (`--geocode-resampling`).
   GeocodeResampling geocode_resampling = GeocodeResampling::nearest;
+  // Also the calibrated images, sigma0/beta0/gamma0 linear and in dB
+  // (`--calibrated`; ris/sim/slar_products.h wants_calibrated).
+  bool calibrated = false;
 };
 
 // The GeoTIFF settings of a run's products: its compression preset for

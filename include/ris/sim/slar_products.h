@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,6 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ris/image/radiometric_calibration.h"
 #include "ris/io/raster_io.h"
 #include "ris/scene/scene.h"
 #include "ris/sim/run_info.h"
@@ -88,6 +90,26 @@ BlockOrder scene_maps_order(const Scene& grid, const SlarGeometry& layout);
 
 // The product stems of a SLAR or SAR run (ProductSelection; docs/outputs.md).
 const std::vector<std::string_view>& slar_product_stems();
+
+// The calibrated images' stems (ris/image/radiometric_calibration.h):
+// "sigma0_slant", "sigma0_slant_db", "beta0_slant", ...
+std::string calibrated_product_stem(Backscatter b, bool decibels);
+// Whether a run writes the calibrated image `stem`: with info.calibrated
+// (--calibrated) as info.products selects; without, only when
+// info.products names it. Either way not by default, so a run's folder
+// keeps its files.
+bool wants_calibrated(const SlarRunInfo& info, std::string_view stem);
+// Whether a selection names any calibrated image.
+bool names_calibrated(const ProductSelection& selection);
+// The calibrated images a run writes (wants_calibrated), into a metadata
+// "products" object with their descriptions, and as one task each that
+// computes the image from pic's power after fading and calls write(file,
+// lines x bins values).
+void add_calibrated_descriptions(nlohmann::json& products, const SlarSimulation& sim,
+                                 const SlarRunInfo& info);
+void add_calibrated_tasks(std::vector<std::function<void()>>& tasks, const SlarSimulation& sim,
+                          const SlarPictures& pic, const SlarRunInfo& info,
+                          const std::function<void(const std::string&, const float*)>& write);
 
 // Writes the products info.products selects (all by default) with
 // info.compression, concurrently (one thread per file at a time).

@@ -37,6 +37,7 @@
 #include "ris/geometry/scene_geometry_maps.h"
 #include "ris/geometry/slar_geometry.h"
 #include "ris/image/ground_range.h"
+#include "ris/image/radiometric_calibration.h"
 #include "ris/image/slar_image.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/radar_derived.h"
@@ -99,6 +100,11 @@ struct SlarSimulation {
   std::vector<std::string> hidden_targets;
   // SAR: thermal noise power added per range bin (empty without NESZ).
   std::vector<double> noise_power_w;
+  // The radiometric calibration of the image over the ground-range
+  // reference height (ris/image/radiometric_calibration.h); empty when the
+  // range or area switch is off (the pixels then carry the reference's
+  // factor, not this radar's) and in runs that do not form it.
+  SlantCalibration calibration;
   // Conditions worth a user's attention that are not errors (printed by the
   // command, recorded in metadata.json).
   std::vector<std::string> warnings;

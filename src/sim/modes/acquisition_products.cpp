@@ -64,8 +64,10 @@ SlarRasterSpec acquisition_raster_spec(const std::string& file, const Acquisitio
 
 const std::vector<std::string_view>& acquisition_product_stems() {
   static const std::vector<std::string_view> stems = {
-      "slant_range", "ground_range",    "mean_power_slant",   "speckled_power_slant",
-      "mask_slant",  "local_incidence", "layover_shadow_mask"};
+      "slant_range",     "ground_range",    "mean_power_slant",    "speckled_power_slant",
+      "mask_slant",      "local_incidence", "layover_shadow_mask", "sigma0_slant",
+      "sigma0_slant_db", "beta0_slant",     "beta0_slant_db",      "gamma0_slant",
+      "gamma0_slant_db"};
   return stems;
 }
 
@@ -132,6 +134,7 @@ json acquisition_metadata(const AcquisitionSimulation& a, const SlarSimulation& 
        {"layover_shadow_mask.tif", "uint8 0 none, 1 shadow, 2 layover, 3 both (as ris topo)"},
        {"metadata.json", "this file"}},
       info.products);
+  add_calibrated_descriptions(out["products"], sim, info);
   return out;
 }
 
@@ -178,6 +181,11 @@ void write_acquisition_products(const std::filesystem::path& out_dir,
   slant("speckled_power_slant", "speckled_power_slant.tif", pic.speckled_power_w.data(), img.bins,
         img.lines);
   slant("mask_slant", "mask_slant.tif", img.mask.data(), img.bins, img.lines);
+  add_calibrated_tasks(tasks, sim, pic, info, [&](const std::string& file, const float* v) {
+    const SlarRasterSpec spec = acquisition_raster_spec(file, a, img);
+    write_geotiff(dir.path(file), v, img.bins, img.lines, nullptr, spec.nodata, spec.metadata,
+                  spec.band, BlockOrder::top_down, &float_tif);
+  });
   picture("slant_range", pic.slant_grey.data(), img.bins, img.lines);
   picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines);
   const GridWindow& w = a.window;

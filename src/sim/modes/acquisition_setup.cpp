@@ -136,7 +136,10 @@ void set_up_acquisition(const Acquisition& acq, const EllipsoidalDem& dem, const
       options.backscatter_file.empty() ? sigma0.description() : options.backscatter_file;
   s.rs = prepare_radiometry(categories, sim.radar, sim.derived, sigma0, backscatter_file);
   SlarImagingParams& imaging = s.rs.imaging;
-  imaging.range.near_m = g.range_of_bin(w.bin0);
+  // A product's range sample k lies at range_of_bin(k) (ISCE's and NISAR's
+  // slantRange: the sample's centre), so bin k spans half a spacing either
+  // side of it, as the radar-grid layers take it (store_maps).
+  imaging.range.near_m = g.range_of_bin(w.bin0 - 0.5);
   imaging.range.bin_m = g.range_spacing_m;
   imaging.range.count = w.bins;
   complete_slar_setup(sim, s.rs, dem_grid(dem, acq.ellipsoid));

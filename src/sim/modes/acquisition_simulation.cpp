@@ -2,6 +2,7 @@
 
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/sim/slar_run_setup.h"
+#include "sim/modes/acquisition_calibration.h"
 #include "sim/modes/acquisition_setup.h"
 #include "sim/sources/acquisition_frame.h"
 #include "sim/sources/acquisition_lines.h"
@@ -40,6 +41,12 @@ AcquisitionSimulation simulate_acquisition(const Acquisition& acq, const Ellipso
   sim.image = slar_image_from_profiles(prof, imaging, layout.line_spacing_m);
   finish_slar_image(sim, sim.image, s.rs.terms);
   detail::set_acquisition_ground_grid(out);
+  // Its calibration over the ground grid's reference height, unless a
+  // switched-off factor put the reference system's in.
+  if (!sim.range_corrected && !sim.area_corrected) {
+    sim.calibration = detail::acquisition_calibration(run, imaging, layout.line_spacing_m,
+                                                      sim.ground_grid.reference_height_m);
+  }
   out.local_incidence_deg = std::move(local_deg);
   out.layover_shadow_mask = std::move(mask);
   return std::move(out);

@@ -66,7 +66,9 @@ TEST(AcquisitionSimulation, WinnipegOnTheProductGridAgreesWithTopo) {
   ASSERT_EQ(s.sim.image.bins, 250);
   EXPECT_EQ(s.window.line0, 0);
   EXPECT_EQ(s.window.bin0, 0);
-  EXPECT_DOUBLE_EQ(s.sim.image.range.near_m, a.grid.near_range_m);
+  // Bin k's centre is the product's range sample k (its slantRange).
+  EXPECT_DOUBLE_EQ(s.sim.image.range.centre_m(0), a.grid.near_range_m);
+  EXPECT_DOUBLE_EQ(s.sim.image.range.centre_m(100), a.grid.range_of_bin(100));
   EXPECT_DOUBLE_EQ(s.sim.image.range.bin_m, a.grid.range_spacing_m);
   std::size_t with_power = 0;
   for (std::size_t i = 0; i < s.sim.image.mean_power_w.size(); ++i) {

@@ -34,11 +34,15 @@ SlarRunInfo channel_info(const SlarRunInfo& info, const SlarChannelProducts& c) 
 // scene-wide products (written with the first channel). A selection of
 // scene-wide products only is kept as it is (an empty selection would mean
 // every product); its files are then dropped.
-ProductSelection later_channel_selection(const ProductSelection& want) {
+// The calibrated images stay as the run asked for them (wants_calibrated).
+ProductSelection later_channel_selection(const SlarRunInfo& info) {
+  const ProductSelection& want = info.products;
   ProductSelection out;
   const std::vector<std::string_view>& all = slar_product_stems();
   for (std::string_view s : all) {
-    if (want.wants(s) && !scene_wide(std::string(s))) out.stems.emplace_back(s);
+    if (!want.wants(s) || scene_wide(std::string(s))) continue;
+    if (names_calibrated({{std::string(s)}}) && !wants_calibrated(info, s)) continue;
+    out.stems.emplace_back(s);
   }
   return out.stems.empty() ? want : out;
 }
@@ -85,7 +89,7 @@ std::vector<json> channel_metadata(const Scene& scene,
   std::vector<json> own;
   for (std::size_t c = 0; c < channels.size(); ++c) {
     SlarRunInfo ic = channel_info(info, channels[c]);
-    if (c > 0) ic.products = later_channel_selection(info.products);
+    if (c > 0) ic.products = later_channel_selection(info);
     own.push_back(slar_metadata(scene, *channels[c].sim, *channels[c].pictures, ic));
   }
   return own;
@@ -123,7 +127,7 @@ void write_slar_channel_products(const fs::path& out_dir, const Scene& scene,
     // The channel alone, as a one-channel run writes it, in a folder of the
     // staging folder; then its files moved up under their channel's names.
     SlarRunInfo ic = channel_info(info, channels[c]);
-    if (c > 0) ic.products = later_channel_selection(info.products);
+    if (c > 0) ic.products = later_channel_selection(info);
     const fs::path sub = dir.path(".channel-" + channels[c].name);
     write_slar_products(sub, scene, *channels[c].sim, *channels[c].pictures, ic);
     {

@@ -10,6 +10,7 @@
 
 #include "ris/image/geocode.h"
 #include "ris/image/geocoded_grey.h"
+#include "ris/image/radiometric_calibration.h"
 #include "ris/image/shadow_map.h"
 #include "ris/image/slant_georef.h"
 #include "ris/io/atomic_file.h"
@@ -29,6 +30,9 @@ namespace ris {
 namespace {
 
 using nlohmann::json;
+
+constexpr Backscatter kCalibratedBackscatter[] = {Backscatter::sigma0, Backscatter::beta0,
+                                                  Backscatter::gamma0};
 
 json track_json(const Track& t, const Scene& scene) {
   json j = {{"start_x_m", t.start_x_m},
@@ -79,6 +83,16 @@ SlarRasterSpec slar_raster_spec(const std::string& file, const SlarImage& img) {
     return {slant_meta("mean power before speckle", "W"), "mean_power_w", nan, false};
   if (file == "speckled_power_slant.tif")
     return {slant_meta("power after fading", "W"), "speckled_power_w", nan, false};
+  for (const Backscatter b : kCalibratedBackscatter) {
+    const std::string name(backscatter_name(b));
+    for (const bool db : {false, true}) {
+      if (file != calibrated_product_stem(b, db) + ".tif") continue;
+      return {slant_meta(fmt::format("{}{} after fading, calibrated over the reference height",
+                                     name, db ? " in dB" : ""),
+                         db ? "dB" : "m^2/m^2"),
+              db ? name + "_db" : name, nan, false};
+    }
+  }
   if (file == "mask_slant.tif")
     return {slant_meta("mask: 1 shadow, 2 layover, 4 no data", "bits"), "mask", std::nullopt,
             false};
@@ -252,16 +266,71 @@ json slar_metadata(const Scene& scene, float h_min, float h_max, const SlarSimul
   if (picture_file("geocoded_grey", scene.cols, scene.rows, info.max_png_pixels) !=
       "geocoded_grey.png")
     out["products"].erase("geocoded_grey.png");  // too large for a PNG: the .tif alone
+  add_calibrated_descriptions(out["products"], sim, info);
   out["products"] = selected_products(out["products"], info.products);
   return out;
 }
 
+std::string calibrated_product_stem(Backscatter b, bool decibels) {
+  return std::string(backscatter_name(b)) + (decibels ? "_slant_db" : "_slant");
+}
+
 const std::vector<std::string_view>& slar_product_stems() {
   static const std::vector<std::string_view> stems = {
-      "slant_range",   "ground_range", "mean_power_slant",    "speckled_power_slant",
-      "mask_slant",    "scene_mask",   "local_incidence_deg", "geocoded_power",
-      "geocoded_grey", "shadowmap"};
+      "slant_range",   "ground_range",   "mean_power_slant",    "speckled_power_slant",
+      "mask_slant",    "scene_mask",     "local_incidence_deg", "geocoded_power",
+      "geocoded_grey", "shadowmap",      "sigma0_slant",        "sigma0_slant_db",
+      "beta0_slant",   "beta0_slant_db", "gamma0_slant",        "gamma0_slant_db"};
   return stems;
+}
+
+bool names_calibrated(const ProductSelection& selection) {
+  for (const Backscatter b : kCalibratedBackscatter) {
+    for (const bool db : {false, true}) {
+      const std::string stem = calibrated_product_stem(b, db);
+      if (std::find(selection.stems.begin(), selection.stems.end(), stem) != selection.stems.end())
+        return true;
+    }
+  }
+  return false;
+}
+
+void add_calibrated_descriptions(json& products, const SlarSimulation& sim,
+                                 const SlarRunInfo& info) {
+  for (const Backscatter b : kCalibratedBackscatter) {
+    for (const bool db : {false, true}) {
+      const std::string stem = calibrated_product_stem(b, db);
+      if (!wants_calibrated(info, stem)) continue;
+      products[stem + ".tif"] = fmt::format(
+          "float32 {}{} of the power after fading, slant range, calibrated over the reference "
+          "height {:.1f} m (docs/outputs.md, \"Calibrated products\"); NaN where no data{}",
+          backscatter_name(b), db ? " in dB" : "", sim.calibration.reference_height_m,
+          db ? " or zero power" : "");
+    }
+  }
+}
+
+void add_calibrated_tasks(std::vector<std::function<void()>>& tasks, const SlarSimulation& sim,
+                          const SlarPictures& pic, const SlarRunInfo& info,
+                          const std::function<void(const std::string&, const float*)>& write) {
+  for (const Backscatter b : kCalibratedBackscatter) {
+    for (const bool db : {false, true}) {
+      const std::string stem = calibrated_product_stem(b, db);
+      if (!wants_calibrated(info, stem)) continue;
+      RIS_CHECK(!sim.calibration.empty());  // refused before the run (run.cpp)
+      tasks.emplace_back([&sim, &pic, write, b, db, stem] {
+        std::vector<float> v(pic.speckled_power_w.size());
+        calibrate_slant_image(pic.speckled_power_w, sim.image.bins, sim.calibration, b, db, v);
+        write(stem + ".tif", v.data());
+      });
+    }
+  }
+}
+
+bool wants_calibrated(const SlarRunInfo& info, std::string_view stem) {
+  if (info.calibrated) return info.products.wants(stem);
+  const std::vector<std::string>& named = info.products.stems;
+  return std::find(named.begin(), named.end(), stem) != named.end();
 }
 
 void write_slar_products(const std::filesystem::path& out_dir, const Scene& scene,
@@ -342,6 +411,9 @@ void write_slar_products(const std::filesystem::path& out_dir, const Scene& scen
   });
   task("speckled_power_slant", [&] {
     write("speckled_power_slant.tif", pic.speckled_power_w.data(), img.bins, img.lines);
+  });
+  add_calibrated_tasks(tasks, sim, pic, info, [&](const std::string& file, const float* v) {
+    write(file, v, img.bins, img.lines);
   });
   picture("slant_range", pic.slant_grey.data(), img.bins, img.lines);
   picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines);

@@ -251,6 +251,13 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
     s.ground_grid =
         ground_range_grid(s.image.range, s.geometry.altitude_m, h_ref, s.image.line_spacing_m);
   }
+  // Each channel's calibration over the same reference height (per range
+  // bin: cheap), unless a switched-off factor put the reference's in.
+  for (std::size_t c = 0; c < nc; ++c) {
+    if (sims[c].range_corrected || sims[c].area_corrected) continue;
+    sims[c].calibration = slant_calibration(rs[c].imaging, sims[c].image.line_spacing_m,
+                                            sims[c].geometry.altitude_m, h_ref);
+  }
   return sims;
 }
 

@@ -106,7 +106,34 @@ SlarRunInfo run_info(const RunRequest& r, const std::string& backscatter_path) {
   info.overviews = r.overviews;
   info.geocode_resampling =
       parse_geocode_resampling(r.geocode_resampling, "", "--geocode-resampling");
+  info.calibrated = r.calibrated;
   return info;
+}
+
+// Whether a request asks for calibrated images (--calibrated, or one named
+// in --products).
+bool asks_calibrated(const RunRequest& r) {
+  return r.calibrated || names_calibrated(r.products);
+}
+
+// Calibrated images are an in-memory SLAR or SAR scene run's, with this
+// radar's range and area terms in its pixels (ris/sim/slar_products.h).
+void check_calibrated(const RunRequest& r, const RadarParams& radar) {
+  if (!asks_calibrated(r)) return;
+  if (radar.mode == RadarMode::ppi) {
+    throw InputError(radar.source_file, "--calibrated",
+                     "a PPI run writes no calibrated images (its scope has no calibration "
+                     "convention yet); leave out --calibrated, or use mode = \"slar\" or "
+                     "\"sar\"");
+  }
+  for (const auto& [on, key] : {std::pair{radar.switches.range, "film.terms.range"},
+                                std::pair{radar.switches.area, "film.terms.area"}}) {
+    if (on) continue;
+    throw InputError(radar.source_file, key,
+                     "is false, so the pixels carry the reference system's factor instead of "
+                     "this radar's and cannot be calibrated; set it true or leave out "
+                     "--calibrated");
+  }
 }
 
 // A scene run's geometry is the flat-Earth frame's (its track is given in
@@ -198,7 +225,18 @@ void check_channels(const RunRequest& r, const RadarParams& radar, std::string_v
   }
 }
 
+// A streamed run (asked for, or a scene too large for memory) writes no
+// calibrated images yet.
+void refuse_streamed_calibration(const RunRequest& r) {
+  if (!asks_calibrated(r)) return;
+  throw InputError(r.acquisition_path.empty() ? r.scene_path : r.acquisition_path, "--calibrated",
+                   "a streamed run writes no calibrated images yet; leave out --stream and "
+                   "--block-lines (a scene too large for memory streams by itself: crop it), "
+                   "or leave out --calibrated");
+}
+
 void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
+  refuse_streamed_calibration(r);
   res.strategy = RunStrategy::streamed;
   res.ranks = process_group().size();
   res.radar = load_radar_of(r);
@@ -342,6 +380,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   res.radar = load_radar_of(r);
   check_channels(r, res.radar, "acquisition", false);
   check_product_selection(r.products, acquisition_product_stems(), "--products");
+  check_calibrated(r, res.radar);
   const Acquisition acq = read_acquisition(r.acquisition_path, r.acquisition);
   require_regular_input(r.dem_path, "--dem");
   const EllipsoidalDemFile dem_file(r.dem_path);  // its grid: the heights are read below
@@ -366,6 +405,7 @@ void run_acquisition(const RunRequest& r, const RunCallbacks& cb, RunResult& res
   o.backscatter_file = sigma0.path;
   std::optional<EllipsoidalDem> dem;
   if (should_stream_acquisition(r, cb, acq, dem_file, dem)) {  // ris/sim/acquisition_stream.h
+    refuse_streamed_calibration(r);
     SlarStreamOptions so;
     so.block_lines = r.block_lines;
     so.quiet = r.quiet;
@@ -449,6 +489,7 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
                      "goes with --acquisition (a run on a product's radar grid); a scene run "
                      "reads its terrain from --scene");
   }
+  if (r.stream || r.block_lines > 0) refuse_streamed_calibration(r);
   if (should_stream(r, cb)) {
     run_streamed(r, cb, res);
     res.seconds = seconds_since(t0);
@@ -466,6 +507,7 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   check_product_selection(r.products,
                           radar.mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems(),
                           "--products");
+  check_calibrated(r, radar);
   res.scene = r.scene != nullptr
                   ? r.scene
                   : std::make_shared<const Scene>(load_scene_source(r.scene_path).scene);

@@ -45,8 +45,6 @@ std::uint16_t AcquisitionRun::category_at(double lat_rad, double lon_rad) const 
                       static_cast<std::size_t>(c)];
 }
 
-namespace {
-
 // Where trace_terrain_profile puts the ground at ray look angle th and
 // height h: the ray met on the ellipsoid raised to h_ref (the profile's
 // reference), then moved along that surface's normal to h. False when the
@@ -82,8 +80,6 @@ double ray_look_of_range(const ZeroDopplerFrame& f, const Ellipsoid& e, double h
   }
   return hi;
 }
-
-}  // namespace
 
 ProfileSpan AcquisitionRun::span_of_line(const ZeroDopplerFrame& f) const {
   const RadarGrid& g = acq.grid;

@@ -117,4 +117,17 @@ struct AcquisitionThreadSource {
   }
 };
 
+// Where trace_terrain_profile puts the ground at ray look angle th and
+// height h: the ray met on the ellipsoid raised to h_ref (the profile's
+// reference), then moved along that surface's normal to h (out). False when
+// the ray misses it.
+bool ground_at(const ZeroDopplerFrame& f, const Ellipsoid& e, double h_ref, double th, double h,
+               Vec3& out);
+
+// The profile's ray look angle (from the geodetic nadir) of the ground at
+// height h and slant range r (bisection); 0 when r is shorter than the
+// range straight down to h.
+double ray_look_of_range(const ZeroDopplerFrame& f, const Ellipsoid& e, double h_ref, double h,
+                         double r);
+
 }  // namespace ris::detail
