@@ -165,7 +165,8 @@ TEST(CalibratedImage, SlopesFacingTheRadarReadBrighterThanFlatGround) {
   // ramp facing the radar has more area per pixel and reads above sigma0.
   Scene s = Scene::flat(100, 500, 2.0, 0.0f, 0);
   for (int r = 0; r < s.rows; ++r)
-    for (int c = 250; c < 300; ++c) s.elevation_m[s.index(r, c)] = 2.0f * (300 - c) * 0.2f;
+    for (int c = 250; c < 300; ++c)
+      s.elevation_m[s.index(r, c)] = 0.4f * static_cast<float>(300 - c);
   const SlarSimulation sim = simulate_slar(s, sar_radar(""), test::CosineSigma0Source());
   const std::vector<float> g0 = calibrated(sim, Backscatter::gamma0, true);
   const double flat = 10.0 * std::log10(test::CosineSigma0Source::gamma(0));
