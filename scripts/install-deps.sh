@@ -44,6 +44,9 @@ packages=(
   # Cultural objects (issue 32, src/objects/, docs/objects.md): Embree 3's BVH for
   # the shooting-and-bouncing-rays tracer, and Assimp to read OBJ/PLY/STL/glTF meshes
   libembree-dev libassimp-dev
+  # OpenCV (core, imgproc, ml): ris scene classify's segmentation and k-means
+  # (issue 34, src/image/classify/, docs/classify.md)
+  libopencv-dev
 )
 
 missing=()
