@@ -28,9 +28,13 @@ namespace fs = std::filesystem;
 
 // mpirun as these tests run it: more ranks than cores (--oversubscribe),
 // as root in a container (--allow-run-as-root), shared memory without the
-// ptrace-based single copy a container may forbid.
+// ptrace-based single copy a container may forbid, and a session directory
+// of its own (the shell's pid): two mpiruns starting at once (ctest -j2)
+// can race creating Open MPI's shared /tmp/ompi.<host>.<uid> ("mkdir ...
+// File exists", orte_session_dir failed; seen once in 700 runs).
 std::string mpirun(int ranks, const std::string& env = "") {
-  return "env OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_rmaps_base_oversubscribe=1 " +
+  return "env OMPI_MCA_orte_tmpdir_base=/tmp/ris-mpi-$$ "
+         "OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_rmaps_base_oversubscribe=1 " +
          env + " " + test::mpiexec() + " --oversubscribe --allow-run-as-root -np " +
          std::to_string(ranks) + " ";
 }
