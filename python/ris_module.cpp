@@ -1073,6 +1073,8 @@ void bind_backscatter(py::module_& m) {
 
 }  // namespace
 
+void bind_study(py::module_& m);  // study_bindings.cpp
+
 PYBIND11_MODULE(_ris, m) {
   m.doc() = "ris radar image simulator: C++ core bindings (use the `ris` package)";
   m.attr("__version__") = RIS_VERSION;
@@ -1081,6 +1083,7 @@ PYBIND11_MODULE(_ris, m) {
   bind_radar(m);
   bind_result(m);
   bind_backscatter(m);
+  bind_study(m);
   m.def("_data_dir", [] { return ris::data_dir().string(); });
   m.def("_topo", &topo);
   m.def("_quality", &quality);

@@ -13,27 +13,20 @@
 // default bands over the whole swath, into ./study. --study reads a study
 // file (data/studies/seed-fig7.toml); options given on the command line win.
 #include <fmt/format.h>
-#include <omp.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "command_registry.h"
 #include "ris/analysis/study.h"
-#include "ris/analysis/study_config.h"
-#include "ris/backscatter/library.h"
-#include "ris/scene/scene_builder.h"
-#include "ris/scene/scene_io.h"
-#include "ris/sensor/one_channel_radar.h"
-#include "ris/sensor/radar_config.h"
+#include "ris/analysis/study_request.h"
 #include "ris/util/error.h"
 #include "ris/util/progress.h"
-#include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
 #include "seed_option.h"
 
@@ -58,62 +51,47 @@ struct StudyArgs {
   bool scene_given = false, radar_given = false, bands_given = false, seed_given = false;
 };
 
-Scene load_study_scene(const std::string& path) {
-  if (std::filesystem::path(path).extension() == ".toml") {
-    return build_scene(read_scene_description(path));
+// --range-fraction LO,HI into the request's two fractions.
+void parse_range_fraction(const std::string& text, StudyRequest& q) {
+  const auto comma = text.find(',');
+  try {
+    if (comma == std::string::npos) throw std::invalid_argument("no comma");
+    q.range_lo_fraction = std::stod(text.substr(0, comma));
+    q.range_hi_fraction = std::stod(text.substr(comma + 1));
+  } catch (const std::exception&) {
+    throw InputError("", "--range-fraction",
+                     fmt::format("expected LO,HI (fractions of the swath, e.g. 0.3333,0.6667), "
+                                 "got \"{}\"",
+                                 text));
   }
-  return read_scene(path);
 }
 
-// The window from the command line (which wins) or the study file.
-StudyWindow study_window(const StudyArgs& a, const StudyConfig& c) {
-  StudyWindow w;
-  if (c.range_lo_fraction) w.range_lo_fraction = *c.range_lo_fraction;
-  if (c.range_hi_fraction) w.range_hi_fraction = *c.range_hi_fraction;
-  if (c.incidence_bin_rad) w.incidence_bin_rad = *c.incidence_bin_rad;
-  if (!a.range_fraction.empty()) {
-    const auto comma = a.range_fraction.find(',');
-    try {
-      if (comma == std::string::npos) throw std::invalid_argument("no comma");
-      w.range_lo_fraction = std::stod(a.range_fraction.substr(0, comma));
-      w.range_hi_fraction = std::stod(a.range_fraction.substr(comma + 1));
-    } catch (const std::exception&) {
-      throw InputError("", "--range-fraction",
-                       fmt::format("expected LO,HI (fractions of the swath, e.g. 0.3333,0.6667), "
-                                   "got \"{}\"",
-                                   a.range_fraction));
-    }
-    check_study_window(w, "", "--range-fraction");
-  }
-  if (!a.incidence_bin.empty()) {
-    try {
-      w.incidence_bin_rad = parse_quantity(a.incidence_bin, Quantity::angle);
-    } catch (const std::invalid_argument& e) {
-      throw InputError("", "--incidence-bin", e.what());
-    }
-    check_study_window(w, "", "--incidence-bin");
-  }
-  return w;
+// The command line as a study request (ris/analysis/study_request.h): what
+// was given wins over the study file, which wins over the defaults.
+StudyRequest study_request(const StudyArgs& a) {
+  StudyRequest q;
+  q.study_file = a.study;
+  if (a.scene_given) q.scene = a.scene;
+  if (a.radar_given) q.radar = a.radar;
+  if (!a.backscatter.empty()) q.backscatter = a.backscatter;
+  if (a.bands_given) q.bands = a.bands;
+  if (a.seed_given) q.seed = a.seed;
+  if (!a.range_fraction.empty()) parse_range_fraction(a.range_fraction, q);
+  if (!a.incidence_bin.empty()) q.incidence_bin = a.incidence_bin;
+  q.null_check = !a.no_null_check;
+  q.panel_px = a.panel_px;
+  q.threads = a.threads;
+  return q;
 }
 
-// The file's inputs where the command line left the default.
-StudyArgs with_study_file(StudyArgs a, const StudyConfig& c) {
-  if (c.scene && !a.scene_given) a.scene = *c.scene;
-  if (c.radar && !a.radar_given) a.radar = *c.radar;
-  if (c.backscatter && a.backscatter.empty()) a.backscatter = *c.backscatter;
-  if (c.bands && !a.bands_given) a.bands = *c.bands;
-  if (c.seed && !a.seed_given) a.seed = *c.seed;
-  return a;
-}
-
-void print_study(const StudyResult& r, const StudyArgs& a, const std::string& title) {
+void print_study(const StudyResult& r, const StudyRunInfo& a, const std::string& title) {
   const auto name = [&](std::uint16_t c) {
     for (std::size_t i = 0; i < r.categories.size(); ++i)
       if (r.categories[i] == c) return r.category_names[i];
     return std::to_string(c);
   };
-  fmt::print("{}study of {} with {} at {} bands\n", title.empty() ? "" : title + ": ", a.scene,
-             a.radar, r.panels.size());
+  fmt::print("{}study of {} with {} at {} bands\n", title.empty() ? "" : title + ": ", a.scene_path,
+             a.radar_path, r.panels.size());
   fmt::print(
       "  window: slant range {:.0f}-{:.0f} m ({:.3f}-{:.3f} of the swath), {} incidence bins "
       "of {:g} deg from {:.1f} deg\n",
@@ -151,49 +129,28 @@ void print_study(const StudyResult& r, const StudyArgs& a, const std::string& ti
   }
 }
 
-void run_study_command(const StudyArgs& given) {
-  const StudyConfig config = given.study.empty() ? StudyConfig{} : read_study_config(given.study);
-  const StudyArgs a = with_study_file(given, config);
-  checked_thread_count(a.threads, "--threads");  // the cap (ris/util/resource_guard.h)
-  if (a.panel_px < 16) {
-    throw InputError("", "--panel-size", fmt::format("expected 16 or more, got {}", a.panel_px));
-  }
-  if (a.threads > 0) omp_set_num_threads(a.threads);
+void run_study_command(const StudyArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  // Bands first: a bad list fails before any expensive work.
-  const std::vector<StudyBand> bands = parse_study_bands(a.bands, "--bands");
-
-  StudyOptions options;
-  options.window = study_window(a, config);
-  options.null_check = !a.no_null_check;
-  options.seed = a.seed;
-  options.scene_path = a.scene;
+  StudyRequest q = study_request(a);
   // A bar on a terminal, plain lines in a log, nothing with --quiet.
   auto bar = std::make_shared<ProgressBar>("study", 100, "%", a.quiet);
   auto done_pct = std::make_shared<std::int64_t>(0);
   if (bar->enabled()) {
-    options.progress = [bar, done_pct](std::string_view stage, double fraction) {
+    q.progress = [bar, done_pct](std::string_view stage, double fraction) {
       const auto pct = static_cast<std::int64_t>(100.0 * fraction);
       bar->advance(pct - *done_pct);
       *done_pct = pct;
       bar->set_stage(std::string(stage));
     };
   }
-  const RadarParams radar = load_one_channel_radar(a.radar, "ris study");
-  const Scene scene = load_study_scene(a.scene);
-  const std::string backscatter =
-      a.backscatter.empty() ? default_sigma0_library_path() : a.backscatter;
-  const std::unique_ptr<Sigma0Source> sigma0 = load_sigma0_source(backscatter);
-
-  const StudyResult r = run_study(scene, radar, *sigma0, backscatter, bands, options);
-  ContactSheetStyle style;
-  style.max_panel_px = a.panel_px;
-  write_study_products(a.out, r, StudyRunInfo{a.scene, a.radar, backscatter, a.seed}, style);
+  const ResolvedStudy s = resolve_study(q);
+  const StudyResult r = run_resolved_study(s);
+  write_study_products(a.out, r, s.info, s.style);
   bar->finish();
 
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  print_study(r, a, config.name);
+  print_study(r, s.info, s.config.name);
   fmt::print("  {:.2f} s; outputs in {}\n", seconds,
              std::filesystem::absolute(a.out).lexically_normal().string());
 }

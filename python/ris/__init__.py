@@ -58,6 +58,8 @@ __all__ = [
     "data_dir",
     "simulate",
     "simulate_acquisition",
+    "study",
+    "StudyResult",
     "sigma0",
     "list_models",
     "DIELECTRIC_MODELS",
@@ -999,3 +1001,6 @@ def compare(simulated_w, real_w, register=True, max_shift_px=16, mask=None, cate
                                       _optional_grid(categories),
                                       _optional_grid(local_incidence_deg))
     return (measures, aligned) if return_aligned else measures
+
+
+from ._study import StudyResult, study  # noqa: E402 (uses Scene, Radar, _xarray)

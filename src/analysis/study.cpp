@@ -87,7 +87,7 @@ std::vector<StudyBand> default_study_bands() {
 
 void check_study_bands(const std::vector<StudyBand>& bands, const Sigma0Source& sigma0,
                        const std::vector<std::uint16_t>& categories,
-                       const std::string& backscatter_file) {
+                       const std::string& backscatter_file, const std::string& key) {
   for (const StudyBand& b : bands) {
     const RadarBand band{b.frequency_hz, b.polarisation};
     for (std::uint16_t c : categories) {
@@ -96,7 +96,7 @@ void check_study_bands(const std::vector<StudyBand>& bands, const Sigma0Source& 
         (void)sigma0.sigma0(c, deg_to_rad(30.0), band);
       } catch (const InputError& e) {
         throw InputError(
-            backscatter_file, "--bands",
+            backscatter_file, key,
             fmt::format("band {} is outside the backscatter library's validity for category {} "
                         "({}): {}",
                         b.label(), c, sigma0.category_name(c), e.what()));
@@ -228,9 +228,9 @@ BandSeparability separability_of(const SlarPictures& pic, const SlarSimulation& 
 StudyResult run_study(const Scene& scene, const RadarParams& base_radar, const Sigma0Source& sigma0,
                       const std::string& backscatter_file, const std::vector<StudyBand>& bands,
                       const StudyOptions& options) {
-  if (bands.empty()) throw InputError("", "--bands", "no bands to study");
+  if (bands.empty()) throw InputError("", options.bands_key, "no bands to study");
   const std::vector<std::uint16_t> used = categories_with_data(scene);
-  check_study_bands(bands, sigma0, used, backscatter_file);
+  check_study_bands(bands, sigma0, used, backscatter_file, options.bands_key);
 
   StudyResult result;
   result.window = options.window;

@@ -109,57 +109,8 @@ nlohmann::json method_json(const StudyResult& r) {
             {"incidence_bins", r.incidence.count}}}};
 }
 
-}  // namespace
-
-std::string study_verdict(const StudyResult& r) {
-  if (r.best_panel < 0) return "no band separates these categories";
-  return fmt::format("best band: {}",
-                     r.panels[static_cast<std::size_t>(r.best_panel)].band.label());
-}
-
-void write_study_products(const std::filesystem::path& out_dir, const StudyResult& r,
-                          const StudyRunInfo& info, const ContactSheetStyle& sheet_style) {
-  StagedDirectory dir(out_dir);
-  std::vector<ContactPanel> sheet;
-  std::string cats =
-      "panel,band,frequency_ghz,polarisation,category,name,pixels,mean_grey,std_grey,"
-      "mean_power_dbw\n";
-  SeparabilityTables tables;
-  nlohmann::json panels = nlohmann::json::array();
-  for (std::size_t i = 0; i < r.panels.size(); ++i) {
-    const StudyPanel& p = r.panels[i];
-    write_png_gray(dir.path(panel_file(i, p.band)), p.slant_grey.data(), p.bins, p.lines);
-    sheet.push_back({p.slant_grey.data(), p.bins, p.lines, p.band.label()});
-    for (const CategoryStats& c : p.stats) {
-      cats +=
-          fmt::format("{},{},{:g},{},{},{},{},{},{},{}\n", i + 1, csv_text(p.band.label()),
-                      p.band.frequency_hz / 1e9, to_string(p.band.polarisation), c.category,
-                      csv_text(c.name), c.pixels, csv_number(c.mean_grey, 3),
-                      csv_number(c.std_grey, 3), csv_number(10.0 * std::log10(c.mean_power_w), 3));
-    }
-    tables.add(r, "library", i, p.separability);
-    if (r.null_check_run) tables.add(r, "null", i, p.null_separability);
-    nlohmann::json panel = {{"panel", i + 1},
-                            {"band", p.band.label()},
-                            {"frequency_hz", p.band.frequency_hz},
-                            {"polarisation", to_string(p.band.polarisation)},
-                            {"file", panel_file(i, p.band)},
-                            {"separability", separability_json(p.separability)},
-                            {"simulation", p.simulation}};
-    if (r.null_check_run) panel["null_separability"] = separability_json(p.null_separability);
-    panels.push_back(panel);
-  }
-  const std::string scene_name = std::filesystem::path(info.scene_path).stem().string();
-  write_contact_sheet_png(
-      dir.path("contact_sheet.png"),
-      scene_name.empty()
-          ? std::string("Frequency/polarisation study (slant range)")
-          : fmt::format("{}: frequency/polarisation study (slant range)", scene_name),
-      sheet, sheet_style);
-  write_text_file_atomic(dir.path("categories.csv"), cats);
-  write_text_file_atomic(dir.path("separability.csv"), tables.pairs);
-  write_text_file_atomic(dir.path("separability_bins.csv"), tables.bins);
-
+// metadata.json but its panels.
+nlohmann::json study_metadata(const StudyResult& r, const StudyRunInfo& info) {
   nlohmann::json meta;
   meta["software"] = {{"name", "ris"}, {"version", RIS_VERSION}};
   meta["inputs"] = {{"scene", info.scene_path},
@@ -187,8 +138,73 @@ void write_study_products(const std::filesystem::path& out_dir, const StudyResul
                           {"max_abs_z", json_number(r.null_max_abs_z)},
                           {"z_critical", r.z_critical}};
   }
-  meta["panels"] = panels;
-  write_text_file_atomic(dir.path("metadata.json"), meta.dump(2) + "\n");
+  return meta;
+}
+
+}  // namespace
+
+std::string study_verdict(const StudyResult& r) {
+  if (r.best_panel < 0) return "no band separates these categories";
+  return fmt::format("best band: {}",
+                     r.panels[static_cast<std::size_t>(r.best_panel)].band.label());
+}
+
+StudyTables study_tables(const StudyResult& r, const StudyRunInfo& info) {
+  StudyTables out;
+  out.categories_csv =
+      "panel,band,frequency_ghz,polarisation,category,name,pixels,mean_grey,std_grey,"
+      "mean_power_dbw\n";
+  SeparabilityTables tables;
+  nlohmann::json panels = nlohmann::json::array();
+  for (std::size_t i = 0; i < r.panels.size(); ++i) {
+    const StudyPanel& p = r.panels[i];
+    for (const CategoryStats& c : p.stats) {
+      out.categories_csv +=
+          fmt::format("{},{},{:g},{},{},{},{},{},{},{}\n", i + 1, csv_text(p.band.label()),
+                      p.band.frequency_hz / 1e9, to_string(p.band.polarisation), c.category,
+                      csv_text(c.name), c.pixels, csv_number(c.mean_grey, 3),
+                      csv_number(c.std_grey, 3), csv_number(10.0 * std::log10(c.mean_power_w), 3));
+    }
+    tables.add(r, "library", i, p.separability);
+    if (r.null_check_run) tables.add(r, "null", i, p.null_separability);
+    nlohmann::json panel = {{"panel", i + 1},
+                            {"band", p.band.label()},
+                            {"frequency_hz", p.band.frequency_hz},
+                            {"polarisation", to_string(p.band.polarisation)},
+                            {"file", panel_file(i, p.band)},
+                            {"separability", separability_json(p.separability)},
+                            {"simulation", p.simulation}};
+    if (r.null_check_run) panel["null_separability"] = separability_json(p.null_separability);
+    panels.push_back(panel);
+  }
+  out.separability_csv = std::move(tables.pairs);
+  out.separability_bins_csv = std::move(tables.bins);
+  out.metadata = study_metadata(r, info);
+  out.metadata["panels"] = panels;
+  return out;
+}
+
+void write_study_products(const std::filesystem::path& out_dir, const StudyResult& r,
+                          const StudyRunInfo& info, const ContactSheetStyle& sheet_style) {
+  const StudyTables tables = study_tables(r, info);
+  StagedDirectory dir(out_dir);
+  std::vector<ContactPanel> sheet;
+  for (std::size_t i = 0; i < r.panels.size(); ++i) {
+    const StudyPanel& p = r.panels[i];
+    write_png_gray(dir.path(panel_file(i, p.band)), p.slant_grey.data(), p.bins, p.lines);
+    sheet.push_back({p.slant_grey.data(), p.bins, p.lines, p.band.label()});
+  }
+  const std::string scene_name = std::filesystem::path(info.scene_path).stem().string();
+  write_contact_sheet_png(
+      dir.path("contact_sheet.png"),
+      scene_name.empty()
+          ? std::string("Frequency/polarisation study (slant range)")
+          : fmt::format("{}: frequency/polarisation study (slant range)", scene_name),
+      sheet, sheet_style);
+  write_text_file_atomic(dir.path("categories.csv"), tables.categories_csv);
+  write_text_file_atomic(dir.path("separability.csv"), tables.separability_csv);
+  write_text_file_atomic(dir.path("separability_bins.csv"), tables.separability_bins_csv);
+  write_text_file_atomic(dir.path("metadata.json"), tables.metadata.dump(2) + "\n");
   dir.commit();
 }
 

@@ -81,11 +81,11 @@ std::string default_study_bands_text();
 
 // Checks every band against the backscatter source for every category the
 // scene uses (that the source has), before any simulation: a band outside a
-// model's validity throws InputError(key "--bands") naming the band, the
-// category and the library's own complaint.
+// model's validity throws InputError(key, "--bands" by default) naming the
+// band, the category and the library's own complaint.
 void check_study_bands(const std::vector<StudyBand>& bands, const Sigma0Source& sigma0,
                        const std::vector<std::uint16_t>& categories,
-                       const std::string& backscatter_file);
+                       const std::string& backscatter_file, const std::string& key = "--bands");
 
 // The radar at the band's frequency and polarisation (radar_at_band,
 // ris/sensor/radar_params.h): what its file would give with `frequency` and
@@ -146,6 +146,9 @@ struct StudyOptions {
   // normal quantile of family_error / (bands x pairs) (Bonferroni).
   double family_error = 0.01;
   std::int64_t min_pixels = 20;  // per category and incidence bin
+  // The option or argument the bands came from, named by a band error
+  // ("--bands" on the command line, "bands" in Python).
+  std::string bands_key = "--bands";
   std::function<void(std::string_view, double)> progress;
 };
 
@@ -169,6 +172,15 @@ struct StudyRunInfo {
   std::string backscatter_path;
   std::uint64_t seed = 0;
 };
+
+// The study's tables and metadata, exactly as write_study_products writes
+// them into categories.csv, separability.csv, separability_bins.csv and
+// metadata.json (Python's ris.study reads its tables from here).
+struct StudyTables {
+  std::string categories_csv, separability_csv, separability_bins_csv;
+  nlohmann::json metadata;
+};
+StudyTables study_tables(const StudyResult& result, const StudyRunInfo& info);
 
 // Writes, through StagedDirectory (all or nothing):
 //   panel_<i>_<band>.png  slant-range greytones of each panel
