@@ -11,8 +11,8 @@
 #              folder, not docs/images: fails unless every command runs and
 #              writes its PNG (ctest: doc_images_check)
 #   --heavy    also the 40,000^2-cell stream example (stream-40k-ground-range;
-#              about 16 GB of disk and several minutes on two cores: not for
-#              a shared machine)
+#              about 16 GB of disk in $TMPDIR and several minutes on two
+#              cores: not for a shared machine)
 #   --only     only these pictures (names without .png)
 #   --out DIR  write the PNGs into DIR (default docs/images)
 #
@@ -40,6 +40,8 @@
 #                                    (scripts/serve_screenshot.py); skipped
 #                                    with a note when Chromium is missing
 #   stream-40k-ground-range          README.md, docs/performance.md (--heavy only)
+# The pic_* functions are called by name ("pic_$name"), which shellcheck cannot see.
+# shellcheck disable=SC2317
 set -euo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
