@@ -26,7 +26,7 @@ def main():
         return 2
     ris_exe, out_png = sys.argv[1], sys.argv[2]
     try:
-        import selenium  # noqa: F401
+        import selenium  # noqa: F401 (only whether it is there)
     except ImportError:
         print("SKIP: python3-selenium not installed (scripts/install-deps.sh)")
         return SKIP
