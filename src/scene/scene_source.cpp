@@ -107,16 +107,7 @@ LoadedScene load_scene_source(const std::string& path,
     out.scene = build_scene(d);
     out.name = d.name;
     out.category_names = d.category_names;
-    const double w = d.grid.cols * d.grid.cell_m;
-    const double h = d.grid.rows * d.grid.cell_m;
-    for (std::size_t i = 0; i < d.objects.size(); ++i) {
-      std::optional<CulturalObject> c = d.objects[i]->cultural(d.grid.base_elevation_m);
-      const Bounds b = d.objects[i]->bounds();
-      if (!c || b.x_max_m < 0.0 || b.y_max_m < 0.0 || b.x_min_m > w || b.y_min_m > h) continue;
-      c->label = d.object_labels[i];
-      out.cultural_objects.push_back(std::move(*c));
-    }
-    move_to_world(out.cultural_objects, d.grid.origin_x_m, d.grid.origin_y_m);
+    out.cultural_objects = cultural_objects(d);
   } else {
     out.scene =
         category_path ? read_scene(path, std::filesystem::path(*category_path)) : read_scene(path);
