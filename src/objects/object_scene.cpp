@@ -230,15 +230,11 @@ ObjectSceneMesh build_object_scene(const std::vector<CulturalObject>& objects, c
     if (b.kind == CulturalKind::building) {
       piece = building_mesh(b, o, table.index(b.wall_material, b, "wall_material"),
                             table.index(b.roof_material, b, "roof_material"));
-      const double pad = std::max(apron_factor * b.height_m, 2.0 * scene.dx_m);
       for (const Point& p : b.footprint_m) {
         centre += Vec3{p[0] - o.x, p[1] - o.y, b.base_m - o.z} *
                   (1.0 / static_cast<double>(b.footprint_m.size()));
-        for (double dx : {-pad, pad})
-          for (double dy : {-pad, pad})
-            window.push_back({p[0] + dx - o.x, p[1] + dy - o.y, b.base_m});
       }
-      window.insert(window.end(), piece.vertices.begin(), piece.vertices.end());
+      window = piece.vertices;
     } else {
       const TerrainSample ts = bilinear_terrain_sample(scene, nullptr, b.x_m, b.y_m);
       if (!ts.valid) {

@@ -48,6 +48,16 @@ EmbreeScene::EmbreeScene(const TriangleMesh& mesh) : handles_(new Handles), mesh
     const Vec3 e2 = mesh.vertices[t[2]] - mesh.vertices[t[0]];
     normals_.push_back(e1.cross(e2).normalized());
   }
+  // A bounding sphere (the box's centre): where a window's rays start.
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Vec3& p : mesh.vertices) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  if (!mesh.vertices.empty()) {
+    bound_centre_ = (lo + hi) * 0.5;
+    bound_radius_ = (hi - lo).norm() * 0.5;
+  }
   rtcCommitGeometry(geom);
   rtcAttachGeometry(handles_->scene, geom);
   rtcReleaseGeometry(geom);
@@ -255,9 +265,16 @@ SbrResult trace_sbr(const EmbreeScene& scene, const std::vector<SurfaceResponse>
                  &options};
   // The grid covers the mesh's projection on the (h, v) plane.
   double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300, smax = -1e300, extent = 0.0;
-  for (const Vec3& p : scene.mesh().vertices) {
-    smax = std::max(smax, p.dot(c.f.s));
-    extent = std::max(extent, p.norm());
+  if (options.launch_extent != nullptr) {
+    // A window of a large mesh: start beyond its bounding sphere (a pass
+    // over every vertex per window would cost more than the window's rays).
+    smax = c.f.s.dot(scene.bound_centre()) + scene.bound_radius();
+    extent = scene.bound_centre().norm() + scene.bound_radius();
+  } else {
+    for (const Vec3& p : scene.mesh().vertices) {
+      smax = std::max(smax, p.dot(c.f.s));
+      extent = std::max(extent, p.norm());
+    }
   }
   const std::vector<Vec3>& window =
       options.launch_extent != nullptr ? *options.launch_extent : scene.mesh().vertices;

@@ -31,9 +31,9 @@ struct ObjectSceneMesh {
   std::vector<SurfaceResponse> surfaces;  // by TriangleMesh::material
   std::vector<std::string> surface_names;
   Vec3 origin_m{};  // world position of the local frame's origin
-  // Per object: the points whose projection is its launch window (local
-  // frame), and its reference point (a building's footprint centre at the
-  // foot, a reflector's origin).
+  // Per object: its mesh's vertices (local frame; a launch window adds the
+  // ground in front of it, which depends on the look), and its reference
+  // point (a building's footprint centre at the foot, a reflector's origin).
   std::vector<std::vector<Vec3>> windows;
   std::vector<Vec3> centres_m;
   std::int64_t ground_triangles = 0;

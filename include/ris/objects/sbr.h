@@ -54,12 +54,17 @@ class EmbreeScene {
   void* handle() const;
   // Unit facet normals (right-hand rule of the vertex order).
   const std::vector<Vec3>& normals() const { return normals_; }
+  // A sphere holding every vertex.
+  const Vec3& bound_centre() const { return bound_centre_; }
+  double bound_radius() const { return bound_radius_; }
 
  private:
   struct Handles;
   std::unique_ptr<Handles> handles_;
   TriangleMesh mesh_;
   std::vector<Vec3> normals_;
+  Vec3 bound_centre_{};
+  double bound_radius_ = 0.0;
 };
 
 struct SbrOptions {

@@ -91,7 +91,19 @@ std::vector<PointTarget> object_scattering_centres(const std::vector<CulturalObj
     o.keep_returns = true;
     o.skip_ground_only = true;
     o.only_part = static_cast<std::uint32_t>(k + 1);
-    o.launch_extent = &m.windows[k];
+    // The launch window: the object, and for a building the ground in front
+    // of it from which a ground-wall path can reach the wall, h tan(theta)
+    // towards the radar (a cell more).
+    std::vector<Vec3> window = m.windows[k];
+    if (obj.kind == CulturalKind::building) {
+      const double reach =
+          obj.height_m * std::sqrt(1.0 - v.to_radar.z * v.to_radar.z) / v.to_radar.z + cell_m;
+      const Vec3 towards = Vec3{v.to_radar.x, v.to_radar.y, 0.0}.normalized() * reach;
+      for (const auto& p : obj.footprint_m) {
+        window.push_back(Vec3{p[0], p[1], obj.base_m} - m.origin_m + towards);
+      }
+    }
+    o.launch_extent = &window;
     // Tubes: a quarter cell on buildings, a 32nd of a reflector's size;
     // never finer than lambda / 10 (docs/objects.md "Objects in a scene").
     o.ray_spacing_m = std::max(lambda / 10.0, obj.kind == CulturalKind::building
