@@ -53,6 +53,30 @@ std::string crs_name(const std::string& wkt) {
   return name;
 }
 
+// The description's buildings and reflectors (ris/scene/cultural_object.h),
+// ray traced by ris simulate (docs/objects.md); the first 20 one a line.
+void print_cultural_objects(const std::vector<ris::CulturalObject>& objects) {
+  if (objects.empty()) return;
+  int buildings = 0;
+  for (const ris::CulturalObject& o : objects) buildings += o.kind == ris::CulturalKind::building;
+  fmt::print("objects (ray traced): {} buildings, {} reflectors\n", buildings,
+             objects.size() - static_cast<std::size_t>(buildings));
+  for (std::size_t i = 0; i < objects.size() && i < 20; ++i) {
+    const ris::CulturalObject& o = objects[i];
+    if (o.kind == ris::CulturalKind::building) {
+      fmt::print("  {}: {} vertices, {:g} m high on {:g} m, walls {}, roof {}\n", o.label,
+                 o.footprint_m.size(), o.height_m, o.base_m, o.wall_material, o.roof_material);
+    } else {
+      fmt::print(
+          "  {}: size {:g} m at ({:g}, {:g}) m, {:g} m up, azimuth {:g} deg, tilt {:g} "
+          "deg, {}\n",
+          o.label, o.size_m, o.x_m, o.y_m, o.height_above_terrain_m, ris::rad_to_deg(o.azimuth_rad),
+          ris::rad_to_deg(o.tilt_rad), o.material);
+    }
+  }
+  if (objects.size() > 20) fmt::print("  ... and {} more\n", objects.size() - 20);
+}
+
 void print_info(const std::string& path, const std::string& categories) {
   const LoadedScene loaded = load_scene(path, categories);
   const ris::Scene& s = loaded.scene;
@@ -78,6 +102,7 @@ void print_info(const std::string& path, const std::string& categories) {
                100.0 * static_cast<double>(n) / static_cast<double>(st.valid_cells),
                name != loaded.category_names.end() ? name->second : "");
   }
+  print_cultural_objects(loaded.cultural_objects);
 }
 
 struct SceneArgs {

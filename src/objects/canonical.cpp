@@ -55,6 +55,14 @@ void TriangleMesh::append(const TriangleMesh& other) {
   vertices.insert(vertices.end(), other.vertices.begin(), other.vertices.end());
   for (const auto& t : other.triangles) triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
   material.insert(material.end(), other.material.begin(), other.material.end());
+  if (!part.empty() || !other.part.empty()) {
+    part.resize(triangles.size() - other.triangles.size(), 0);
+    if (other.part.empty()) {
+      part.resize(triangles.size(), 0);
+    } else {
+      part.insert(part.end(), other.part.begin(), other.part.end());
+    }
+  }
 }
 
 void place(TriangleMesh& mesh, const Placement& p) {

@@ -48,6 +48,16 @@ EmbreeScene::EmbreeScene(const TriangleMesh& mesh) : handles_(new Handles), mesh
     const Vec3 e2 = mesh.vertices[t[2]] - mesh.vertices[t[0]];
     normals_.push_back(e1.cross(e2).normalized());
   }
+  // A bounding sphere (the box's centre): where a window's rays start.
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Vec3& p : mesh.vertices) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  if (!mesh.vertices.empty()) {
+    bound_centre_ = (lo + hi) * 0.5;
+    bound_radius_ = (hi - lo).norm() * 0.5;
+  }
   rtcCommitGeometry(geom);
   rtcAttachGeometry(handles_->scene, geom);
   rtcReleaseGeometry(geom);
@@ -142,13 +152,16 @@ bool sees_radar(const TraceContext& c, const Vec3& p, std::int64_t& traced) {
 }
 
 // One ray of the grid from p0 along f.k, tube edges a1, a2.
-void trace_ray(const TraceContext& c, const Vec3& p0, Vec3 a1, Vec3 a2, Accumulator& acc) {
+void trace_ray(const TraceContext& c, const Vec3& p0, Vec3 a1, Vec3 a2, std::int64_t ray_index,
+               Accumulator& acc) {
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   const Frame& f = c.f;
   CVec3 e[2] = {cvec(f.h, 1.0), cvec(f.v, 1.0)};  // H and V transmissions
   Vec3 org = p0, dir = f.k, first{};
   double path = 0.0;
+  const std::vector<std::uint32_t>& parts = c.es->mesh().part;
+  std::uint32_t part = 0;
   const double eta_free = 1.0;  // fields normalised by eta: eta H = k x E
   for (int bounce = 1; bounce <= c.opt->max_bounces; ++bounce) {
     RTCRayHit rh{};
@@ -170,6 +183,9 @@ void trace_ray(const TraceContext& c, const Vec3& p0, Vec3 a1, Vec3 a2, Accumula
     if (bounce == 1) first = hit;
     path += t;
     const std::uint32_t prim = rh.hit.primID;
+    if (part == 0 && !parts.empty()) part = parts[prim];
+    const bool counted = !(c.opt->skip_ground_only && part == 0) &&
+                         !(c.opt->only_part != 0 && part != c.opt->only_part);
     Vec3 n = c.es->normals()[prim];
     if (n.dot(dir) > 0.0) n = -n;
     const double cos_i = -dir.dot(n);
@@ -194,7 +210,8 @@ void trace_ray(const TraceContext& c, const Vec3& p0, Vec3 a1, Vec3 a2, Accumula
     a1 = a1 - dir * (a1.dot(n) / dir.dot(n));
     a2 = a2 - dir * (a2.dot(n) / dir.dot(n));
     const double area = a1.cross(a2).norm();
-    if (f.s.dot(n) > 0.0 && (bounce == 1 || sees_radar(c, hit + n * c.offset, acc.traced))) {
+    if (counted && f.s.dot(n) > 0.0 &&
+        (bounce == 1 || sees_radar(c, hit + n * c.offset, acc.traced))) {
       const Vec3 w = f.s - dir;
       const double shape = sinc(0.5 * c.k * w.dot(a1)) * sinc(0.5 * c.k * w.dot(a2));
       const double two_way = -f.s.dot(p0) + path - f.s.dot(hit);
@@ -219,6 +236,8 @@ void trace_ray(const TraceContext& c, const Vec3& p0, Vec3 a1, Vec3 a2, Accumula
         ret.bounces = bounce;
         ret.first_hit_m = first;
         ret.last_hit_m = hit;
+        ret.part = part;
+        ret.ray = ray_index;
         acc.returns.push_back(ret);
       }
     }
@@ -246,18 +265,30 @@ SbrResult trace_sbr(const EmbreeScene& scene, const std::vector<SurfaceResponse>
                  &options};
   // The grid covers the mesh's projection on the (h, v) plane.
   double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300, smax = -1e300, extent = 0.0;
-  for (const Vec3& p : scene.mesh().vertices) {
+  if (options.launch_extent != nullptr) {
+    // A window of a large mesh: start beyond its bounding sphere (a pass
+    // over every vertex per window would cost more than the window's rays).
+    smax = c.f.s.dot(scene.bound_centre()) + scene.bound_radius();
+    extent = scene.bound_centre().norm() + scene.bound_radius();
+  } else {
+    for (const Vec3& p : scene.mesh().vertices) {
+      smax = std::max(smax, p.dot(c.f.s));
+      extent = std::max(extent, p.norm());
+    }
+  }
+  const std::vector<Vec3>& window =
+      options.launch_extent != nullptr ? *options.launch_extent : scene.mesh().vertices;
+  for (const Vec3& p : window) {
     umin = std::min(umin, p.dot(c.f.h));
     umax = std::max(umax, p.dot(c.f.h));
     vmin = std::min(vmin, p.dot(c.f.v));
     vmax = std::max(vmax, p.dot(c.f.v));
-    smax = std::max(smax, p.dot(c.f.s));
-    extent = std::max(extent, p.norm());
   }
   SbrResult result;
-  if (scene.mesh().vertices.empty()) return result;
+  if (scene.mesh().vertices.empty() || window.empty()) return result;
   c.offset = 1e-5 * std::max(extent, lambda);
-  const double d = lambda / options.rays_per_wavelength;
+  const double d =
+      options.ray_spacing_m > 0.0 ? options.ray_spacing_m : lambda / options.rays_per_wavelength;
   const auto nu = static_cast<std::int64_t>(std::ceil((umax - umin) / d)) + 1;
   const auto nv = static_cast<std::int64_t>(std::ceil((vmax - vmin) / d)) + 1;
   const double u0 = 0.5 * (umin + umax) - 0.5 * static_cast<double>(nu - 1) * d;
@@ -270,7 +301,7 @@ SbrResult trace_sbr(const EmbreeScene& scene, const std::vector<SurfaceResponse>
     for (std::int64_t iv = 0; iv < nv; ++iv) {
       const Vec3 p0 = base + c.f.h * (u0 + static_cast<double>(iu) * d) +
                       c.f.v * (v0 + static_cast<double>(iv) * d);
-      trace_ray(c, p0, c.f.h * d, c.f.v * d, acc);
+      trace_ray(c, p0, c.f.h * d, c.f.v * d, iu * nv + iv, acc);
     }
   }
   for (Accumulator& a : accs) {
@@ -281,6 +312,11 @@ SbrResult trace_sbr(const EmbreeScene& scene, const std::vector<SurfaceResponse>
     result.rays_traced += a.traced;
     result.returns.insert(result.returns.end(), a.returns.begin(), a.returns.end());
   }
+  // The threads' lists in launch order, whatever the thread count.
+  std::sort(result.returns.begin(), result.returns.end(),
+            [](const SbrReturn& a, const SbrReturn& b) {
+              return a.ray != b.ray ? a.ray < b.ray : a.bounces < b.bounces;
+            });
   for (int q = 0; q < 4; ++q) result.rcs_m2[q] = std::norm(result.s[q]);
   result.rays_launched = nu * nv;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

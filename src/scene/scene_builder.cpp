@@ -115,6 +115,21 @@ SceneDescription parse_scene_description(const toml::table& doc, const std::stri
   return d;
 }
 
+std::vector<CulturalObject> cultural_objects(const SceneDescription& d) {
+  std::vector<CulturalObject> out;
+  const double w = d.grid.cols * d.grid.cell_m;
+  const double h = d.grid.rows * d.grid.cell_m;
+  for (std::size_t i = 0; i < d.objects.size(); ++i) {
+    std::optional<CulturalObject> c = d.objects[i]->cultural(d.grid.base_elevation_m);
+    const Bounds b = d.objects[i]->bounds();
+    if (!c || b.x_max_m < 0.0 || b.y_max_m < 0.0 || b.x_min_m > w || b.y_min_m > h) continue;
+    c->label = d.object_labels[i];
+    out.push_back(std::move(*c));
+  }
+  move_to_world(out, d.grid.origin_x_m, d.grid.origin_y_m);
+  return out;
+}
+
 SceneDescription read_scene_description(const std::string& path) {
   const toml::table doc = parse_toml_file(path);
   return parse_scene_description(doc, path);

@@ -41,7 +41,7 @@ Bounds Placement::bounds_of(double u0_m, double v0_m, double u1_m, double v1_m) 
 std::span<const ObjectType> object_types() {
   // The one table of object types (DESIGN.md principle 1). Each parser lives
   // in src/scene/objects/<name>.cpp with its documentation at the top.
-  static constexpr std::array<ObjectType, 8> kTypes{{
+  static constexpr std::array<ObjectType, 10> kTypes{{
       {"patch", "x, y, length, width, [rotation], category: a flat rectangle of one category",
        detail::parse_patch},
       {"box", "x, y, length, width, height, [rotation], category: a block (the seed's cube)",
@@ -58,6 +58,14 @@ std::span<const ObjectType> object_types() {
       {"checkerboard",
        "square, categories, [x, y, length, width, rotation]: squares cycling through categories",
        detail::parse_checkerboard},
+      {"building",
+       "footprint, height (or storeys), [roof], category, [wall/roof/ground_material]: a "
+       "building, painted and ray-traced",
+       detail::parse_building},
+      {"reflector",
+       "shape, x, y, size, [width, height, azimuth, tilt, roll, material]: a canonical "
+       "reflector, ray-traced",
+       detail::parse_reflector},
   }};
   return kTypes;
 }

@@ -107,6 +107,7 @@ LoadedScene load_scene_source(const std::string& path,
     out.scene = build_scene(d);
     out.name = d.name;
     out.category_names = d.category_names;
+    out.cultural_objects = cultural_objects(d);
   } else {
     out.scene =
         category_path ? read_scene(path, std::filesystem::path(*category_path)) : read_scene(path);

@@ -52,6 +52,7 @@ struct PointReturn {
   double slant_range_m = 0.0;
   double look_rad = 0.0;  // look angle from nadir, for the elevation gain
   double rcs_m2 = 0.0;
+  std::size_t target = 0;  // index of its target in the run's list (SAR/SLAR lines)
 };
 
 struct SlarImagingParams {

@@ -22,6 +22,9 @@ struct TriangleMesh {
   std::vector<Vec3> vertices;  // metres
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::uint32_t> material;  // per triangle: index into a material list
+  // Per triangle, optional (empty: every triangle part 0): which object it
+  // belongs to, 0 for the ground around objects (ris/objects/object_scene.h).
+  std::vector<std::uint32_t> part;
 
   void add_triangle(const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t mat = 0);
   // Two triangles a-b-c, a-c-d.

@@ -54,12 +54,17 @@ class EmbreeScene {
   void* handle() const;
   // Unit facet normals (right-hand rule of the vertex order).
   const std::vector<Vec3>& normals() const { return normals_; }
+  // A sphere holding every vertex.
+  const Vec3& bound_centre() const { return bound_centre_; }
+  double bound_radius() const { return bound_radius_; }
 
  private:
   struct Handles;
   std::unique_ptr<Handles> handles_;
   TriangleMesh mesh_;
   std::vector<Vec3> normals_;
+  Vec3 bound_centre_{};
+  double bound_radius_ = 0.0;
 };
 
 struct SbrOptions {
@@ -69,6 +74,20 @@ struct SbrOptions {
   // tube-integral's linear-phase approximation holds).
   double rays_per_wavelength = 10.0;
   bool keep_returns = false;  // every (ray, bounce) contribution in SbrResult::returns
+  // > 0: the launch grid's spacing in metres instead of lambda /
+  // rays_per_wavelength (a scene's objects, ris/objects/object_scene.h: the
+  // tube integral is exact on a flat facet whatever the tube's size).
+  double ray_spacing_m = 0.0;
+  // Launch only over the projection of these points (default: the whole
+  // mesh); the rays still start beyond the whole mesh, so everything in
+  // front of the window occludes it.
+  const std::vector<Vec3>* launch_extent = nullptr;
+  // With the mesh's parts (TriangleMesh::part): a path's part is the first
+  // non-zero part it hits. skip_ground_only drops contributions of paths
+  // that have hit part 0 only so far; only_part > 0 keeps those of that
+  // part alone (each path is then counted by one window).
+  bool skip_ground_only = false;
+  std::uint32_t only_part = 0;
 };
 
 // S in backscatter alignment: index 0 HH, 1 HV, 2 VH, 3 VV (receive, transmit);
@@ -81,6 +100,8 @@ struct SbrReturn {
       0.0;  // two-way path from the plane through the origin normal to the line of sight
   int bounces = 0;
   Vec3 first_hit_m{}, last_hit_m{};
+  std::uint32_t part = 0;  // the path's first non-zero part (SbrOptions)
+  std::int64_t ray = 0;    // the launch grid's index of its ray (returns are in ray order)
 };
 
 struct SbrResult {

@@ -74,6 +74,11 @@ struct SceneDescription {
 SceneDescription parse_scene_description(const toml::table& doc, const std::string& source);
 SceneDescription read_scene_description(const std::string& path);
 
+// The description's buildings and reflectors (ris/scene/cultural_object.h)
+// in world coordinates, those whose bounds meet the grid (the builder warns
+// of the others), labelled as its messages label them.
+std::vector<CulturalObject> cultural_objects(const SceneDescription& description);
+
 // Builds the scene: the base plane, then each object in file order by the
 // composition rule (scene_object.h). An object that covers no cell centre of
 // the grid (wholly outside it, or too small) is skipped with a warning that

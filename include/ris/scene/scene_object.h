@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -33,6 +34,7 @@
 #include <vector>
 
 #include "ris/io/config_table.h"
+#include "ris/scene/cultural_object.h"
 #include "ris/scene/scene.h"
 
 namespace ris {
@@ -89,6 +91,14 @@ class SceneObject {
   virtual double smallest_feature_m() const {
     const Bounds b = bounds();
     return std::min(b.x_max_m - b.x_min_m, b.y_max_m - b.y_min_m);
+  }
+  // The object as a 3-D cultural object (buildings, reflectors;
+  // ris/scene/cultural_object.h) for the ray tracer, in the description's
+  // local frame; none for the grid's solids. base_elevation_m: the grid's
+  // base plane, where a building's walls stand.
+  virtual std::optional<CulturalObject> cultural(float base_elevation_m) const {
+    (void)base_elevation_m;
+    return std::nullopt;
   }
 };
 

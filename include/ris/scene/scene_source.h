@@ -15,6 +15,7 @@
 #include <set>
 #include <string>
 
+#include "ris/scene/cultural_object.h"
 #include "ris/scene/scene.h"
 
 namespace ris {
@@ -23,6 +24,10 @@ struct LoadedScene {
   Scene scene;
   std::string name;                                     // description's `name`, or ""
   std::map<std::uint16_t, std::string> category_names;  // description's labels, or empty
+  // A description's buildings and reflectors in world coordinates
+  // (ris/scene/cultural_object.h), those whose bounds meet the grid; none
+  // for a raster (a GeoTIFF keeps the painted grid only).
+  std::vector<CulturalObject> cultural_objects;
 };
 
 // GeoTIFF metadata items that carry a description's name and category

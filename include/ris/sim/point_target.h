@@ -39,6 +39,9 @@ struct PointTarget {
   double rcs_m2 = 0.0;          // radar cross-section sigma
   std::string source_file;      // for messages
   int index = 0;                // position in its file ([[target]] number, from 0)
+  // A scattering centre of a scene object (ris/sim/object_centres.h), not a
+  // target of the user's: imaged alike, not measured (point_target_irf.h).
+  bool from_object = false;
 };
 
 std::vector<PointTarget> load_point_targets(const std::string& path);

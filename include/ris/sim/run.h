@@ -39,6 +39,7 @@
 #include "ris/sim/acquisition_simulation.h"
 #include "ris/sim/acquisition_stream.h"
 #include "ris/sim/fault_plan.h"
+#include "ris/sim/object_centres.h"
 #include "ris/sim/point_target.h"
 #include "ris/sim/point_target_irf.h"
 #include "ris/sim/ppi_simulation.h"
@@ -122,6 +123,10 @@ struct SlarRun {
   SlarPictures pictures;
   bool coherent = false;             // coherent SAR: speckle from the phase history
   std::vector<PointTargetIrf> irfs;  // point targets' impulse responses
+  // The user's targets are the first this many of the run's; the rest are
+  // scene objects' scattering centres (ris/sim/object_centres.h), imaged
+  // alike and not measured.
+  std::size_t user_targets = SIZE_MAX;
 };
 
 // A SLAR or incoherent SAR run of a radar with several channels
@@ -207,6 +212,9 @@ struct RunResult {
   // In-memory scene runs: the scene (shared with the request when it gave one).
   std::shared_ptr<const Scene> scene;
   bool has_targets = false;  // point targets were given
+  // The scene's buildings and reflectors as traced (ris/sim/object_centres.h),
+  // when it has any.
+  std::optional<ObjectCentreStats> objects;
   std::string targets_path;  // where from (metadata.json)
   // Wall time: the whole run, and writing the products.
   double seconds = 0.0;

@@ -17,5 +17,7 @@ std::unique_ptr<SceneObject> parse_hemisphere(ConfigTable& t, const GridExtent& 
 std::unique_ptr<SceneObject> parse_cylinder(ConfigTable& t, const GridExtent& grid);
 std::unique_ptr<SceneObject> parse_tower(ConfigTable& t, const GridExtent& grid);
 std::unique_ptr<SceneObject> parse_checkerboard(ConfigTable& t, const GridExtent& grid);
+std::unique_ptr<SceneObject> parse_building(ConfigTable& t, const GridExtent& grid);
+std::unique_ptr<SceneObject> parse_reflector(ConfigTable& t, const GridExtent& grid);
 
 }  // namespace ris::detail

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <set>
 
 #include "ris/backscatter/library.h"
 #include "ris/io/ellipsoidal_dem.h"
@@ -292,13 +293,44 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
     for (const std::string& w : run.summary.sim.warnings) warn(cb, w);
 }
 
+// The scene's buildings and reflectors as point targets after the user's
+// (ris/sim/object_centres.h). Refused where the centres do not follow the
+// geometry yet, naming the scene's first object.
+void add_object_centres(RunResult& res, const std::vector<CulturalObject>& objects,
+                        const RadarParams& radar, SlarOptions& options, const RunCallbacks& cb) {
+  if (several_channels(radar)) {
+    throw InputError(objects[0].source, objects[0].label,
+                     "scene objects are traced for single-channel radars only for now; list one "
+                     "[[channel]] or use a scene without buildings and reflectors");
+  }
+  if (cb.progress) cb.progress("ray tracing scene objects", 0.05);
+  ObjectCentreStats st;
+  std::vector<PointTarget> centres = object_scattering_centres(objects, *res.scene, radar, &st);
+  options.targets.insert(options.targets.end(), std::make_move_iterator(centres.begin()),
+                         std::make_move_iterator(centres.end()));
+  res.objects = std::move(st);
+}
+
+// The hidden list keeps the user's targets' names only.
+void drop_object_centre_names(std::vector<std::string>& hidden,
+                              const std::vector<PointTarget>& targets, std::size_t user_targets) {
+  if (targets.size() == user_targets) return;
+  std::set<std::string> centres;
+  for (std::size_t i = user_targets; i < targets.size(); ++i) centres.insert(targets[i].name);
+  std::erase_if(hidden, [&](const std::string& n) { return centres.count(n) > 0; });
+}
+
 // Speckle, greytones and point-target measurements of a kept SLAR/SAR run.
 void render_slar_run(SlarRun& run, bool has_targets, std::uint64_t seed) {
   const SlarSimulation& sim = run.sim;
   run.pictures = run.coherent ? render_slar(sim, seed, coherent_sar_intensity(sim, seed))
                               : render_slar(sim, seed);
   run.irfs.clear();
-  if (has_targets) run.irfs = measure_point_targets(sim, run.pictures, run.coherent);
+  if (has_targets) {
+    run.irfs = measure_point_targets(sim, run.pictures, run.coherent);
+    std::erase_if(run.irfs,
+                  [&](const PointTargetIrf& t) { return t.target.target >= run.user_targets; });
+  }
 }
 
 // A radar with several channels over one geometry, in memory
@@ -440,6 +472,7 @@ nlohmann::json slar_run_extra_metadata(const RunResult& res, const SlarRun& run)
     extra["point_targets"] =
         point_target_irf_json(run.irfs, run.sim, res.targets_path, run.coherent);
   }
+  if (res.objects) extra["objects"] = object_centre_stats_json(*res.objects);
   return extra;
 }
 
@@ -508,9 +541,14 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
                           radar.mode == RadarMode::ppi ? ppi_product_stems() : slar_product_stems(),
                           "--products");
   check_calibrated(r, radar);
-  res.scene = r.scene != nullptr
-                  ? r.scene
-                  : std::make_shared<const Scene>(load_scene_source(r.scene_path).scene);
+  std::vector<CulturalObject> cultural;
+  if (r.scene != nullptr) {
+    res.scene = r.scene;
+  } else {
+    LoadedScene loaded = load_scene_source(r.scene_path);
+    cultural = std::move(loaded.cultural_objects);
+    res.scene = std::make_shared<const Scene>(std::move(loaded.scene));
+  }
   const LoadedSigma0 sigma0 = load_sigma0(r);
   res.info = run_info(r, sigma0.path);
   SlarOptions options;
@@ -525,6 +563,8 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   res.targets_path = r.targets_path;
   check_channels(r, radar, "", res.has_targets);
   check_out_dir(r, radar, res.scene->rows, res.scene->cols);
+  const std::size_t user_targets = options.targets.size();
+  if (!cultural.empty()) add_object_centres(res, cultural, radar, options, cb);
 
   if (radar.mode == RadarMode::ppi) {
     PpiRun& run = res.run.emplace<PpiRun>();
@@ -538,7 +578,9 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   } else {
     SlarRun& run = res.run.emplace<SlarRun>();
     run.coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
+    run.user_targets = user_targets;
     run.sim = simulate_slar(*res.scene, radar, *sigma0.source, options);
+    drop_object_centre_names(run.sim.hidden_targets, options.targets, user_targets);
     for (const std::string& w : run.sim.warnings) warn(cb, w);
     stage("speckle and greytones", 0.9);
     render_slar_run(run, res.has_targets, r.seed);

@@ -121,6 +121,7 @@ PointCandidate point_candidate(std::size_t target, int line, double along_m, dou
   c.ret.slant_range_m = std::hypot(u_m, altitude_m - h_m);
   c.ret.look_rad = std::atan2(u_m, altitude_m - h_m);
   c.ret.rcs_m2 = rcs_m2;
+  c.ret.target = target;
   return c;
 }
 
