@@ -157,6 +157,8 @@ struct PyScene {
   // simulate() takes when given none (as `ris simulate` does for a scene
   // raster that names one): "" for the standard library.
   std::string library;
+  // A description's buildings and reflectors (traced by simulate()).
+  std::vector<ris::CulturalObject> objects;
 };
 
 PyScene scene_from_arrays(py::array_t<float, py::array::c_style> elevation_m,
@@ -174,7 +176,7 @@ PyScene scene_from_arrays(py::array_t<float, py::array::c_style> elevation_m,
   s->category.assign(category.data(), category.data() + category.size());
   s->valid.assign(valid.data(), valid.data() + valid.size());
   reading_text("Scene.from_arrays", [&] { s->validate("Scene.from_arrays"); });
-  return PyScene{std::move(s), "", "", ""};
+  return PyScene{std::move(s), "", "", "", {}};
 }
 
 PyScene load_scene(const std::string& path, std::optional<std::string> category_path,
@@ -195,12 +197,15 @@ PyScene load_scene(const std::string& path, std::optional<std::string> category_
     opt.crs_key = "crs";
     // The import's categories are ids of that library (`ris scene import`
     // names it in the scene GeoTIFF it writes).
-    return PyScene{std::make_shared<ris::Scene>(ris::import_dem(path, opt).scene), path, "",
-                   (ris::data_dir() / ris::kDefaultCategoryLibrary).string()};
+    return PyScene{std::make_shared<ris::Scene>(ris::import_dem(path, opt).scene),
+                   path,
+                   "",
+                   (ris::data_dir() / ris::kDefaultCategoryLibrary).string(),
+                   {}};
   }
   ris::LoadedScene in = ris::load_scene_source(path, category_path);
   return PyScene{std::make_shared<ris::Scene>(std::move(in.scene)), path, in.name,
-                 ris::scene_backscatter_library(path)};
+                 ris::scene_backscatter_library(path), std::move(in.cultural_objects)};
 }
 
 struct PyRadar {
@@ -419,6 +424,7 @@ ris::RunRequest run_request(const PyScene* scene, const PyRadar& radar, const Py
   ris::RunRequest r;
   if (scene != nullptr) {
     r.scene = scene->scene;
+    r.objects = scene->objects;
     r.scene_path = scene->path;
   } else {
     r.scene_path = o.scene_path;

@@ -43,6 +43,7 @@
 #include "ris/sim/slar_products.h"
 #include "ris/sim/slar_simulation.h"
 #include "ris/sim/slar_stream.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/error.h"
 #include "ris/util/resource_guard.h"
 #include "ris/util/units.h"
@@ -237,6 +238,7 @@ void run_topo_bench_command(const BenchArgs& a) {
 void run_bench(const BenchArgs& a) {
   if (a.objects) {
     run_objects_bench(a.repeats);
+    run_town_bench(ris::data_dir().string());
     return;
   }
   if (a.topo) {

@@ -69,6 +69,7 @@ Session::SceneState Session::scene_from_doc(toml::table doc, const std::string& 
   s.editable = true;
   const SceneDescription d = parse_scene_description(doc, s.path);
   s.scene = std::make_shared<const Scene>(build_scene(d));
+  s.objects = cultural_objects(d);
   s.doc = std::move(doc);
   return s;
 }
@@ -145,6 +146,7 @@ RunResult Session::run(const SceneState& scene, const RadarParams& radar,
   RunRequest r;
   r.scene_path = scene.path;
   r.scene = scene.scene;
+  r.objects = scene.objects;
   r.radar_path = radar_path;
   r.radar = radar;
   r.backscatter_path = backscatter_path;

@@ -31,6 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ris/backscatter/sigma0_source.h"
+#include "ris/scene/cultural_object.h"
 #include "ris/scene/scene.h"
 #include "ris/serve/product_folders.h"
 #include "ris/sim/run.h"
@@ -137,6 +138,8 @@ class Session {
     bool editable = false;
     toml::table doc;  // editable scenes: the description
     std::shared_ptr<const Scene> scene;
+    // A description's buildings and reflectors, traced by every run.
+    std::vector<CulturalObject> objects;
     // The backscatter library it was run with (an undo past an upload
     // returns to the library of the scene before).
     std::string library;

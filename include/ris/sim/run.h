@@ -33,6 +33,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ris/backscatter/sigma0_source.h"
+#include "ris/scene/cultural_object.h"
 #include "ris/scene/scene.h"
 #include "ris/sensor/acquisition.h"
 #include "ris/sensor/radar_params.h"
@@ -54,6 +55,9 @@ struct RunRequest {
   // The scene: a .toml description or a raster (ris/scene/scene_source.h).
   std::string scene_path;
   std::shared_ptr<const Scene> scene;  // loaded already (not streamed)
+  // With `scene`: its description's buildings and reflectors
+  // (LoadedScene::cultural_objects), traced as a scene_path's would be.
+  std::vector<CulturalObject> objects;
   // The radar description (TOML).
   std::string radar_path;
   std::optional<RadarParams> radar;

@@ -544,6 +544,7 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
   std::vector<CulturalObject> cultural;
   if (r.scene != nullptr) {
     res.scene = r.scene;
+    cultural = r.objects;
   } else {
     LoadedScene loaded = load_scene_source(r.scene_path);
     cultural = std::move(loaded.cultural_objects);
