@@ -646,12 +646,21 @@ const inspectorRows = [
   ['x_m', 'map x (east), m'], ['y_m', 'map y (north), m'],
   ['scene_row', 'scene row'], ['scene_col', 'scene col'],
   ['elevation_m', 'elevation, m'], ['category_name', 'category'], ['category', 'category id'],
-  ['local_incidence_deg', 'local incidence, deg'], ['sigma0_db', 'sigma0, dB'],
+  ['local_incidence_deg', 'local incidence, deg'], ['sigma0_db', 'sigma0 (library), dB'],
   ['slant_range_m', 'slant range, m'], ['incidence_deg', 'incidence, deg'],
   ['incidence_flat_deg', 'incidence (flat), deg'], ['looks', 'N (looks)'],
   ['mean_power_w', 'mean power, W'], ['mean_power_dbw', 'mean power, dBW'],
   ['speckled_power_w', 'speckled power, W'], ['speckled_power_dbw', 'speckled power, dBW'],
   ['greytone', 'greytone'], ['flags', 'flags'],
+];
+// The slant pixel's calibrated readout (pixel.calibrated: the power over the
+// flat reference's radar equation, as sigma0_slant.tif), beside the watts.
+const calibratedRows = [
+  ['sigma0_db', 'sigma0 (calibrated), dB'], ['beta0_db', 'beta0, dB'],
+  ['gamma0_db', 'gamma0, dB'], ['speckled_sigma0_db', 'speckled sigma0, dB'],
+  ['incidence_deg', 'incidence at reference, deg'],
+  ['reference_height_m', 'calibration reference height, m'],
+  ['not_calibrated', 'calibration'],
 ];
 
 function fmtValue(v) {
@@ -672,15 +681,17 @@ async function inspect(view, x, y) {
     withDb(body.pixel);
     linkCursor(view, x, y, body);
     const rows = [];
-    const add = (obj, prefix) => {
-      for (const [key, label] of inspectorRows) {
+    const add = (obj, prefix, table = inspectorRows, keyPrefix = '') => {
+      for (const [key, label] of table) {
         const v = key.endsWith('_deg') && key.startsWith('l') && typeof obj[key] === 'number'
           ? obj[key].toFixed(6) : fmtValue(obj[key]);
-        if (key in obj) rows.push(`<tr><td>${prefix}${label}</td><td data-key="${key}">` +
-                                  `${v}</td></tr>`);
+        if (key in obj) rows.push(`<tr><td>${prefix}${label}</td>` +
+                                  `<td data-key="${keyPrefix}${key}">${v}</td></tr>`);
       }
     };
     add(body, '');
+    const slant = body.pixel || body;
+    if (slant.calibrated) add(slant.calibrated, '', calibratedRows, 'calibrated.');
     if (body.pixel) add(body.pixel, 'pixel ');
     $('inspector').innerHTML = rows.join('');
     showError('');
