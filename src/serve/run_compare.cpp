@@ -64,7 +64,8 @@ double default_range_db(const Difference& d) {
     if (std::isfinite(v)) mag.push_back(std::abs(v));
   }
   if (mag.empty()) return 1.0;
-  const std::size_t k = std::min(mag.size() - 1, static_cast<std::size_t>(0.98 * double(mag.size())));
+  const std::size_t k =
+      std::min(mag.size() - 1, static_cast<std::size_t>(0.98 * double(mag.size())));
   std::nth_element(mag.begin(), mag.begin() + static_cast<std::ptrdiff_t>(k), mag.end());
   return std::max(1.0, std::ceil(double(mag[k])));
 }

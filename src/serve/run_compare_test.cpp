@@ -3,7 +3,8 @@
 // earlier) of each pixel's power, read back through the inspector; the
 // difference picture's colour is the key's; runs on another grid are refused
 // with what differs; the routes are read-only and go through the server's
-// guards (foreign Origin 403, bad parameters 400).
+// guards (foreign Origin 403, bad parameters 400), as does the linked
+// zoom's /api/link.
 #include <gtest/gtest.h>
 #include <httplib.h>
 
@@ -169,7 +170,9 @@ TEST_F(CompareRuns, HostileAndBadRequestsAreRefused) {
         "/api/compare?earlier=1&range_db=nan", "/api/compare?earlier=1&range_db=1e9",
         "/api/compare/pixel?earlier=1&x=99999&y=0", "/api/compare/pixel?earlier=1&x=a&y=0",
         "/api/runs/99999/slant.png", "/api/inspect?view=scene&run=1&x=0&y=0",
-        "/api/inspect?view=slant&run=1&x=-1&y=0"}) {
+        "/api/inspect?view=slant&run=1&x=-1&y=0", "/api/link?from=ground&x0=0&y0=0&x1=1&y1=1",
+        "/api/link?from=scene&x0=0&y0=0&x1=nan&y1=1", "/api/link?from=scene&x0=5&y0=0&x1=1&y1=1",
+        "/api/link?from=scene&x0=0&y0=0&x1=1"}) {
     const auto r = get(path);
     ASSERT_TRUE(r);
     EXPECT_EQ(r->status, 400) << path << " " << r->body;

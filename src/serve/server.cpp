@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -129,6 +130,18 @@ std::uint64_t run_param(const httplib::Request& req, const std::string& key) {
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (text.empty() || ec != std::errc() || end != text.data() + text.size() || v == 0) {
     throw InputError("request", key, "expected a run id (1, 2, ...), got \"" + text + "\"");
+  }
+  return v;
+}
+
+// A coordinate of a region (pixels, fractional).
+double coordinate_param(const httplib::Request& req, const std::string& key) {
+  const std::string text = req.get_param_value(key);
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v) ||
+      std::abs(v) > 1e9) {
+    throw InputError("request", key, "expected a pixel coordinate, got \"" + text + "\"");
   }
   return v;
 }
@@ -306,6 +319,11 @@ struct HttpServer::Impl {
                const std::string text = req.matches[1];
                std::from_chars(text.data(), text.data() + text.size(), id);  // \d+ matched
                send_png(res, s.kept_slant_png(id));
+             }));
+    http.Get("/api/link", guarded([&s](const httplib::Request& req, auto& res) {
+               send_json(res, s.link(req.get_param_value("from"), coordinate_param(req, "x0"),
+                                     coordinate_param(req, "y0"), coordinate_param(req, "x1"),
+                                     coordinate_param(req, "y1")));
              }));
     http.Get("/api/compare", guarded([&s](const httplib::Request& req, auto& res) {
                send_json(res, s.compare(run_param(req, "earlier"), req.get_param_value("quantity"),

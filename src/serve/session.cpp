@@ -28,6 +28,7 @@
 #include "ris/serve/radar_overrides.h"
 #include "ris/serve/run_compare.h"
 #include "ris/serve/run_views.h"
+#include "ris/serve/view_link.h"
 #include "ris/sim/run.h"
 #include "ris/util/error.h"
 #include "ris/util/path_exists.h"
@@ -559,6 +560,12 @@ nlohmann::json Session::sigma0_chart() const {
 nlohmann::json Session::inspect(const std::string& view, int x, int y) const {
   std::lock_guard lock(mutex_);
   return inspect_pixel(result_, *sigma0_, view, x, y);
+}
+
+nlohmann::json Session::link(const std::string& from, double x0, double y0, double x1,
+                             double y1) const {
+  std::lock_guard lock(mutex_);
+  return linked_region(result_, from, x0, y0, x1, y1);
 }
 
 nlohmann::json Session::runs() const {

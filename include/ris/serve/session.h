@@ -136,6 +136,8 @@ class Session {
   // images); runs() lists them against the current run. A kept run's slant
   // greytones as PNG, and its slant pixel (x bin, y line) as the inspector
   // reads it (the current run's id: inspect("slant", x, y)).
+  // The linked zoom's region (ris/serve/view_link.h).
+  nlohmann::json link(const std::string& from, double x0, double y0, double x1, double y1) const;
   nlohmann::json runs() const;
   std::vector<std::uint8_t> kept_slant_png(std::uint64_t id) const;
   nlohmann::json inspect_kept(std::uint64_t id, int x, int y) const;
