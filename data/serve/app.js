@@ -13,7 +13,9 @@ let run = null;          // the current run's summary
 let pending = {};        // changes not yet accepted: {"radar.film.gamma": 0.8, "seed": 3}
 let inFlight = null;     // AbortController of the simulate request in flight
 let selectedObject = -1;
-let sceneView = null;    // the scene viewport's zoom (linked to the map)
+let sceneView = null;    // the scene viewport's zoom (linked to the map and the slant view)
+let imageView = null;    // the image viewport's zoom (the slant view linked to the scene)
+let compare = null;      // GET /api/compare: the comparison shown, or null
 
 // ---- API ----
 async function api(path, options = {}) {
@@ -269,7 +271,8 @@ function showOrientation(view) {
   // Lines are in flight order (first at the top), bins near range first.
   const h = (m.heading_deg || 0).toFixed(0);
   box.textContent = `\u2193 flight, heading ${h}\u00b0 (top: track start)\n` +
-    `\u2192 ${view === 'slant' ? 'slant' : 'ground'} range, looking ${m.look_side || 'right'}`;
+    `\u2192 ${view === 'slant' ? 'slant' : 'ground'} range, looking ${m.look_side || 'right'}` +
+    (view === 'slant' && $('link-zoom').checked ? '\nzoom linked to the scene (line, range mapping)' : '');
   box.dataset.heading = h;
 }
 
@@ -439,6 +442,8 @@ async function showRun(summary) {
   await showImages();
   showLegend();
   drawHistogram();
+  await refreshRuns().catch(() => {});
+  if ($('compare-mode').value !== 'off') await showCompare();
   if (run.kind !== 'ppi') {
     api('/api/shadowmap.txt').then(({ body }) => { $('shadow-map').textContent = body; })
       .catch(() => {});
@@ -559,11 +564,13 @@ async function drawHistogram() {
 // ---- zoom, pan and click on a viewport ----
 // paint (optional): {active(), down(x, y), move(x, y), up()} in image pixels;
 // while active, dragging paints instead of panning.
-function makeZoomable(viewport, stage, img, onClick, paint) {
+// onView (optional): called after the user zooms or pans (the linked zoom).
+function makeZoomable(viewport, stage, img, onClick, paint, onView) {
   const t = { scale: 1, x: 0, y: 0 };
-  const apply = () => {
+  const apply = (user) => {
     stage.style.transform = `translate(${t.x}px, ${t.y}px) scale(${t.scale})`;
     updateScaleBars();
+    if (user && onView) onView();
   };
   // The picture's laid-out size (its true aspect may differ from its
   // pixels', applyAspect).
@@ -583,14 +590,14 @@ function makeZoomable(viewport, stage, img, onClick, paint) {
   };
   img.addEventListener('load', refit);
   img.addEventListener('resized', refit);
-  viewport.addEventListener('dblclick', fit);
+  viewport.addEventListener('dblclick', () => { fit(); if (onView) onView(); });
   viewport.addEventListener('wheel', (ev) => {
     ev.preventDefault();
     const r = viewport.getBoundingClientRect();
     const px = ev.clientX - r.left, py = ev.clientY - r.top;
     const k = ev.deltaY < 0 ? 1.25 : 0.8;
     t.x = px - (px - t.x) * k; t.y = py - (py - t.y) * k; t.scale *= k;
-    apply();
+    apply(true);
   }, { passive: false });
   const pixelAt = (ev) => {
     const r = img.getBoundingClientRect();
@@ -616,6 +623,7 @@ function makeZoomable(viewport, stage, img, onClick, paint) {
   });
   window.addEventListener('mouseup', (ev) => {
     if (painting) { painting = false; paint.up(); return; }
+    if (drag && drag.moved && onView) onView();
     if (drag && !drag.moved && viewport.contains(ev.target)) {
       const r = img.getBoundingClientRect();
       const x = Math.floor(((ev.clientX - r.left) / r.width) * img.naturalWidth);
@@ -635,7 +643,40 @@ function makeZoomable(viewport, stage, img, onClick, paint) {
       t.y = viewport.clientHeight / 2 - t.scale * ky * (y0 + y1) / 2;
       apply();
     },
+    // The image pixels the viewport shows, [x0, y0, x1, y1], within the image.
+    region() {
+      if (!img.naturalWidth || !img.offsetWidth) return null;
+      const kx = t.scale * img.offsetWidth / img.naturalWidth;
+      const ky = t.scale * img.offsetHeight / img.naturalHeight;
+      const r = [Math.max(0, -t.x / kx), Math.max(0, -t.y / ky),
+                 Math.min(img.naturalWidth, (viewport.clientWidth - t.x) / kx),
+                 Math.min(img.naturalHeight, (viewport.clientHeight - t.y) / ky)];
+      return r[2] > r[0] && r[3] > r[1] ? r : null;
+    },
   };
+}
+
+// ---- linked zoom between the scene and the slant view ----
+// The other view shows the region the server maps this one's to, through
+// the slant image's own (line, range) mapping (GET /api/link). Answers to
+// an older move are dropped.
+let linkTicket = 0;
+async function linkViews(from) {
+  if (!$('link-zoom').checked || !run || run.kind === 'ppi' || !sceneView || !imageView) return;
+  if ($('image').dataset.view !== 'slant' || !$('map').hidden) return;
+  const [src, dst] = from === 'scene' ? [sceneView, imageView] : [imageView, sceneView];
+  const r = src.region();
+  if (!r) return;
+  const ticket = ++linkTicket;
+  try {
+    const q = new URLSearchParams({ from, x0: r[0], y0: r[1], x1: r[2], y1: r[3] });
+    const { body } = await api(`/api/link?${q}`);
+    if (ticket !== linkTicket) return;
+    dst.showRegion(body.x0, body.y0, body.x1, body.y1);
+    $('image-viewport').dataset.linked = `${from}:${ticket}`;
+  } catch (e) {
+    // A region that images nothing in the other view: that view stays.
+  }
 }
 
 // ---- the pixel inspector ----
@@ -646,12 +687,21 @@ const inspectorRows = [
   ['x_m', 'map x (east), m'], ['y_m', 'map y (north), m'],
   ['scene_row', 'scene row'], ['scene_col', 'scene col'],
   ['elevation_m', 'elevation, m'], ['category_name', 'category'], ['category', 'category id'],
-  ['local_incidence_deg', 'local incidence, deg'], ['sigma0_db', 'sigma0, dB'],
+  ['local_incidence_deg', 'local incidence, deg'], ['sigma0_db', 'sigma0 (library), dB'],
   ['slant_range_m', 'slant range, m'], ['incidence_deg', 'incidence, deg'],
   ['incidence_flat_deg', 'incidence (flat), deg'], ['looks', 'N (looks)'],
   ['mean_power_w', 'mean power, W'], ['mean_power_dbw', 'mean power, dBW'],
   ['speckled_power_w', 'speckled power, W'], ['speckled_power_dbw', 'speckled power, dBW'],
   ['greytone', 'greytone'], ['flags', 'flags'],
+];
+// The slant pixel's calibrated readout (pixel.calibrated: the power over the
+// flat reference's radar equation, as sigma0_slant.tif), beside the watts.
+const calibratedRows = [
+  ['sigma0_db', 'sigma0 (calibrated), dB'], ['beta0_db', 'beta0, dB'],
+  ['gamma0_db', 'gamma0, dB'], ['speckled_sigma0_db', 'speckled sigma0, dB'],
+  ['incidence_deg', 'incidence at reference, deg'],
+  ['reference_height_m', 'calibration reference height, m'],
+  ['not_calibrated', 'calibration'],
 ];
 
 function fmtValue(v) {
@@ -672,19 +722,130 @@ async function inspect(view, x, y) {
     withDb(body.pixel);
     linkCursor(view, x, y, body);
     const rows = [];
-    const add = (obj, prefix) => {
-      for (const [key, label] of inspectorRows) {
+    const add = (obj, prefix, table = inspectorRows, keyPrefix = '') => {
+      for (const [key, label] of table) {
         const v = key.endsWith('_deg') && key.startsWith('l') && typeof obj[key] === 'number'
           ? obj[key].toFixed(6) : fmtValue(obj[key]);
-        if (key in obj) rows.push(`<tr><td>${prefix}${label}</td><td data-key="${key}">` +
-                                  `${v}</td></tr>`);
+        if (key in obj) rows.push(`<tr><td>${prefix}${label}</td>` +
+                                  `<td data-key="${keyPrefix}${key}">${v}</td></tr>`);
       }
     };
     add(body, '');
+    const slant = body.pixel || body;
+    if (slant.calibrated) add(slant.calibrated, '', calibratedRows, 'calibrated.');
     if (body.pixel) add(body.pixel, 'pixel ');
+    if (compare && slant.bin !== undefined) rows.push(...await compareRows(slant.bin, slant.line));
     $('inspector').innerHTML = rows.join('');
     showError('');
   } catch (e) {
+    showError(e.message);
+  }
+}
+
+// ---- comparing two runs (the slant view) ----
+// The inspector's rows for the compared runs at slant pixel (bin, line):
+// the earlier run's powers and the difference view's value (data-value: the
+// number unrounded).
+async function compareRows(bin, line) {
+  const c = compare;
+  const xy = `x=${bin}&y=${line}`;
+  try {
+    const [{ body: then }, { body: d }] = await Promise.all([
+      api(`/api/inspect?view=slant&run=${c.earlier}&${xy}`),
+      api(`/api/compare/pixel?earlier=${c.earlier}&quantity=${c.quantity}&${xy}`)]);
+    const row = (label, key, v) => `<tr><td>${label}</td><td data-key="${key}" ` +
+      `data-value="${v === null ? '' : v}">${fmtValue(v)}</td></tr>`;
+    return [row('earlier run', 'compare.earlier', then.run),
+            row('earlier mean power, W', 'compare.earlier_mean_power_w', then.mean_power_w),
+            row('earlier speckled power, W', 'compare.earlier_speckled_power_w',
+                then.speckled_power_w),
+            row(`difference (${c.quantity}), dB`, 'compare.difference_db', d.difference_db)];
+  } catch (e) {
+    return [`<tr><td>compare</td><td>${e.message}</td></tr>`];
+  }
+}
+
+// The earlier runs, newest first; one on another grid is listed too and
+// refused with the server's reason when chosen.
+async function refreshRuns() {
+  const sel = $('compare-run');
+  if (!run || run.kind === 'ppi') { sel.innerHTML = ''; return; }
+  const { body } = await api('/api/runs');
+  const keep = sel.value;
+  const earlier = body.runs.filter((k) => k.id !== body.current).reverse();
+  sel.innerHTML = earlier.map((k) => `<option value="${k.id}">${k.label}` +
+    `${k.comparable ? '' : ' (another grid)'}</option>`).join('');
+  const ids = earlier.map((k) => String(k.id));
+  const comparable = earlier.filter((k) => k.comparable).map((k) => String(k.id));
+  sel.value = ids.includes(keep) ? keep : (comparable[0] || ids[0] || '');
+}
+
+function applySwipe() {
+  // Left of the slider the current run, right of it the earlier one.
+  $('compare-image').style.clipPath = `inset(0 0 0 ${$('compare-swipe').value}%)`;
+}
+
+function drawDifferenceKey(c) {
+  const n = c.key.length - 1;
+  const stops = c.key.map((k, i) => `rgb(${k.rgb.join(',')}) ${((100 * i) / n).toFixed(1)}%`);
+  $('difference-bar').style.background = `linear-gradient(to right, ${stops.join(', ')})`;
+  $('difference-low').textContent = `${-c.range_db}`;
+  $('difference-high').textContent = `+${c.range_db}`;
+  $('difference-key').dataset.key = JSON.stringify(c.key);
+  $('difference-key').dataset.range = c.range_db;
+  $('difference-key').hidden = false;
+}
+
+async function showCompare() {
+  const mode = $('compare-mode').value;
+  const img = $('compare-image');
+  const diff = $('difference-image');
+  $('swipe-label').hidden = mode !== 'swipe';
+  img.classList.toggle('side', mode === 'side');
+  img.style.clipPath = '';
+  $('difference-key').hidden = true;
+  compare = null;
+  const off = () => { img.hidden = true; setOverlay(diff, ''); };
+  if (mode === 'off' || !run || run.kind === 'ppi') {
+    off();
+    $('compare-note').textContent = run && run.kind === 'ppi' && mode !== 'off'
+      ? 'a PPI run has no slant image to compare' : '';
+    return;
+  }
+  const earlier = $('compare-run').value;
+  if (!earlier) {
+    off();
+    $('compare-note').textContent = 'no earlier run yet: change the band (or anything but the ' +
+      'geometry) and compare the two';
+    return;
+  }
+  if (currentView() !== 'slant') { $('presentation').value = 'slant'; await showImages(); }
+  try {
+    const q = new URLSearchParams({ earlier, quantity: $('compare-quantity').value });
+    const { body } = await api(`/api/compare?${q}`);
+    compare = body;
+    if (mode === 'difference') {
+      img.hidden = true;
+      await setOverlay(diff, body.images.difference);
+      drawDifferenceKey(body);
+      $('compare-note').textContent = `10 log10(run ${body.current} / run ${body.earlier}) of ` +
+        `the ${body.quantity} power`;
+    } else {
+      await setOverlay(diff, '');
+      await loadImage(img, body.images.earlier);
+      img.hidden = false;
+      img.dataset.run = body.earlier;
+      if (mode === 'swipe') applySwipe();
+      const i = $('image');
+      if (mode === 'side' && imageView) imageView.showRegion(0, 0, 2 * i.naturalWidth + 2, i.naturalHeight);
+      $('compare-note').textContent = mode === 'side'
+        ? `left: ${body.current_label}; right: ${body.earlier_label}`
+        : `left of the slider: ${body.current_label}; right: ${body.earlier_label}`;
+    }
+    showError('');
+  } catch (e) {
+    off();
+    $('compare-note').textContent = e.message;
     showError(e.message);
   }
 }
@@ -998,10 +1159,15 @@ async function loadState() {
 }
 
 async function main() {
-  makeZoomable($('image-viewport'), $('image-stage'), $('image'),
-               (x, y) => inspect($('image').dataset.view || 'slant', x, y));
+  imageView = makeZoomable($('image-viewport'), $('image-stage'), $('image'),
+                           (x, y) => inspect($('image').dataset.view || 'slant', x, y), null,
+                           () => linkViews('slant'));
   sceneView = makeZoomable($('scene-viewport'), $('scene-stage'), $('scene'), onSceneClick,
-                           scenePaint);
+                           scenePaint, () => linkViews('scene'));
+  for (const id of ['compare-mode', 'compare-run', 'compare-quantity']) {
+    $(id).addEventListener('change', showCompare);
+  }
+  $('compare-swipe').addEventListener('input', applySwipe);
   for (const el of document.querySelectorAll('[data-radar], [data-top]')) {
     el.addEventListener(el.type === 'range' ? 'input' : 'change', onControl);
   }
@@ -1016,7 +1182,14 @@ async function main() {
       showError(e.message);
     }
   });
-  $('presentation').addEventListener('change', showImages);
+  $('presentation').addEventListener('change', async () => {
+    // Runs are compared on the slant view: another presentation ends it.
+    if (currentView() !== 'slant' && $('compare-mode').value !== 'off') {
+      $('compare-mode').value = 'off';
+      await showCompare();
+    }
+    showImages();
+  });
   for (const c of document.querySelectorAll('.overlay')) {
     c.addEventListener('change', () => { showImages(); showLegend(); });
   }

@@ -9,6 +9,7 @@
 
 #include "ris/geometry/scene_geometry_maps.h"
 #include "ris/image/geocode.h"
+#include "ris/image/radiometric_calibration.h"
 #include "ris/scene/geo_frame.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
@@ -49,6 +50,55 @@ nlohmann::json number(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nullptr;
 }
 
+// Why a run's pixels cannot be calibrated, in the words of the key to change
+// (run.cpp refuses --calibrated for the same reasons); empty when they can.
+std::string why_not_calibrated(const SlarSimulation& sim) {
+  if (sim.range_corrected) {
+    return "not calibrated: film.terms.range is false, so the pixels carry the reference "
+           "system's R^-4, not this radar's (set it true)";
+  }
+  if (sim.area_corrected) {
+    return "not calibrated: film.terms.area is false, so the pixels carry the reference "
+           "cell's area, not this radar's (set it true)";
+  }
+  if (sim.calibration.empty()) return "not calibrated: this run forms no calibration";
+  return "";
+}
+
+// The backscatter coefficients of slant pixel i in bin `bin`, as a calibrated
+// product carries them (ris/image/radiometric_calibration.h: P / P_1 over flat
+// ground at the reference height, MODEL.md section 3): sigma0, beta0 and
+// gamma0 in dB of the mean power, sigma0 linear, and the speckled pixel's
+// (what sigma0_slant.tif of `ris simulate --calibrated` holds). Or the reason
+// there are none.
+nlohmann::json calibrated_pixel(const SlarSimulation& sim, const SlarPictures& pic, std::size_t i,
+                                int bin) {
+  if (const std::string why = why_not_calibrated(sim); !why.empty()) {
+    return {{"not_calibrated", why}};
+  }
+  const SlantCalibration& cal = sim.calibration;
+  const auto b = static_cast<std::size_t>(bin);
+  if (!std::isfinite(cal.unit_power_w[b])) {
+    return {{"not_calibrated",
+             "not calibrated: no flat ground at the reference height lies at this range, or the "
+             "antenna's gain is 0 there"}};
+  }
+  const double mean = sim.image.mean_power_w[i];
+  const double speckled = pic.speckled_power_w[i];
+  const auto coefficient = [&](double power_w, Backscatter k) {
+    return power_w * calibration_factor(cal, k, bin);
+  };
+  return {{"reference_height_m", cal.reference_height_m},
+          {"incidence_deg", rad_to_deg(std::atan2(cal.sin_incidence[b], cal.cos_incidence[b]))},
+          {"sigma0", number(coefficient(mean, Backscatter::sigma0))},
+          {"sigma0_db", number(db(coefficient(mean, Backscatter::sigma0)))},
+          {"beta0_db", number(db(coefficient(mean, Backscatter::beta0)))},
+          {"gamma0_db", number(db(coefficient(mean, Backscatter::gamma0)))},
+          {"speckled_sigma0_db", number(db(coefficient(speckled, Backscatter::sigma0)))},
+          {"speckled_beta0_db", number(db(coefficient(speckled, Backscatter::beta0)))},
+          {"speckled_gamma0_db", number(db(coefficient(speckled, Backscatter::gamma0)))}};
+}
+
 // The slant image pixel (line, bin): its own values.
 nlohmann::json slant_pixel(const RunResult& run, int line, int bin) {
   const SlarSimulation& sim = slar_image_run(run)->sim;
@@ -67,7 +117,8 @@ nlohmann::json slant_pixel(const RunResult& run, int line, int bin) {
           {"mean_power_dbw", number(db(sim.image.mean_power_w[i]))},
           {"speckled_power_w", number(pic.speckled_power_w[i])},
           {"greytone", pic.slant_grey[i]},
-          {"flags", flags_json(sim.image.mask[i], false)}};
+          {"flags", flags_json(sim.image.mask[i], false)},
+          {"calibrated", calibrated_pixel(sim, pic, i, bin)}};
 }
 
 // A ground-range pixel (line, column j): its ground range over h_ref, its own
@@ -213,7 +264,11 @@ nlohmann::json inspect_pixel(const RunResult& run, const Sigma0Source& sigma0,
             {"north_m", g.north_m(y)},
             {"speckled_power_w", number(ppi->pictures.scope_power_w[i])},
             {"greytone", ppi->pictures.scope_grey[i]},
-            {"flags", flags_json(ppi->pictures.scope_mask[i], false)}};
+            {"flags", flags_json(ppi->pictures.scope_mask[i], false)},
+            {"calibrated",
+             {{"not_calibrated",
+               "not calibrated: a PPI scope has no calibration convention (use mode = "
+               "\"slar\" or \"sar\")"}}}};
   }
   const SlarRun* slar = slar_image_run(run);
   if (slar == nullptr) throw InputError("request", "view", "expected a SLAR, SAR or PPI run");

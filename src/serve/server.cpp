@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -122,6 +123,44 @@ int int_param(const httplib::Request& req, const std::string& key) {
   return v;
 }
 
+// A run id (1, 2, ...).
+std::uint64_t run_param(const httplib::Request& req, const std::string& key) {
+  const std::string text = req.get_param_value(key);
+  std::uint64_t v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || v == 0) {
+    throw InputError("request", key, "expected a run id (1, 2, ...), got \"" + text + "\"");
+  }
+  return v;
+}
+
+// A coordinate of a region (pixels, fractional).
+double coordinate_param(const httplib::Request& req, const std::string& key) {
+  const std::string text = req.get_param_value(key);
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v) ||
+      std::abs(v) > 1e9) {
+    throw InputError("request", key, "expected a pixel coordinate, got \"" + text + "\"");
+  }
+  return v;
+}
+
+// The difference view's symmetric range in dB: absent, the view's default
+// (0); else a number in (0, 100].
+double range_param(const httplib::Request& req) {
+  if (!req.has_param("range_db")) return 0.0;
+  const std::string text = req.get_param_value("range_db");
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !(v > 0.0) ||
+      v > 100.0) {
+    throw InputError("request", "range_db",
+                     "expected a range in dB, above 0 and at most 100, got \"" + text + "\"");
+  }
+  return v;
+}
+
 std::size_t index_param(const httplib::Request& req) {
   std::size_t v = 0;
   const std::string text = req.matches[1];
@@ -229,10 +268,23 @@ struct HttpServer::Impl {
              guarded([&s](const auto&, auto& res) { send_json(res, s.histogram()); }));
     http.Get("/api/sigma0",
              guarded([&s](const auto&, auto& res) { send_json(res, s.sigma0_chart()); }));
+    // run=<id>: a kept earlier run's slant pixel (comparing runs).
     http.Get("/api/inspect", guarded([&s](const httplib::Request& req, auto& res) {
-               send_json(res, s.inspect(req.get_param_value("view"), int_param(req, "x"),
-                                        int_param(req, "y")));
+               const int x = int_param(req, "x");
+               const int y = int_param(req, "y");
+               const std::string view = req.get_param_value("view");
+               if (req.has_param("run")) {
+                 const std::uint64_t id = run_param(req, "run");
+                 if (view != "slant") {
+                   throw InputError("request", "view",
+                                    "an earlier run is inspected on its slant view");
+                 }
+                 send_json(res, s.inspect_kept(id, x, y));
+                 return;
+               }
+               send_json(res, s.inspect(view, x, y));
              }));
+    add_compare_routes();
     http.Post("/api/products",
               with_body([&s](const auto&, auto& res,
                              const std::string&) { send_json(res, s.write_products()); },
@@ -253,6 +305,38 @@ struct HttpServer::Impl {
                res.set_header("Content-Disposition",
                               "attachment; filename=\"" + path->filename().string() + "\"");
                res.set_content(read_binary(*path), "application/octet-stream");
+             }));
+  }
+
+  // Comparing the current run with a kept earlier one (docs/serve.md,
+  // "Comparing two runs"); reads only, through the same guards.
+  void add_compare_routes() {
+    Session& s = session;
+    http.Get("/api/runs", guarded([&s](const auto&, auto& res) { send_json(res, s.runs()); }));
+    http.Get(R"(/api/runs/(\d{1,12})/slant\.png)",
+             guarded([&s](const httplib::Request& req, auto& res) {
+               std::uint64_t id = 0;
+               const std::string text = req.matches[1];
+               std::from_chars(text.data(), text.data() + text.size(), id);  // \d+ matched
+               send_png(res, s.kept_slant_png(id));
+             }));
+    http.Get("/api/link", guarded([&s](const httplib::Request& req, auto& res) {
+               send_json(res, s.link(req.get_param_value("from"), coordinate_param(req, "x0"),
+                                     coordinate_param(req, "y0"), coordinate_param(req, "x1"),
+                                     coordinate_param(req, "y1")));
+             }));
+    http.Get("/api/compare", guarded([&s](const httplib::Request& req, auto& res) {
+               send_json(res, s.compare(run_param(req, "earlier"), req.get_param_value("quantity"),
+                                        range_param(req)));
+             }));
+    http.Get("/api/compare/difference.png", guarded([&s](const httplib::Request& req, auto& res) {
+               send_png(res, s.difference_png(run_param(req, "earlier"),
+                                              req.get_param_value("quantity"), range_param(req)));
+             }));
+    http.Get("/api/compare/pixel", guarded([&s](const httplib::Request& req, auto& res) {
+               send_json(res,
+                         s.compare_pixel(run_param(req, "earlier"), req.get_param_value("quantity"),
+                                         int_param(req, "x"), int_param(req, "y")));
              }));
   }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <regex>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "ris/backscatter/library.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/config_table.h"
+#include "ris/io/raster_io.h"
 #include "ris/io/zip_archive.h"
 #include "ris/scene/scene_builder.h"
 #include "ris/scene/scene_io.h"
@@ -24,7 +26,9 @@
 #include "ris/serve/json_toml.h"
 #include "ris/serve/pixel_inspector.h"
 #include "ris/serve/radar_overrides.h"
+#include "ris/serve/run_compare.h"
 #include "ris/serve/run_views.h"
+#include "ris/serve/view_link.h"
 #include "ris/sim/run.h"
 #include "ris/util/error.h"
 #include "ris/util/path_exists.h"
@@ -125,6 +129,7 @@ Session::Session(ServeInputs inputs) : inputs_(std::move(inputs)) {
       run(scene_, radar_, radar_path_, sigma0_, backscatter_files_.at(backscatter_name_), seed_);
   last_seconds_ = result_.seconds;
   run_id_ = 1;
+  history_.keep(run_id_, result_);
   work_dir_ = make_private_folder(inputs_.work_parent);
 }
 
@@ -311,6 +316,7 @@ SimulateOutcome Session::simulate(const std::string& body) {
   radar_ = radar;
   seed_ = static_cast<std::uint64_t>(seed);
   ++run_id_;
+  history_.keep(run_id_, result_);
   last_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   out.run = run_summary();
   return out;
@@ -334,6 +340,7 @@ nlohmann::json Session::apply_scene(SceneState next, bool push_undo) {
   last_film_only_ = false;
   last_seconds_ = result_.seconds;
   ++run_id_;
+  history_.keep(run_id_, result_);
   nlohmann::json j = {{"run", run_summary()}, {"undo_depth", undo_.size()}};
   if (scene_.editable) {
     j["objects"] = toml_to_json(scene_.doc).value("object", nlohmann::json::array());
@@ -555,6 +562,118 @@ nlohmann::json Session::sigma0_chart() const {
 nlohmann::json Session::inspect(const std::string& view, int x, int y) const {
   std::lock_guard lock(mutex_);
   return inspect_pixel(result_, *sigma0_, view, x, y);
+}
+
+nlohmann::json Session::link(const std::string& from, double x0, double y0, double x1,
+                             double y1) const {
+  std::lock_guard lock(mutex_);
+  return linked_region(result_, from, x0, y0, x1, y1);
+}
+
+nlohmann::json Session::runs() const {
+  std::lock_guard lock(mutex_);
+  return history_.list(run_id_);
+}
+
+std::vector<std::uint8_t> Session::kept_slant_png(std::uint64_t id) const {
+  std::lock_guard lock(mutex_);
+  const KeptRun& k = history_.get(id);
+  return encode_png(k.grey.data(), k.grid.bins, k.grid.lines, 1);
+}
+
+nlohmann::json Session::inspect_kept(std::uint64_t id, int x, int y) const {
+  std::lock_guard lock(mutex_);
+  const KeptRun& k = history_.get(id);
+  if (x < 0 || y < 0 || x >= k.grid.bins || y >= k.grid.lines) {
+    throw InputError("request", "x, y",
+                     fmt::format("pixel ({}, {}) is outside run {}'s slant view of {} x {} "
+                                 "pixels",
+                                 x, y, id, k.grid.bins, k.grid.lines));
+  }
+  const std::size_t i = static_cast<std::size_t>(y) * k.grid.bins + x;
+  const auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nullptr; };
+  const double mean = k.mean_power_w[i];
+  return {{"view", "slant"},
+          {"run", id},
+          {"label", k.label},
+          {"line", y},
+          {"bin", x},
+          {"mean_power_w", finite(mean)},
+          {"mean_power_dbw", finite(mean > 0.0 ? 10.0 * std::log10(mean) : NAN)},
+          {"speckled_power_w", finite(k.speckled_power_w[i])},
+          {"greytone", k.grey[i]}};
+}
+
+std::pair<const KeptRun*, const KeptRun*> Session::compared(std::uint64_t earlier) const {
+  const KeptRun* now = nullptr;
+  try {
+    now = &history_.get(run_id_);
+  } catch (const InputError&) {
+    throw InputError("request", "earlier",
+                     "the current run has no slant image to compare (a PPI run): compare SLAR "
+                     "or SAR runs");
+  }
+  const KeptRun& then = history_.get(earlier);
+  check_same_grid(*now, then);
+  return {now, &then};
+}
+
+nlohmann::json Session::compare(std::uint64_t earlier, const std::string& quantity,
+                                double range_db) const {
+  const CompareQuantity q = parse_compare_quantity(quantity);
+  std::lock_guard lock(mutex_);
+  const auto [now, then] = compared(earlier);
+  const Difference d = difference_db(*now, *then, q);
+  const double range = range_db > 0.0 ? range_db : default_range_db(d);
+  const std::string name = compare_quantity_name(q);
+  return {{"current", now->id},
+          {"earlier", then->id},
+          {"current_label", now->label},
+          {"earlier_label", then->label},
+          {"quantity", name},
+          {"range_db", range},
+          {"key", difference_key(range)},
+          {"images",
+           {{"current", fmt::format("/api/runs/{}/slant.png", now->id)},
+            {"earlier", fmt::format("/api/runs/{}/slant.png", then->id)},
+            {"difference",
+             fmt::format("/api/compare/difference.png?earlier={}&quantity={}&range_db={}&run={}",
+                         then->id, name, range, now->id)}}}};
+}
+
+std::vector<std::uint8_t> Session::difference_png(std::uint64_t earlier,
+                                                  const std::string& quantity,
+                                                  double range_db) const {
+  const CompareQuantity q = parse_compare_quantity(quantity);
+  std::lock_guard lock(mutex_);
+  const auto [now, then] = compared(earlier);
+  const Difference d = difference_db(*now, *then, q);
+  return ris::difference_png(d, range_db > 0.0 ? range_db : default_range_db(d));
+}
+
+nlohmann::json Session::compare_pixel(std::uint64_t earlier, const std::string& quantity, int x,
+                                      int y) const {
+  const CompareQuantity q = parse_compare_quantity(quantity);
+  std::lock_guard lock(mutex_);
+  const auto [now, then] = compared(earlier);
+  if (x < 0 || y < 0 || x >= now->grid.bins || y >= now->grid.lines) {
+    throw InputError("request", "x, y",
+                     fmt::format("pixel ({}, {}) is outside the slant view of {} x {} pixels", x, y,
+                                 now->grid.bins, now->grid.lines));
+  }
+  const std::size_t i = static_cast<std::size_t>(y) * now->grid.bins + x;
+  const auto& a = q == CompareQuantity::mean ? now->mean_power_w : now->speckled_power_w;
+  const auto& b = q == CompareQuantity::mean ? then->mean_power_w : then->speckled_power_w;
+  const double d = pixel_difference_db(a[i], b[i]);
+  const auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nullptr; };
+  return {{"current", now->id},
+          {"earlier", then->id},
+          {"quantity", compare_quantity_name(q)},
+          {"line", y},
+          {"bin", x},
+          {"current_power_w", finite(a[i])},
+          {"earlier_power_w", finite(b[i])},
+          {"difference_db", finite(d)}};
 }
 
 }  // namespace ris

@@ -8,7 +8,9 @@ scene picture's colours, switch every overlay on and off (nothing drawn when
 off) and through the presentations (no stale overlay), add a box and see its
 shadow appear (written in the scene's feet), save the scene and read it back
 with `ris scene info`, upload a DEM and simulate it (latitude in the
-inspector within the DEM), and load the page without Leaflet and Chart.js
+inspector within the DEM), zoom the slant view with the scene and back
+(linked through the geocoding), compare two runs in two bands (side by side,
+swipe, and the difference view's value against the inspector's), and load the page without Leaflet and Chart.js
 (plain images and a note). Screenshots go to OUT_DIR as artefacts.
 
 Exit 77 (ctest: skipped) with a message when Chromium or Selenium is missing.
@@ -266,6 +268,186 @@ def check_linked_zoom(driver):
     double_click(driver, "scene-viewport")
 
 
+def api_json(driver, path):
+    """GET path from the page (same origin), as JSON."""
+    return driver.execute_async_script(
+        "const done = arguments[arguments.length - 1];"
+        "fetch(arguments[0]).then((r) => r.json()).then(done, (e) => done({error: String(e)}));",
+        path)
+
+
+def set_frequency(driver, ghz):
+    """Types a frequency as a person would; returns the new run's id."""
+    from selenium.webdriver.common.keys import Keys
+    before = image_run(driver)
+    box = driver.find_element("id", "frequency")
+    box.clear()
+    box.send_keys(str(ghz), Keys.TAB)
+    return wait_until(lambda: (r := image_run(driver)) and r != before and r, 60,
+                      f"the run at {ghz} GHz")
+
+
+def image_rect(driver, element_id):
+    return driver.execute_script(
+        "const r = document.getElementById(arguments[0]).getBoundingClientRect();"
+        "return [r.left, r.top, r.width, r.height];", element_id)
+
+
+def check_compare(driver, out_dir):
+    """Two runs in two bands on the same grid: side by side shows both, the
+    swipe shows the earlier run clipped at its slider, and the difference
+    view's value at a pixel is 10 log10 of the two runs' powers there (read
+    through the inspector API), drawn in its key's colour."""
+    choose(driver, "presentation", "slant")
+    earlier = set_frequency(driver, 9.6)
+    current = set_frequency(driver, 13.5)
+    wait_until(lambda: driver.execute_script(
+        "return Array.from(document.getElementById('compare-run').options)"
+        "  .some((o) => o.value === arguments[0]);", earlier), 30, "the earlier run listed")
+    choose(driver, "compare-run", earlier)
+    choose(driver, "compare-mode", "side")
+    wait_until(lambda: shown(driver, "compare-image") and driver.execute_script(
+        "const i = document.getElementById('compare-image');"
+        "return i.complete && i.naturalWidth > 0 && i.dataset.run === arguments[0];", earlier),
+        30, "the earlier run beside the current one")
+    now, then = image_rect(driver, "image"), image_rect(driver, "compare-image")
+    assert then[0] >= now[0] + now[2] - 1 and abs(then[2] - now[2]) < 1, (now, then)
+    sizes = driver.execute_script(
+        "const a = document.getElementById('image'), b = document.getElementById('compare-image');"
+        "return [a.naturalWidth, a.naturalHeight, b.naturalWidth, b.naturalHeight];")
+    assert sizes[:2] == sizes[2:], sizes
+    driver.save_screenshot(os.path.join(out_dir, "7-compare-side.png"))
+    choose(driver, "compare-mode", "swipe")
+    wait_until(lambda: "inset" in driver.execute_script(
+        "return document.getElementById('compare-image').style.clipPath;"), 10, "the swipe")
+    then = image_rect(driver, "compare-image")
+    now = image_rect(driver, "image")
+    assert max(abs(a - b) for a, b in zip(now, then)) < 1, (now, then)
+    driver.save_screenshot(os.path.join(out_dir, "8-compare-swipe.png"))
+    choose(driver, "compare-mode", "difference")
+    wait_until(lambda: shown(driver, "difference-image") and shown(driver, "difference-key")
+               and driver.execute_script(
+                   "const i = document.getElementById('difference-image');"
+                   "return i.complete && i.naturalWidth > 0;"), 30, "the difference view")
+    key = driver.execute_script(
+        "const k = document.getElementById('difference-key');"
+        "return [JSON.parse(k.dataset.key), Number(k.dataset.range)];")
+    stops, range_db = key
+    assert len(stops) == 11 and stops[0]["db"] == -range_db and stops[-1]["db"] == range_db, key
+    driver.execute_script("document.getElementById('inspector').innerHTML = '';")
+    col, row = 120, 350
+    click_pixel(driver, "image", col, row)
+
+    def difference_row():
+        return driver.execute_script(
+            "const td = document.querySelector('#inspector td[data-key=\"compare.difference_db\"]');"
+            "const b = document.querySelector('#inspector td[data-key=\"bin\"]');"
+            "const l = document.querySelector('#inspector td[data-key=\"line\"]');"
+            "return td && b && l ? [td.dataset.value, Number(b.textContent),"
+            "                       Number(l.textContent)] : null;")
+    value, b, l = wait_until(difference_row, 30, "the difference in the inspector")
+    xy = f"x={b}&y={l}"
+    a = api_json(driver, f"/api/inspect?view=slant&{xy}")
+    e = api_json(driver, f"/api/inspect?view=slant&run={earlier}&{xy}")
+    expected = 10 * __import__("math").log10(a["mean_power_w"] / e["mean_power_w"])
+    assert abs(float(value) - expected) <= 1e-6 * max(1.0, abs(expected)), (value, expected)
+    # The difference picture's colour there is the key's at that value.
+    rgb = driver.execute_script(
+        "const i = document.getElementById('difference-image');"
+        "const c = document.createElement('canvas'); c.width = i.naturalWidth;"
+        "c.height = i.naturalHeight; const g = c.getContext('2d'); g.drawImage(i, 0, 0);"
+        "return Array.from(g.getImageData(arguments[0], arguments[1], 1, 1).data);", b, l)
+    t = min(10.0, max(0.0, 5 + 5 * expected / range_db))
+    k = min(9, int(t))
+    want = [stops[k]["rgb"][c] + (t - k) * (stops[k + 1]["rgb"][c] - stops[k]["rgb"][c])
+            for c in range(3)]
+    assert rgb[3] == 255 and max(abs(x - y) for x, y in zip(rgb, want)) <= 1, (rgb, want)
+    print(f"compare: run {current} against run {earlier}: pixel ({b}, {l}) difference "
+          f"{float(value):.4f} dB (inspector {expected:.4f} dB), colour {rgb[:3]} "
+          f"(key {[round(x) for x in want]}), range +-{range_db} dB")
+    driver.save_screenshot(os.path.join(out_dir, "9-compare-difference.png"))
+    choose(driver, "compare-mode", "off")
+    wait_until(lambda: not shown(driver, "difference-image") and not shown(driver, "compare-image"),
+               10, "compare off")
+
+
+def wheel(driver, viewport_id, img_id, clicks):
+    """Zooms a viewport in by `clicks` wheel steps at a point of its picture
+    off the picture's centre."""
+    driver.execute_script(
+        "const v = document.getElementById(arguments[0]).getBoundingClientRect();"
+        "const i = document.getElementById(arguments[1]).getBoundingClientRect();"
+        "const x0 = Math.max(v.left, i.left), x1 = Math.min(v.right, i.right);"
+        "const y0 = Math.max(v.top, i.top), y1 = Math.min(v.bottom, i.bottom);"
+        "const e = document.getElementById(arguments[0]);"
+        "for (let k = 0; k < arguments[2]; ++k)"
+        "  e.dispatchEvent(new WheelEvent('wheel', {deltaY: -100, bubbles: true,"
+        "    cancelable: true, clientX: x0 + 0.45 * (x1 - x0), clientY: y0 + 0.55 * (y1 - y0)}));",
+        viewport_id, img_id, clicks)
+
+
+def view_centre(driver, viewport_id, img_id):
+    """The image pixel at the viewport's centre and the visible span."""
+    return driver.execute_script(
+        "const v = document.getElementById(arguments[0]).getBoundingClientRect();"
+        "const i = document.getElementById(arguments[1]), r = i.getBoundingClientRect();"
+        "return [(v.left + v.width / 2 - r.left) / r.width * i.naturalWidth,"
+        "        (v.top + v.height / 2 - r.top) / r.height * i.naturalHeight,"
+        "        v.width / r.width * i.naturalWidth, v.height / r.height * i.naturalHeight];",
+        viewport_id, img_id)
+
+
+def check_slant_zoom(driver):
+    """The slant view zooms with the scene (and the scene with it): zoomed in
+    on one, the other's centre is the place the centre of the first images,
+    by the inspector's geocoding; its orientation is labelled."""
+    choose(driver, "presentation", "slant")
+    wait_until(lambda: driver.execute_script(
+        "return document.getElementById('image').dataset.view") == "slant", 30, "the slant view")
+    label = driver.find_element("id", "image-orientation").text
+    assert "flight" in label and "slant range" in label and "linked" in label, label
+    for source, target in (("scene", "slant"), ("slant", "scene")):
+        src_vp, src_img = (("scene-viewport", "scene") if source == "scene"
+                           else ("image-viewport", "image"))
+        dst_vp, dst_img = (("image-viewport", "image") if source == "scene"
+                           else ("scene-viewport", "scene"))
+        before = driver.execute_script(
+            "return document.getElementById('image-viewport').dataset.linked || '';")
+        wheel(driver, src_vp, src_img, 5)
+        wait_until(lambda: driver.execute_script(
+            "return (document.getElementById('image-viewport').dataset.linked || '')"
+            "  .startsWith(arguments[0] + ':') && document.getElementById('image-viewport')"
+            "  .dataset.linked !== arguments[1];", source, before), 30, f"{target} to follow")
+        sx, sy, _, _ = view_centre(driver, src_vp, src_img)
+        dx, dy, dw, dh = view_centre(driver, dst_vp, dst_img)
+        full = driver.execute_script(
+            "const i = document.getElementById(arguments[0]);"
+            "return [i.naturalWidth, i.naturalHeight];", dst_img)
+        assert dw < 0.8 * full[0] or dh < 0.8 * full[1], ("not zoomed", dw, dh, full)
+        if source == "scene":
+            cell = api_json(driver, f"/api/inspect?view=scene&x={int(sx)}&y={int(sy)}")
+            assert "pixel" in cell, (sx, sy, cell)
+            want = (cell["pixel"]["bin"], cell["pixel"]["line"])
+            got = (dx, dy)
+        else:
+            px = api_json(driver, f"/api/inspect?view=slant&x={int(sx)}&y={int(sy)}")
+            want = (px["scene_col"], px["scene_row"])
+            got = (dx, dy)
+        # Within a sixth of the span shown (the regions are bounding boxes
+        # of a sampled mapping) and a few pixels.
+        assert abs(got[0] - want[0]) <= dw / 6 + 3 and abs(got[1] - want[1]) <= dh / 6 + 3, \
+            (source, got, want, dw, dh)
+        print(f"slant zoom: {source} centre ({sx:.1f}, {sy:.1f}) -> {target} centre "
+              f"({got[0]:.1f}, {got[1]:.1f}), geocoded ({want[0]}, {want[1]}), "
+              f"span {dw:.0f} x {dh:.0f}")
+    # Both back to the whole picture, unlinked (a linked reset would fit
+    # one to the other's footprint).
+    driver.find_element("id", "link-zoom").click()
+    double_click(driver, "scene-viewport")
+    double_click(driver, "image-viewport")
+    driver.find_element("id", "link-zoom").click()
+
+
 def double_click(driver, element_id):
     from selenium.webdriver.common.action_chains import ActionChains
     ActionChains(driver).double_click(driver.find_element("id", element_id)).perform()
@@ -378,6 +560,8 @@ def main():
         check_map_furniture(driver, rows)
         check_overlays(driver)
         check_linked_zoom(driver)
+        check_slant_zoom(driver)
+        check_compare(driver, out_dir)
 
         # A box at the scene's centre (Add box), then its shadow: east of it,
         # as the radar looks east. Check the cell before and after.

@@ -2,7 +2,11 @@
 //
 // On the slant image (x: range bin, y: azimuth line): slant range, the
 // incidence over a flat datum, N, mean and speckled power, greytone and the
-// pixel's flags. On the ground-range image (x: ground pixel): its ground
+// pixel's flags, and "calibrated": the pixel's sigma0, beta0 and gamma0 (dB,
+// of the mean and of the speckled power) as `ris simulate --calibrated`
+// writes them (ris/image/radiometric_calibration.h), or {"not_calibrated":
+// "not calibrated: <why>"} (a PPI run; film.terms.range or .area false). On
+// the ground-range image (x: ground pixel): its ground
 // range, greytone and flags, and the slant pixel at its range. On the scene or geocoded grid (x:
 // column, y: row): the cell's elevation, category, flags, local incidence and sigma0 there, its
 // slant range and incidence from the track, and the slant pixel it maps to (geocode_pixel) with

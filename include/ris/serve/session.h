@@ -34,6 +34,7 @@
 #include "ris/scene/cultural_object.h"
 #include "ris/scene/scene.h"
 #include "ris/serve/product_folders.h"
+#include "ris/serve/run_history.h"
 #include "ris/sim/run.h"
 
 namespace ris {
@@ -131,6 +132,27 @@ class Session {
   nlohmann::json sigma0_chart() const;
   nlohmann::json inspect(const std::string& view, int x, int y) const;
 
+  // Comparing runs (ris/serve/run_history.h, run_compare.h; docs/serve.md,
+  // "Comparing two runs"). The last SLAR and SAR runs are kept (their slant
+  // images); runs() lists them against the current run. A kept run's slant
+  // greytones as PNG, and its slant pixel (x bin, y line) as the inspector
+  // reads it (the current run's id: inspect("slant", x, y)).
+  // The linked zoom's region (ris/serve/view_link.h).
+  nlohmann::json link(const std::string& from, double x0, double y0, double x1, double y1) const;
+  nlohmann::json runs() const;
+  std::vector<std::uint8_t> kept_slant_png(std::uint64_t id) const;
+  nlohmann::json inspect_kept(std::uint64_t id, int x, int y) const;
+  // The current run against kept run `earlier` (InputError when it is not
+  // kept or not on the same grid): {"current", "earlier", "quantity",
+  // "range_db", "key", "images"}; range_db 0 is the view's default. The
+  // difference view as PNG, and one pixel's difference (its "difference_db"
+  // and both runs' powers).
+  nlohmann::json compare(std::uint64_t earlier, const std::string& quantity, double range_db) const;
+  std::vector<std::uint8_t> difference_png(std::uint64_t earlier, const std::string& quantity,
+                                           double range_db) const;
+  nlohmann::json compare_pixel(std::uint64_t earlier, const std::string& quantity, int x,
+                               int y) const;
+
  private:
   struct SceneState {
     std::uint64_t version = 0;  // new for every edit: the scene picture's cache key
@@ -156,6 +178,8 @@ class Session {
                 const std::shared_ptr<const Sigma0Source>& sigma0,
                 const std::string& backscatter_path, std::uint64_t seed) const;
   nlohmann::json run_summary() const;
+  // The current run (kept) and `earlier` on its grid, under mutex_.
+  std::pair<const KeptRun*, const KeptRun*> compared(std::uint64_t earlier) const;
   // Runs an edited scene and makes it current (the old one pushed on the
   // undo stack when push_undo).
   nlohmann::json apply_scene(SceneState next, bool push_undo);
@@ -186,6 +210,7 @@ class Session {
   std::uint64_t seed_ = 1;
   RunResult result_;
   std::uint64_t run_id_ = 0;
+  RunHistory history_;  // the last runs' slant images, for comparing
   bool last_film_only_ = false;
   double last_seconds_ = 0.0;  // the last run or re-render, request parsing included
   std::vector<std::string> warnings_;
