@@ -13,6 +13,7 @@
 #include "ris/image/greytone_terms.h"
 #include "ris/image/speckle.h"
 #include "ris/sensor/elevation_gain.h"
+#include "ris/sensor/track_view.h"
 #include "ris/sim/radiometry_setup.h"
 #include "ris/sim/slar_channels.h"
 #include "ris/sim/slar_line_blocks.h"
@@ -173,6 +174,7 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
   // power), and when the lines are not one per cell row or column (the
   // scene maps are then made from it).
   sim.track = resolve_track(radar.track, scene, radar.source_file);
+  check_scene_in_view(radar.track, sim.track, scene, radar.source_file);
   const SlarGeometry layout = slar_geometry_layout(scene, sim.track, radar.azimuth_line_spacing_m);
   const bool coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
   for (std::size_t c = 1; c < nc; ++c) {
