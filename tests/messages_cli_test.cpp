@@ -118,6 +118,31 @@ TEST(MessagesCli, AnAltitudeAtOrBelowTheTerrainNamesAltitude) {
   EXPECT_EQ(SmallRun(track, "", 2999.0f).run().exit_code, 0);
 }
 
+TEST(MessagesCli, ASwathOverLessThanHalfTheSceneIsWarnedOf) {
+  // A 3 us sweep: slant range 5007 .. 5457 m, ground 4009 .. 4558 m of the
+  // scene's 4000 .. 6000 m (MODEL.md section 2), 55 of 200 columns.
+  const std::string track = "altitude = \"3000 m\"\nnear_edge_distance = \"4000 m\"\n";
+  const std::string narrow = "sweep_delay = \"33.4 us\"\nsweep_length = \"3 us\"\n";
+  const std::string said =
+      "the swath images 0.5 km of the scene's 2.0 km across track (near side): 28 % of its "
+      "cells, on flat ground at the reference height 0 m; widen sweep_length or move the track";
+  for (const char* how : {"", "--stream"}) {
+    const SmallRun run(track, narrow);
+    const auto r = run.run(how);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_THAT(r.output, HasSubstr(said)) << how;
+    // Said, but not written into metadata.json (the run summary's
+    // warnings hold it: RunSimulation.ASwathOverPartOfTheSceneIsASummaryWarning).
+    EXPECT_THAT(test::read_file(run.dir / "out" / "metadata.json"),
+                Not(HasSubstr("the swath images")))
+        << how;
+  }
+  // The default 10 us sweep images 88 % of it: nothing said.
+  const auto wide = SmallRun(track).run();
+  EXPECT_EQ(wide.exit_code, 0) << wide.output;
+  EXPECT_THAT(wide.output, Not(HasSubstr("the swath images")));
+}
+
 TEST(MessagesCli, MisspeltCommandsAreNamedWithTheNearestOne) {
   auto r = test::run_ris("simulat --quiet");
   EXPECT_EQ(r.exit_code, 2) << r.output;
@@ -181,6 +206,25 @@ TEST(MessagesCli, ABareFrequencyIsNamedWithItsUnit) {
   EXPECT_THAT(r.output, HasSubstr("'frequency': 8.6 Hz is outside"));
   EXPECT_THAT(r.output, HasSubstr("a bare number is read in Hz"));
   EXPECT_THAT(r.output, HasSubstr("\"9.6 GHz\""));
+  EXPECT_THAT(r.output, HasSubstr("the units accepted: Hz, kHz, MHz, GHz"));
+}
+
+TEST(MessagesCli, AFrequencyOutsideTheImagingRadarBandsNamesFrequency) {
+  test::TempDir dir;
+  for (const char* f : {"\"99 MHz\"", "\"101 GHz\"", "8.6e12"}) {
+    const auto r = test::run_ris("radar info " + q(radar_edited(dir, "frequency = \"8.6 GHz\"",
+                                                                std::string("frequency = ") + f)));
+    EXPECT_EQ(r.exit_code, 1) << f << r.output;
+    EXPECT_THAT(r.output, HasSubstr("'frequency': "));
+    EXPECT_THAT(r.output, HasSubstr("is outside 100 MHz .. 100 GHz, the band of the imaging "
+                                    "radars ris simulates (P to W band)"));
+  }
+  // The bounds themselves are radars (P band's edge, W band's).
+  for (const char* f : {"\"100 MHz\"", "\"100 GHz\"", "\"435 MHz\"", "94e9"}) {
+    const auto r = test::run_ris("radar info " + q(radar_edited(dir, "frequency = \"8.6 GHz\"",
+                                                                std::string("frequency = ") + f)));
+    EXPECT_EQ(r.exit_code, 0) << f << r.output;
+  }
 }
 
 }  // namespace

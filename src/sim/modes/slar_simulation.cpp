@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "ris/backscatter/sigma0_lut.h"
+#include "ris/geometry/swath_coverage.h"
 #include "ris/image/greytone.h"
 #include "ris/image/greytone_image.h"
 #include "ris/image/greytone_terms.h"
@@ -222,6 +223,9 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
   }
   // SAR windows, resolution warnings and thermal noise (as a streamed run).
   for (std::size_t c = 0; c < nc; ++c) complete_slar_setup(sims[c], rs[c], scene);
+  // Less than half of the scene in the swath: said (the channels share it).
+  if (auto w = swath_coverage_warning(swath_coverage(sim.track, scene, rs[0].imaging.range, h_ref)))
+    sim.summary_warnings.push_back(*w);
   check_point_targets_on_scene(options.targets, scene);
   options.report("geometry + image formation + scene maps (line engine)", 0.4);
   SlarEngineKeep keep;
