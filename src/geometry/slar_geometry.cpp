@@ -182,11 +182,14 @@ void check_terrain_below_sensor(const Scene& scene, double altitude_m, const std
 void check_terrain_below_sensor(float max_h, int r, int c, double altitude_m,
                                 const std::string& file) {
   if (r >= 0 && double(max_h) >= altitude_m) {
-    throw InputError(file, "altitude",
+    // The whole scene's highest cell, not only the cells under the track:
+    // a side-looking radar looks down on every cell it images.
+    throw InputError(file, "track.altitude",
                      fmt::format("the terrain reaches {:.1f} m (scene row {}, column {}), at or "
                                  "above the sensor altitude {:.1f} m; expected an altitude above "
-                                 "the highest terrain",
-                                 max_h, r, c, altitude_m));
+                                 "{:.1f} m, the scene's highest terrain (is the altitude's unit "
+                                 "right: \"3000 m\" or \"10000 ft\"?)",
+                                 max_h, r, c, altitude_m, max_h));
   }
 }
 

@@ -240,7 +240,7 @@ TEST(SlarGeometry, TerrainAtOrAboveTheSensorIsAnInputError) {
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "radar.toml");
-    EXPECT_EQ(e.key(), "altitude");
+    EXPECT_EQ(e.key(), "track.altitude");
     EXPECT_NE(std::string(e.what()).find("row 2, column 3"), std::string::npos) << e.what();
   }
 }

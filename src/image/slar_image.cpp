@@ -9,6 +9,7 @@
 
 #include "kernels/image/slar_element.h"
 #include "ris/image/slar_azimuth_integrator.h"
+#include "ris/image/swath_miss.h"
 #include "ris/util/error.h"
 #include "ris/util/units.h"
 
@@ -183,11 +184,7 @@ SlarImage form_slar_image(const SlarGeometry& g, const Sigma0Lut& lut, const Sla
       r_min = std::min(r_min, g.slant_range_m[i]);
       r_max = std::max(r_max, g.slant_range_m[i]);
     }
-    throw InputError(radar_file, "sweep_delay",
-                     fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the scene, "
-                                 "which spans slant range {:.1f} to {:.1f} m; expected a sweep "
-                                 "delay and length (or near range and range bins) that overlap it",
-                                 p.range.near_m, p.range.far_m(), r_min, r_max));
+    throw_swath_misses_scene(radar_file, p.range, r_min, r_max, "track");
   }
 
   prof.samples_in_swath = in_swath;

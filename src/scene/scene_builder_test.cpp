@@ -388,6 +388,19 @@ void expect_input_error(const std::string& text, const std::string& key,
   }
 }
 
+// Enum values without regard to case, as a radar's (issue 38): an object's
+// type too; a misspelt one is named with the nearest.
+TEST(SceneBuilder, ObjectTypesIgnoreCaseAndSuggest) {
+  const std::string g = grid(50);
+  const std::string box = "x = 10\ny = 10\nlength = 8\nwidth = 8\nheight = 3\ncategory = 2\n";
+  const Scene lower = build_text(g + "[[object]]\ntype = 'box'\n" + box);
+  const Scene mixed = build_text(g + "[[object]]\ntype = 'Box'\n" + box);
+  EXPECT_EQ(lower.elevation_m, mixed.elevation_m);
+  EXPECT_EQ(lower.category, mixed.category);
+  expect_input_error(g + "[[object]]\ntype = 'boxx'\n" + box, "object[0].type",
+                     "unknown object type \"boxx\" (did you mean \"box\"?)");
+}
+
 TEST(SceneBuilder, BadInputNamesFileAndKey) {
   const std::string g = grid(50);
   expect_input_error(g + "[[object]]\ntype = 'cone'\n", "object[0].type", "unknown object type");

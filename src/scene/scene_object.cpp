@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "ris/util/error.h"
+#include "ris/util/spelling.h"
 #include "ris/util/units.h"
 #include "scene/objects/object_types.h"
 
@@ -72,19 +73,23 @@ std::span<const ObjectType> object_types() {
 
 std::unique_ptr<SceneObject> parse_scene_object(ConfigTable& table, const GridExtent& grid) {
   const std::string type = table.get_string("type");
+  // Without regard to case, as every enum value (ConfigTable::get_enum).
   for (const ObjectType& entry : object_types()) {
-    if (entry.name == type) {
+    if (same_letters(entry.name, type)) {
       std::unique_ptr<SceneObject> object = entry.parse(table, grid);
       table.finish();
       return object;
     }
   }
   std::string known;
+  std::vector<std::string> names;
   for (const ObjectType& entry : object_types()) {
     if (!known.empty()) known += ", ";
     known += entry.name;
+    names.emplace_back(entry.name);
   }
-  table.fail("type", fmt::format("unknown object type \"{}\" (known: {})", type, known));
+  table.fail("type", fmt::format("unknown object type \"{}\"{} (known: {})", type,
+                                 did_you_mean(type, names), known));
 }
 
 namespace object_params {

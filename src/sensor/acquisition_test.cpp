@@ -119,6 +119,14 @@ velocity = [0.0, 7500.0, 0.0]
 )");
   const Acquisition a = read_acquisition(tmp / "sv.toml");
   EXPECT_NEAR(a.orbit.interpolate(5.0).position_m.y, 37500.0, 1e-9);
+  // Enum values without regard to case, as a radar file's (issue 38).
+  std::string mixed = test::read_file(tmp / "sv.toml");
+  mixed.replace(mixed.find("\"right\""), 7, "\"Right\"");
+  mixed.replace(mixed.find("\"state_vectors\""), 15, "\"State_Vectors\"");
+  test::write_file(tmp / "mixed.toml", mixed);
+  const Acquisition m = read_acquisition(tmp / "mixed.toml");
+  EXPECT_EQ(m.grid.look_side, LookSide::right);
+  EXPECT_EQ(m.orbit.interpolate(5.0).position_m.y, a.orbit.interpolate(5.0).position_m.y);
   // A misspelled key, a wrong look side, an orbit that does not cover the grid.
   test::write_file(tmp / "typo.toml", head +
                                           "[orbit]\nkind = \"circular\"\naltitude = 7e5\n"

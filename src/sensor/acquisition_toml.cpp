@@ -62,14 +62,9 @@ Acquisition read_acquisition_toml(const std::filesystem::path& path) {
   const auto epoch = parse_utc(epoch_text);
   if (!epoch) head->fail("epoch", "expected a UTC date-time \"YYYY-MM-DDTHH:MM:SS[.ffffff]\"");
   RadarGrid& g = acq.grid;
-  const std::string look = head->get_string("look_side");
-  if (look == "left") {
-    g.look_side = LookSide::left;
-  } else if (look == "right") {
-    g.look_side = LookSide::right;
-  } else {
-    head->fail("look_side", fmt::format("expected \"left\" or \"right\", got \"{}\"", look));
-  }
+  // Without regard to case, as every enum value (ConfigTable::get_enum).
+  g.look_side =
+      head->get_enum<LookSide>("look_side", {{"left", LookSide::left}, {"right", LookSide::right}});
   if (head->has("frequency") == head->has("wavelength")) {
     head->fail("frequency", "give exactly one of frequency and wavelength");
   }
@@ -94,10 +89,14 @@ Acquisition read_acquisition_toml(const std::filesystem::path& path) {
 
   auto orbit = root.subtable("orbit");
   if (!orbit) root.fail("orbit", "missing required table");
-  const std::string kind = orbit->get_string("kind");
+  enum class OrbitKind { state_vectors, circular, flight_line };
+  const OrbitKind kind =
+      orbit->get_enum<OrbitKind>("kind", {{"state_vectors", OrbitKind::state_vectors},
+                                          {"circular", OrbitKind::circular},
+                                          {"flight_line", OrbitKind::flight_line}});
   // Generated orbits cover the grid with a margin for points off its ends.
   const double t0 = g.sensing_start_s, t1 = g.end_s();
-  if (kind == "state_vectors") {
+  if (kind == OrbitKind::state_vectors) {
     std::vector<StateVector> sv;
     for (ConfigTable& s : orbit->table_array("state_vector")) {
       sv.push_back(
@@ -105,7 +104,7 @@ Acquisition read_acquisition_toml(const std::filesystem::path& path) {
       s.finish();
     }
     acq.orbit = Orbit(*epoch, std::move(sv), file);
-  } else if (kind == "circular") {
+  } else if (kind == OrbitKind::circular) {
     CircularOrbitParams p;
     p.altitude_m = positive(*orbit, "altitude", Quantity::length);
     p.inclination_rad = orbit->get_quantity("inclination", Quantity::angle);
@@ -113,7 +112,7 @@ Acquisition read_acquisition_toml(const std::filesystem::path& path) {
     p.argument_of_latitude_rad =
         orbit->get_quantity_or("argument_of_latitude", Quantity::angle, 0.0);
     acq.orbit = make_circular_orbit(p, acq.ellipsoid, *epoch, t0 - 60.0, t1 + 60.0, 10.0);
-  } else if (kind == "flight_line") {
+  } else {
     FlightLineParams p;
     p.lat_rad = orbit->get_quantity("latitude", Quantity::angle);
     p.lon_rad = orbit->get_quantity("longitude", Quantity::angle);
@@ -121,10 +120,6 @@ Acquisition read_acquisition_toml(const std::filesystem::path& path) {
     p.heading_rad = orbit->get_quantity("heading", Quantity::angle);
     p.speed_m_s = positive(*orbit, "speed", Quantity::speed);
     acq.orbit = make_flight_line_orbit(p, acq.ellipsoid, *epoch, t0 - 30.0, t1 + 30.0, 1.0);
-  } else {
-    orbit->fail("kind", fmt::format("expected \"state_vectors\", \"circular\" or "
-                                    "\"flight_line\", got \"{}\"",
-                                    kind));
   }
   orbit->finish();
   root.finish();

@@ -36,26 +36,47 @@ double get_positive(ConfigTable& t, const std::string& key, Quantity q, const st
 // a 1e300 W transmitter infinite powers blamed on the `reference` key):
 // each is refused at its own key. They are wide: every radar ris ships, and
 // every real radar from HF over-the-horizon sets to sub-millimetre imagers,
-// lies well inside them (docs/limits.md).
+// lies well inside them (docs/limits.md). The frequency's are narrower: the
+// imaging radars ris models and its backscatter models' validity, P band
+// (BIOMASS, 435 MHz) to W band (94 GHz), inside 100 MHz .. 100 GHz (issue
+// 38: a plausibility check, so that `frequency = 8.6` is refused at its key
+// and not by the backscatter library later).
 struct Bounds {
   double lo, hi;
   const char* unit;
-  const char* example;  // how the quantity is usually written
+  const char* example;          // how the quantity is usually written
+  Quantity quantity;            // for the units a message lists
+  const char* range = nullptr;  // the bounds as a reader writes them (else lo .. hi unit)
+  const char* why = "the range of any radar (and of what ris's products can hold)";
 };
-constexpr Bounds kFrequencyHz{1e6, 1e12, "Hz", "\"9.6 GHz\""};  // 1 MHz .. 1 THz
-constexpr Bounds kBandwidthHz{1.0, 1e12, "Hz", "\"150 MHz\""};
-constexpr Bounds kPulseWidthS{1e-12, 1.0, "s", "\"50 ns\""};
-constexpr Bounds kTransmitPowerW{1e-6, 1e10, "W", "\"2 kW\""};
-constexpr Bounds kGainDb{-30.0, 80.0, "dB", "35"};
+constexpr Bounds kFrequencyHz{1e8,
+                              1e11,
+                              "Hz",
+                              "\"9.6 GHz\"",
+                              Quantity::frequency,
+                              "100 MHz .. 100 GHz",
+                              "the band of the imaging radars ris simulates (P to W band)"};
+constexpr Bounds kBandwidthHz{1.0, 1e12, "Hz", "\"150 MHz\"", Quantity::frequency};
+constexpr Bounds kPulseWidthS{1e-12, 1.0, "s", "\"50 ns\"", Quantity::time};
+constexpr Bounds kTransmitPowerW{1e-6, 1e10, "W", "\"2 kW\"", Quantity::power};
+constexpr Bounds kGainDb{-30.0, 80.0, "dB", "35", Quantity::dimensionless};
 // sigma0, gains and NESZ written in dB or linearly.
-constexpr Bounds kLevelDb{-150.0, 150.0, "dB", "-20 (dB) or 0.01 (linear)"};
+constexpr Bounds kLevelDb{-150.0, 150.0, "dB", "-20 (dB) or 0.01 (linear)",
+                          Quantity::dimensionless};
 
 double within(ConfigTable& t, const std::string& key, double v, const Bounds& b) {
   if (!(v >= b.lo && v <= b.hi)) {
-    t.fail(key, fmt::format("{:g} {} is outside {:g} .. {:g} {}, the range of any radar (and of "
-                            "what ris's products can hold); a bare number is read in {}: is the "
-                            "unit right (for example {})?",
-                            v, b.unit, b.lo, b.hi, b.unit, b.unit, b.example));
+    const std::string range = b.range != nullptr
+                                  ? std::string(b.range)
+                                  : fmt::format("{:g} .. {:g} {}", b.lo, b.hi, b.unit);
+    // The units a string may carry, where the quantity has units.
+    const std::string units =
+        b.quantity == Quantity::dimensionless
+            ? std::string()
+            : fmt::format("; the units accepted: {}", accepted_units(b.quantity));
+    t.fail(key, fmt::format("{:g} {} is outside {}, {}; a bare number is read in {}: is the "
+                            "unit right (for example {}{})?",
+                            v, b.unit, range, b.why, b.unit, b.example, units));
   }
   return v;
 }

@@ -88,7 +88,7 @@ struct SlarGeometry {
   void tally_flags(const Scene& scene);
 };
 
-// Throws InputError naming radar_file and key "altitude" when valid terrain
+// Throws InputError naming radar_file and key "track.altitude" when valid terrain
 // reaches the sensor altitude (compute_slar_geometry's check).
 void check_terrain_below_sensor(const Scene& scene, double altitude_m,
                                 const std::string& radar_file);

@@ -32,6 +32,7 @@
 #include "ris/backscatter/sigma0_source.h"
 #include "ris/geometry/topo.h"
 #include "ris/io/ellipsoidal_dem.h"
+#include "ris/io/raster_io.h"
 #include "ris/sensor/acquisition.h"
 #include "ris/sensor/radar_params.h"
 #include "ris/sim/slar_simulation.h"
@@ -74,6 +75,9 @@ struct AcquisitionSimulation {
   double ground_azimuth_spacing_m = 0.0;  // mid-window, the image's line spacing
   double sensor_height_m = 0.0;           // above the ellipsoid, mid-window
   std::size_t profile_points = 0;         // terrain points per line (at most)
+  // The window's GCPs in latitude/longitude (ris/image/acquisition_georef.h),
+  // carried by every product on the window's grid.
+  Georef georef;
 };
 
 // Throws InputError for a DEM that misses the grid, a window over 50 M

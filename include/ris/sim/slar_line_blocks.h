@@ -94,9 +94,12 @@ class SlarLineEngine {
 };
 
 // Throws the InputError of a swath that misses the scene (no sample in
-// it; counts: the slant-range extent of the samples with data).
+// it; counts: the slant-range extent of the samples with data):
+// ris/image/swath_miss.h, naming view_key (the keys that place the radar)
+// when no sample with data is in view at all.
 void check_swath_hits_scene(std::int64_t samples_in_swath, const SlantRangeBins& range,
-                            const SlarLineCounts& counts, const std::string& radar_file);
+                            const SlarLineCounts& counts, const std::string& radar_file,
+                            const std::string& view_key = "track");
 
 // The geometry's sample counts from the engine's.
 void set_sample_counts(SlarGeometry& g, const SlarLineCounts& counts);

@@ -108,6 +108,16 @@ struct SlarSimulation {
   // Conditions worth a user's attention that are not errors (printed by the
   // command, recorded in metadata.json).
   std::vector<std::string> warnings;
+  // The same printed by the command and in the run's summary, but not in
+  // metadata.json: added later (issue 38's swath coverage), they leave the
+  // products of runs that were valid before their bytes.
+  std::vector<std::string> summary_warnings;
+  // Both, for stderr and the run's summary.
+  std::vector<std::string> reported_warnings() const {
+    std::vector<std::string> all = warnings;
+    all.insert(all.end(), summary_warnings.begin(), summary_warnings.end());
+    return all;
+  }
 };
 
 // Throws InputError for bad input (terrain at or above the sensor, a swath

@@ -7,11 +7,10 @@
 #include <variant>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "kernels/sim/line_block_kernels.h"
 #include "ris/geometry/surface_gradient.h"
 #include "ris/geometry/terrain_sample.h"
+#include "ris/image/swath_miss.h"
 #include "ris/util/error.h"
 #include "ris/util/thread_ranges.h"
 #include "ris/util/units.h"
@@ -506,13 +505,10 @@ void SlarLineEngine::run(int line0, int line1, const SceneWindow& in, SlarLinePr
 }
 
 void check_swath_hits_scene(std::int64_t samples_in_swath, const SlantRangeBins& range,
-                            const SlarLineCounts& counts, const std::string& radar_file) {
+                            const SlarLineCounts& counts, const std::string& radar_file,
+                            const std::string& view_key) {
   if (samples_in_swath > 0) return;
-  throw InputError(radar_file, "sweep_delay",
-                   fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the scene, "
-                               "which spans slant range {:.1f} to {:.1f} m; expected a sweep "
-                               "delay and length (or near range and range bins) that overlap it",
-                               range.near_m, range.far_m(), counts.r_min_m, counts.r_max_m));
+  throw_swath_misses_scene(radar_file, range, counts.r_min_m, counts.r_max_m, view_key);
 }
 
 bool fused_slar_image_applies(const Scene& scene, const SlarGeometry& layout) {

@@ -149,20 +149,25 @@ void write_acquisition_products(const std::filesystem::path& out_dir,
   const GeoTiffCompression float_tif = product_tiff_settings(info, true);
   const GeoTiffCompression int_tif = product_tiff_settings(info, false);
   std::vector<std::function<void()>> tasks;
-  // A raster of the window (no map georeferencing: its axes are the grid's).
-  const auto raster = [&](const std::string& stem, const std::string& file, const auto* data,
-                          int cols, int rows) {
+  // A raster (no map geotransform: its axes are the grid's); on the
+  // window's grid it carries the window's GCPs (ris/image/acquisition_georef.h).
+  const Georef* gcps = a.georef.gcps.empty() ? nullptr : &a.georef;
+  const auto raster_with = [&](const Georef* georef, const std::string& stem,
+                               const std::string& file, const auto* data, int cols, int rows) {
     if (!want.wants(stem)) return;
-    tasks.emplace_back([&, file, data, cols, rows] {
+    tasks.emplace_back([&, georef, file, data, cols, rows] {
       const SlarRasterSpec spec = acquisition_raster_spec(file, a, img);
       using T = std::remove_cvref_t<decltype(*data)>;
-      write_geotiff(dir.path(file), data, cols, rows, nullptr, spec.nodata, spec.metadata,
-                    spec.band, BlockOrder::top_down,
-                    std::is_floating_point_v<T> ? &float_tif : &int_tif);
+      write_geotiff(dir.path(file), data, cols, rows, georef, spec.nodata, spec.metadata, spec.band,
+                    BlockOrder::top_down, std::is_floating_point_v<T> ? &float_tif : &int_tif);
     });
   };
+  const auto raster = [&](const std::string& stem, const std::string& file, const auto* data,
+                          int cols, int rows) { raster_with(gcps, stem, file, data, cols, rows); };
   const auto& slant = raster;
-  const auto picture = [&](const std::string& stem, const std::uint8_t* grey, int cols, int rows) {
+  // The ground-range picture is not on the window's grid: no GCPs.
+  const auto picture = [&](const std::string& stem, const std::uint8_t* grey, int cols, int rows,
+                           const Georef* georef) {
     const std::string file = picture_file(stem, cols, rows, info.max_png_pixels);
     if (file.ends_with(".png")) {
       if (!want.wants(stem)) return;
@@ -170,7 +175,7 @@ void write_acquisition_products(const std::filesystem::path& out_dir,
         write_png_gray(dir.path(file), grey, cols, rows, png_compression_level(info.compression));
       });
     } else {
-      slant(stem, file, grey, cols, rows);
+      raster_with(georef, stem, file, grey, cols, rows);
     }
   };
   // No-data pixels are NaN in the mean power (the file's no-data value).
@@ -183,11 +188,11 @@ void write_acquisition_products(const std::filesystem::path& out_dir,
   slant("mask_slant", "mask_slant.tif", img.mask.data(), img.bins, img.lines);
   add_calibrated_tasks(tasks, sim, pic, info, [&](const std::string& file, const float* v) {
     const SlarRasterSpec spec = acquisition_raster_spec(file, a, img);
-    write_geotiff(dir.path(file), v, img.bins, img.lines, nullptr, spec.nodata, spec.metadata,
+    write_geotiff(dir.path(file), v, img.bins, img.lines, gcps, spec.nodata, spec.metadata,
                   spec.band, BlockOrder::top_down, &float_tif);
   });
-  picture("slant_range", pic.slant_grey.data(), img.bins, img.lines);
-  picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines);
+  picture("slant_range", pic.slant_grey.data(), img.bins, img.lines, gcps);
+  picture("ground_range", pic.ground_grey.data(), sim.ground_grid.count, img.lines, nullptr);
   const GridWindow& w = a.window;
   raster("local_incidence", "local_incidence.tif", a.local_incidence_deg.data(), w.bins, w.lines);
   raster("layover_shadow_mask", "layover_shadow_mask.tif", a.layover_shadow_mask.data(), w.bins,

@@ -1,5 +1,6 @@
 #include "ris/sim/acquisition_simulation.h"
 
+#include "ris/image/acquisition_georef.h"
 #include "ris/sim/slar_line_blocks.h"
 #include "ris/sim/slar_run_setup.h"
 #include "sim/modes/acquisition_calibration.h"
@@ -47,6 +48,8 @@ AcquisitionSimulation simulate_acquisition(const Acquisition& acq, const Ellipso
     sim.calibration = detail::acquisition_calibration(run, imaging, layout.line_spacing_m,
                                                       sim.ground_grid.reference_height_m);
   }
+  // The products' GCPs, from the grid and the DEM (as ris topo's layers).
+  out.georef = acquisition_georef(acq, dem, w, 0.5 * (double(out.dem_min_m) + out.dem_max_m));
   out.local_incidence_deg = std::move(local_deg);
   out.layover_shadow_mask = std::move(mask);
   return std::move(out);

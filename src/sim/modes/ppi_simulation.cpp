@@ -69,7 +69,7 @@ SlarImage form_ppi_rays(const Scene& scene, PpiGeometry& pg, const Sigma0Lut& lu
   });
   set_sample_counts(g, counts);
   g.nodata_cells = static_cast<std::int64_t>(std::count(scene.valid.begin(), scene.valid.end(), 0));
-  check_swath_hits_scene(prof.samples_in_swath, p.range, counts, radar_file);
+  check_swath_hits_scene(prof.samples_in_swath, p.range, counts, radar_file, "site.position");
   SlarImage img = slar_image_from_profiles(prof, p, g.line_spacing_m);
   // Each candidate's result (by_line[k].target: the candidate's index).
   std::vector<std::uint8_t> lit(candidates.size(), 0);

@@ -8,11 +8,13 @@
 #include <optional>
 
 #include "ris/backscatter/sigma0_lut.h"
+#include "ris/geometry/swath_coverage.h"
 #include "ris/image/greytone.h"
 #include "ris/image/greytone_image.h"
 #include "ris/image/greytone_terms.h"
 #include "ris/image/speckle.h"
 #include "ris/sensor/elevation_gain.h"
+#include "ris/sensor/track_view.h"
 #include "ris/sim/radiometry_setup.h"
 #include "ris/sim/slar_channels.h"
 #include "ris/sim/slar_line_blocks.h"
@@ -173,6 +175,7 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
   // power), and when the lines are not one per cell row or column (the
   // scene maps are then made from it).
   sim.track = resolve_track(radar.track, scene, radar.source_file);
+  check_scene_in_view(radar.track, sim.track, scene, radar.source_file);
   const SlarGeometry layout = slar_geometry_layout(scene, sim.track, radar.azimuth_line_spacing_m);
   const bool coherent = radar.mode == RadarMode::sar && radar.sar.coherent;
   for (std::size_t c = 1; c < nc; ++c) {
@@ -220,6 +223,9 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
   }
   // SAR windows, resolution warnings and thermal noise (as a streamed run).
   for (std::size_t c = 0; c < nc; ++c) complete_slar_setup(sims[c], rs[c], scene);
+  // Less than half of the scene in the swath: said (the channels share it).
+  if (auto w = swath_coverage_warning(swath_coverage(sim.track, scene, rs[0].imaging.range, h_ref)))
+    sim.summary_warnings.push_back(*w);
   check_point_targets_on_scene(options.targets, scene);
   options.report("geometry + image formation + scene maps (line engine)", 0.4);
   SlarEngineKeep keep;

@@ -290,7 +290,7 @@ void run_streamed(const RunRequest& r, const RunCallbacks& cb, RunResult& res) {
       simulate_slar_streamed(r.scene_path, res.radar, *sigma0.source, res.info, r.out_dir, o));
   // Once, by rank 0, in an MPI run (every rank sets up the same stages).
   if (process_group().rank() == 0)
-    for (const std::string& w : run.summary.sim.warnings) warn(cb, w);
+    for (const std::string& w : run.summary.sim.reported_warnings()) warn(cb, w);
 }
 
 // The scene's buildings and reflectors as point targets after the user's
@@ -358,7 +358,7 @@ void run_channels(RunResult& res, const LoadedSigma0& sigma0, const SlarOptions&
   for (std::size_t c = 0; c < sims.size(); ++c) {
     SlarRun& one = run.channels[c].run;
     one.sim = std::move(sims[c]);
-    for (const std::string& w : one.sim.warnings)
+    for (const std::string& w : one.sim.reported_warnings())
       warn(cb, "channel " + run.channels[c].name + ": " + w);
     render_slar_run(one, false, seed);
   }
@@ -582,7 +582,7 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
     run.user_targets = user_targets;
     run.sim = simulate_slar(*res.scene, radar, *sigma0.source, options);
     drop_object_centre_names(run.sim.hidden_targets, options.targets, user_targets);
-    for (const std::string& w : run.sim.warnings) warn(cb, w);
+    for (const std::string& w : run.sim.reported_warnings()) warn(cb, w);
     stage("speckle and greytones", 0.9);
     render_slar_run(run, res.has_targets, r.seed);
   }

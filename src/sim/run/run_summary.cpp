@@ -177,7 +177,7 @@ RunSummary summary_of(const SlarRun& run, const RunResult& res) {
   s.lines.push_back(slar_image_line(run.sim));
   s.lines.push_back(geometry_counts(run.sim.geometry));
   add_point_targets(s.lines, run.irfs, run.sim.hidden_targets);
-  s.warnings = run.sim.warnings;
+  s.warnings = run.sim.reported_warnings();
   s.products = products_of(slar_product_stems(), res.info);
   return s;
 }
@@ -206,7 +206,8 @@ RunSummary summary_of(const MultiChannelSlarRun& run, const RunResult& res) {
                            {{"channel", c.name, ""},
                             {"frequency", radar.frequency_hz, "Hz"},
                             {"polarisation", pol, ""}}));
-    for (const std::string& w : c.run.sim.warnings) s.warnings.push_back(c.name + ": " + w);
+    for (const std::string& w : c.run.sim.reported_warnings())
+      s.warnings.push_back(c.name + ": " + w);
     for (std::string_view stem : slar_product_stems()) {
       const auto& wide = slar_scene_wide_stems();
       if (res.info.products.wants(stem) &&
@@ -267,7 +268,7 @@ RunSummary summary_of(const StreamedSlarRun& run, const RunResult& res) {
   s.lines.push_back(geometry_counts(st.sim.geometry));
   add_point_targets(s.lines, st.irfs, st.sim.hidden_targets);
   add_stage_times(s.lines, st.stage_seconds, &st.stage_cpu_seconds, st.cpu_parts);
-  s.warnings = st.sim.warnings;
+  s.warnings = st.sim.reported_warnings();
   s.products = products_of(slar_product_stems(), res.info);
   return s;
 }

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "ris/image/acquisition_georef.h"
 #include "ris/image/greytone.h"
 #include "ris/image/slar_azimuth_integrator.h"
 #include "ris/image/speckle.h"
@@ -90,6 +91,7 @@ class AcquisitionStream {
     img.range = s_.rs.imaging.range;
     img.line_spacing_m = sim().geometry.line_spacing_m;
     detail::set_acquisition_ground_grid(s_.out);
+    set_georef(acq);
     summary_.block_lines =
         detail::stream_block_lines(lines(), std::int64_t(std::max(bins(), 1)) * kBytesPerBin,
                                    stream.block_lines, stream.memory_budget_bytes, group_.size());
@@ -145,20 +147,45 @@ class AcquisitionStream {
   void stage_done() { clock_.done(); }
 
   detail::SlantImagePasses passes() {
-    return {group_,        order_,
-            sim(),         info_,
-            block_lines(), dir_ ? &*dir_ : nullptr,
-            &*bar_,        acquisition_grid_metadata(s_.out),
-            nullptr,       lines()};
+    return {group_,
+            order_,
+            sim(),
+            info_,
+            block_lines(),
+            dir_ ? &*dir_ : nullptr,
+            &*bar_,
+            acquisition_grid_metadata(s_.out),
+            s_.out.georef.gcps.empty() ? nullptr : &s_.out.georef,
+            lines()};
   }
 
-  // A product on the window's grid, as write_acquisition_products writes it.
+  // The products' GCPs (ris/image/acquisition_georef.h), before any block
+  // is written (the writers set them when they open): the grid and the
+  // orbit are known from the set-up, and each tie line's ground is found on
+  // the DEM window its own block would read (dem_rect_of_lines), so they
+  // are the in-memory run's.
+  void set_georef(const Acquisition& acq) {
+    const GridWindow& w = s_.out.window;
+    const AcquisitionTieGrid tie = acquisition_tie_grid(w);
+    const double h_mid = 0.5 * (double(s_.out.dem_min_m) + s_.out.dem_max_m);
+    Georef& g = s_.out.georef;
+    g = acquisition_georef_frame();
+    for (const int l : tie.lines) {
+      const detail::DemRect rect = detail::dem_rect_of_lines(*s_.run, l, l + 1);
+      const EllipsoidalDem dem = dem_.read(rect.row0, rect.rows, rect.col0, rect.cols);
+      add_acquisition_tie_line(acq, dem, w, l, tie.bins, h_mid, g);
+    }
+  }
+
+  // A product on the window's grid, as write_acquisition_products writes it
+  // (with the window's GCPs).
   template <typename T>
   Writer<T> open_writer(const std::string& file) {
     const SlarRasterSpec spec = acquisition_raster_spec(file, s_.out, sim().image);
+    const Georef* gcps = s_.out.georef.gcps.empty() ? nullptr : &s_.out.georef;
     return std::make_unique<GeoTiffBlockWriter<T>>(
-        dir_->path(file), bins(), lines(), std::vector<std::string>{spec.band}, nullptr,
-        spec.nodata, spec.metadata, product_tiff_settings(info_, std::is_floating_point_v<T>),
+        dir_->path(file), bins(), lines(), std::vector<std::string>{spec.band}, gcps, spec.nodata,
+        spec.metadata, product_tiff_settings(info_, std::is_floating_point_v<T>),
         BlockOrder::top_down);
   }
 

@@ -17,6 +17,7 @@
 #include "ris/image/greytone.h"
 #include "ris/image/ppi_scope.h"
 #include "ris/image/speckle.h"
+#include "ris/image/swath_miss.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/gdal_util.h"
 #include "ris/scene/scene_stream.h"
@@ -262,12 +263,8 @@ class PpiStreamRun {
   void finish_rays(const detail::RayCounts& counts) {
     const SlarImage& b = sim().bscope;
     if (counts.in_swath == 0) {
-      throw InputError(sim().radar.source_file, "sweep_delay",
-                       fmt::format("the swath (slant range {:.1f} to {:.1f} m) misses the scene, "
-                                   "which spans slant range {:.1f} to {:.1f} m; expected a sweep "
-                                   "delay and length (or near range and range bins) that overlap "
-                                   "it",
-                                   b.range.near_m, b.range.far_m(), counts.r_min, counts.r_max));
+      throw_swath_misses_scene(sim().radar.source_file, b.range, counts.r_min, counts.r_max,
+                               "site.position");
     }
     summary_.windows = counts.windows;
     summary_.max_window_cells = counts.max_window_cells;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "ris/geometry/slar_geometry.h"
+#include "ris/sensor/track_view.h"
 #include "ris/sim/slar_run_setup.h"
 #include "ris/util/error.h"
 
@@ -23,6 +24,7 @@ SceneLineLayout plan_scene_lines(const Scene& grid, SlarSimulation& sim, int req
                                  std::int64_t memory_budget_bytes, int ranks) {
   const RadarParams& r = sim.radar;
   sim.track = resolve_track(r.track, grid, r.source_file);
+  check_scene_in_view(r.track, sim.track, grid, r.source_file);
   sim.geometry = slar_geometry_layout(grid, sim.track, r.azimuth_line_spacing_m);
   const SlarGeometry& g = sim.geometry;
   const int lines = g.lines, bins = sim.derived.range_bins;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ris/geometry/slar_geometry.h"
+#include "ris/geometry/swath_coverage.h"
 #include "ris/image/greytone.h"
 #include "ris/image/ground_range.h"
 #include "ris/image/speckle.h"
@@ -153,6 +154,7 @@ class StreamRun {
     stage_done();
     if (!root) {
       summary_.sim.warnings.clear();  // rank 0 reports them
+      summary_.sim.summary_warnings.clear();
       return std::move(summary_);
     }
     write_metadata(map);
@@ -314,6 +316,9 @@ class StreamRun {
     const SlarImage& img = sim().image;
     sim().ground_grid =
         ground_range_grid(img.range, sim().geometry.altitude_m, h_ref, img.line_spacing_m);
+    // Less than half of the scene in the swath: said, as simulate_slar does.
+    if (auto w = swath_coverage_warning(swath_coverage(sim().track, grid(), img.range, h_ref)))
+      sim().summary_warnings.push_back(*w);
   }
 
   // ---- Pass 2b: geocoded products, scene rows top down ------------------
