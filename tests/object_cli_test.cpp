@@ -55,39 +55,17 @@ TEST(ObjectCli, RefusesBadInputNamingTheOption) {
   EXPECT_NE(mesh.output.find("degenerate"), std::string::npos) << mesh.output;
 }
 
-// A small town: one building facing the radar and one trihedral, on a
-// 300 x 100-cell plain of 2 m cells (src/sim/targets/object_centres_test.cpp
-// checks the physics; here the command's products).
-constexpr const char* kTown = R"(
-name = "two objects"
-[grid]
-rows = 100
-cols = 300
-cell_size = 2.0
-base_category = 1
-
-[[object]]
-type = "building"
-footprint = [[200, 70], [230, 70], [230, 130], [200, 130]]
-height = 15
-category = 2
-
-[[object]]
-type = "reflector"
-shape = "trihedral"
-x = 400
-y = 100
-size = 1.0
-azimuth = 180
-tilt = 39.04  # atan(6000 / 7400): on the radar
-)";
+// tests/data/objects/two-objects.toml: one building facing the radar and
+// one trihedral (src/sim/targets/object_centres_test.cpp checks the
+// physics; here the command's products).
+std::string town() {
+  return std::string(test::test_data_dir()) + "/objects/two-objects.toml";
+}
 
 TEST(ObjectCli, SceneObjectsAreImagedAndReportedByteForByteOnAnyThreadCount) {
   TempDir dir;
-  test::write_file(dir.path() / "town.toml", kTown);
   const std::string radar = std::string(test::data_dir()) + "/radars/sar-x-band-town.toml";
-  std::string cmd = "simulate --quiet --scene " + q(dir.path() / "town.toml") + " --radar " +
-                    q(radar) + " --out ";
+  std::string cmd = "simulate --quiet --scene " + q(town()) + " --radar " + q(radar) + " --out ";
   const auto one = run_ris(cmd + q(dir.path() / "t1") + " --threads 1");
   ASSERT_EQ(one.exit_code, 0) << one.output;
   const auto two = run_ris(cmd + q(dir.path() / "t2") + " --threads 2");
@@ -103,16 +81,15 @@ TEST(ObjectCli, SceneObjectsAreImagedAndReportedByteForByteOnAnyThreadCount) {
   EXPECT_FALSE(m.contains("point_targets")) << "object centres are not the user's targets";
   // The trihedral (a = 1 m, 9.6 GHz): 12 pi a^4 / lambda^2 = 45.9 dBsm.
   EXPECT_NEAR(m["objects"]["by_object"][1]["rcs_dbsm"].get<double>(), 45.9, 0.5);
-  const auto info = run_ris("scene info " + q(dir.path() / "town.toml"));
+  const auto info = run_ris("scene info " + q(town()));
   EXPECT_NE(info.output.find("1 buildings, 1 reflectors"), std::string::npos) << info.output;
 }
 
 TEST(ObjectCli, SceneObjectsRefusedWhereNotTracedNamingTheObject) {
   TempDir dir;
-  test::write_file(dir.path() / "town.toml", kTown);
   const std::string ppi = std::string(test::data_dir()) + "/radars/ppi-ground-mast-30m.toml";
-  const auto r = run_ris("simulate --quiet --scene " + q(dir.path() / "town.toml") + " --radar " +
-                         q(ppi) + " --out " + q(dir.path() / "o"));
+  const auto r = run_ris("simulate --quiet --scene " + q(town()) + " --radar " + q(ppi) +
+                         " --out " + q(dir.path() / "o"));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("object[0] (building)"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "o" / "metadata.json"));
