@@ -99,6 +99,12 @@ Hermitian3 covariance_from_channels(const ChannelSigma0& s, const CategoryPolari
   return c;
 }
 
+CategoryPolarimetry category_polarimetry(const Sigma0Source& src, std::uint16_t category,
+                                         double frequency_hz) {
+  return default_polarimetry(
+      first_word(src.category_model(category, RadarBand{frequency_hz, Polarisation::HH})));
+}
+
 Hermitian3 category_covariance(const Sigma0Source& src, std::uint16_t category,
                                double incidence_rad, double frequency_hz,
                                const std::optional<CategoryPolarimetry>& shape) {

@@ -5,6 +5,7 @@
 #include <gdal.h>
 
 #include <algorithm>
+#include <complex>
 #include <cstring>
 #include <string>
 #include <type_traits>
@@ -47,6 +48,8 @@ constexpr GDALDataType gdal_type() {
     return GDT_UInt16;
   else if constexpr (std::is_same_v<T, std::int32_t>)
     return GDT_Int32;
+  else if constexpr (std::is_same_v<T, std::complex<float>>)
+    return GDT_CFloat32;  // single-look complex images (ris/sim/sar_quad_pol.h)
   else
     static_assert(sizeof(T) == 0, "unsupported raster sample type");
 }
@@ -312,5 +315,6 @@ template class GeoTiffBlockWriter<double>;
 template class GeoTiffBlockWriter<std::uint8_t>;
 template class GeoTiffBlockWriter<std::uint16_t>;
 template class GeoTiffBlockWriter<std::int32_t>;
+template class GeoTiffBlockWriter<std::complex<float>>;
 
 }  // namespace ris

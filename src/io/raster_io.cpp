@@ -8,6 +8,7 @@
 
 #include <png.h>
 
+#include <complex>
 #include <stdexcept>
 #include <type_traits>
 
@@ -77,6 +78,7 @@ RIS_INSTANTIATE_GEOTIFF(double)
 RIS_INSTANTIATE_GEOTIFF(std::uint8_t)
 RIS_INSTANTIATE_GEOTIFF(std::uint16_t)
 RIS_INSTANTIATE_GEOTIFF(std::int32_t)
+RIS_INSTANTIATE_GEOTIFF(std::complex<float>)
 #undef RIS_INSTANTIATE_GEOTIFF
 
 namespace {

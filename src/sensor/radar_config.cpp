@@ -214,6 +214,20 @@ void parse_sar(ConfigTable& t, RadarParams& r) {
   p.azimuth_looks = looks("azimuth_looks");
   if (auto nesz = linear_or_db(t, "nesz")) p.nesz = *nesz;
   p.coherent = t.get_bool_or("coherent", false);
+  // Quad-pol: single-look complex images of all four polarisations, as a
+  // polarimetric SAR's SLC product (NISAR's quad-pol RSLC; multilooking is
+  // the covariance's, ris polsar --window, not the SLC's).
+  p.quad_pol = t.get_bool_or("quad_pol", false);
+  if (p.quad_pol && !p.coherent) {
+    t.fail("quad_pol", "a quad-pol SAR forms complex images: set coherent = true as well");
+  }
+  if (p.quad_pol && (p.range_looks != 1 || p.azimuth_looks != 1)) {
+    t.fail("quad_pol",
+           fmt::format("quad-pol SLCs are single-look, got range_looks = {} and azimuth_looks = "
+                       "{}: set both to 1 (average the covariance with ris polsar --window "
+                       "instead)",
+                       p.range_looks, p.azimuth_looks));
+  }
   t.finish();
 }
 

@@ -53,6 +53,11 @@ struct CategoryPolarimetry {
 // unknown name gets the intensity-only default.
 CategoryPolarimetry default_polarimetry(const std::string& model_name);
 
+// The shape of a category of src at a frequency: its model family's
+// default_polarimetry (the first word of its HH model description).
+CategoryPolarimetry category_polarimetry(const Sigma0Source& src, std::uint16_t category,
+                                         double frequency_hz);
+
 // Where a covariance is made, for messages: the library file, the category
 // (name and id), the band and the key that set the shape.
 struct CovarianceWhere {

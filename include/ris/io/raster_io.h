@@ -61,7 +61,8 @@ struct BandView {
 // in that order; the pixels are the same whatever the order.
 enum class BlockOrder { top_down, bottom_up, left_right, right_left };
 
-// Single-band GeoTIFF of float, uint8_t, uint16_t or int32_t samples.
+// Single-band GeoTIFF of float, double, uint8_t, uint16_t, int32_t or
+// std::complex<float> (CFloat32) samples.
 // georef may be null (no georeferencing: pixel coordinates); compression
 // null: GeoTiffCompression{}.
 template <typename T>

@@ -136,6 +136,10 @@ struct SarParams {
   int azimuth_looks = 1;              // L_a: resolution L_a rho_a
   std::optional<double> nesz;         // noise-equivalent sigma0 (linear); none: no noise
   bool coherent = false;              // complex reflectivity, sinc impulse responses
+  // Quad-pol (HH, HV, VH, VV SLCs from each element's scattering vector;
+  // ris/sim/sar_quad_pol.h): coherent, single look, one [radar] polarisation
+  // ignored.
+  bool quad_pol = false;
   // The multilooked resolutions, what a pixel integrates.
   double range_resolution_looks_m() const { return range_looks * range_resolution_m; }
   double azimuth_resolution_looks_m() const { return azimuth_looks * azimuth_resolution_m; }

@@ -19,8 +19,11 @@
 //   std::vector<ris::PointReturn> r = ris::point_returns_on_lines(t, scene, geometry);
 #pragma once
 
+#include <array>
+#include <complex>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +45,10 @@ struct PointTarget {
   // A scattering centre of a scene object (ris/sim/object_centres.h), not a
   // target of the user's: imaged alike, not measured (point_target_irf.h).
   bool from_object = false;
+  // Its Sinclair matrix (HH, HV, VH, VV: receive-transmit; |S_pq|^2 in m^2)
+  // for a quad-pol run (ris/sim/sar_quad_pol.h); none: a trihedral's,
+  // sqrt(rcs) on the diagonal. A scene object's centre carries its traced S.
+  std::optional<std::array<std::complex<double>, 4>> sinclair;
 };
 
 std::vector<PointTarget> load_point_targets(const std::string& path);

@@ -142,8 +142,13 @@ struct ChannelRun {
   std::string backscatter_path;  // its backscatter source (the run's unless its own)
   SlarRun run;
 };
+struct QuadPolRun;  // ris/sim/sar_quad_pol.h
 struct MultiChannelSlarRun {
   std::vector<ChannelRun> channels;
+  // A quad-pol SAR (radar [sar] quad_pol): the channels are HH, HV, VH and
+  // VV, their pictures made from these images (null: channels of a
+  // [[channel]] radar).
+  std::shared_ptr<QuadPolRun> quad_pol;
 };
 
 // A PPI run in memory.

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -54,8 +55,13 @@ nlohmann::json slar_channels_metadata(const Scene& scene,
 
 // Writes every channel's selected products (info.products, each stem for
 // every channel) into out_dir as one staged folder.
+// extra (optional): the run's own further products, written into the
+// staging folder it is given; its result's "products" join metadata.json's
+// and its other keys are added to it (a quad-pol run's SLCs,
+// ris/sim/quad_pol_products.h).
+using ExtraRunProducts = std::function<nlohmann::json(const std::filesystem::path& staging)>;
 void write_slar_channel_products(const std::filesystem::path& out_dir, const Scene& scene,
                                  std::span<const SlarChannelProducts> channels,
-                                 const SlarRunInfo& info);
+                                 const SlarRunInfo& info, const ExtraRunProducts& extra = {});
 
 }  // namespace ris

@@ -148,6 +148,9 @@ struct SlarImageChannel {
   const Sigma0Lut* lut = nullptr;
   const SlarImagingParams* params = nullptr;
   SlarImage* image = nullptr;  // written
+  // Keep its SlarImage::element_power_w too (with keep.element_power: a
+  // quad-pol SAR's HV and VV).
+  bool keep_element_power = false;
 };
 SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& layout, SceneGeometryMaps& maps,
                                 const Sigma0Lut& lut, const SlarImagingParams& params,

@@ -69,6 +69,10 @@ struct SlarOptions {
   // Lines per block of the line engine (0: the engine's choice). Any value
   // gives the same bytes (the scene-query stage's determinism tests vary it).
   int engine_block_lines = 0;
+  // Channels of one polarimetric SAR (ris/sim/sar_quad_pol.h): every
+  // channel coherent and keeping its element powers, the point targets the
+  // first channel's (their power is polarisation-free).
+  bool polarimetric_channels = false;
 
   // The backscatter source's name for messages: backscatter_file, or the
   // source's own description.

@@ -574,10 +574,12 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
 }
 
 void scatter_channel_elements(std::span<const SlarElementContext* const> channels,
-                              const LineElements& e, LineElementScratch& s) {
+                              const LineElements& e, LineElementScratch& s,
+                              std::span<float* const> element_power_w) {
   const int n = e.samples;
   const int nc = static_cast<int>(channels.size());
   RIS_CHECK(nc <= s.channels);
+  RIS_CHECK(element_power_w.empty() || element_power_w.size() == channels.size());
   const std::size_t stride = s.stride();
   for (const SlarElementContext* c : channels) {
     // The line the scratch holds must be this one, in these range bins.
@@ -616,6 +618,14 @@ void scatter_channel_elements(std::span<const SlarElementContext* const> channel
                           ratio + static_cast<std::size_t>(k) * kChunk,
                           s.area.data() + o};
       ratio_pass(m, pt, io);
+      float* kept = element_power_w.empty() ? nullptr : element_power_w[static_cast<std::size_t>(k)];
+      if (kept) {
+        const float* r = ratio + static_cast<std::size_t>(k) * kChunk;
+        for (int j = 0; j < m; ++j) {
+          kept[o + static_cast<std::size_t>(j)] =
+              static_cast<float>(element_power(c.power_scale, r[j]));
+        }
+      }
     }
     // Pass 2 for every channel at once: each element's bin and fraction
     // read once; its power into copy (first_index + j) % 4 of each channel

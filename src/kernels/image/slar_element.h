@@ -233,8 +233,12 @@ LineElementTally form_line_profile(const SlarElementContext& c, const LineElemen
 // same bytes as form_line_profile with its context would give, and so is
 // the area (s.formed_area, the first channel's). The contexts' range bins
 // must be the first channel's (checked).
+// element_power_w (empty, or one pointer per channel, each null or `samples`
+// values): P_i of each element for that channel, as form_line_profile's
+// element_power_w gives the first channel's (a quad-pol SAR's input).
 void scatter_channel_elements(std::span<const SlarElementContext* const> channels,
-                              const LineElements& e, LineElementScratch& s);
+                              const LineElements& e, LineElementScratch& s,
+                              std::span<float* const> element_power_w = {});
 
 // Channel `channel`'s profile (power, before the range window: `bins`
 // values, overwritten) from its copies, which are cleared for the next line.

@@ -584,14 +584,20 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
   std::vector<detail::SlarElementContext> ctx(nc);
   std::vector<SlarLineProfiles> profs(nc);
   std::vector<detail::ExtraChannel> extra(nc);
+  std::vector<std::vector<float>> channel_power(nc);
   for (std::size_t c = 0; c < nc; ++c) {
     const SlarImagingParams& pc = *channels[c].params;
+    if (channels[c].keep_element_power) {
+      RIS_CHECK(keep.element_power);
+      channel_power[c].assign(element_power.size(), 0.0f);
+    }
     RIS_CHECK(pc.range.count == p.range.count && pc.range.near_m == p.range.near_m &&
               pc.range.bin_m == p.range.bin_m);
     gain2.emplace_back(pc.elevation_gain, pc.peak_gain, radar_file);
     profs[c].allocate(g.lines, p.range.count);
     ctx[c] = detail::element_context(pc, gain2[c], *channels[c].lut, p.range.count);
-    extra[c] = {&ctx[c], pc.range_window_bins, &profs[c]};
+    extra[c] = {&ctx[c], pc.range_window_bins, &profs[c],
+                channel_power[c].empty() ? nullptr : channel_power[c].data()};
   }
   SlarLineCounts counts;
   if (g.direct_sampling) {
@@ -619,6 +625,7 @@ SlarImage form_slar_image_fused(const Scene& scene, SlarGeometry& g, SceneGeomet
   check_swath_hits_scene(prof.samples_in_swath, p.range, counts, radar_file);
   for (std::size_t c = 0; c < nc; ++c) {
     *channels[c].image = slar_image_from_profiles(profs[c], *channels[c].params, g.line_spacing_m);
+    if (!channel_power[c].empty()) channels[c].image->element_power_w = std::move(channel_power[c]);
   }
   SlarImage img = slar_image_from_profiles(prof, p, g.line_spacing_m);
   if (keep.element_power) img.element_power_w = std::move(element_power);

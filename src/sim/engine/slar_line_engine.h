@@ -163,7 +163,7 @@ void run_line_blocks(const SlarGeometry& g, const LineStages& stages, int line0,
               // their power only (the counts are the geometry's).
               if (!stages.channels.empty()) {
                 accumulate_channel_lines(stages.channels, contexts, span.n, s, prof, line,
-                                         span.first);
+                                         span.first, stages.keep, &g);
               }
               source.store_maps(line, span, s);
             }

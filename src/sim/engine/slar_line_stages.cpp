@@ -1,6 +1,7 @@
 #include "sim/engine/slar_line_stages.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -78,13 +79,26 @@ std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScr
 void accumulate_channel_lines(std::span<const ExtraChannel> channels,
                               std::span<const SlarElementContext* const> contexts, int samples,
                               LineScratch& s, const SlarLineProfiles& first, int line,
-                              int first_sample) {
+                              int first_sample, const LineKeep* keep, const SlarGeometry* g) {
   const std::size_t row = first.index(line, 0);
   const LineElements e{
       samples,           s.flags.data(),     s.range.data(),           s.near_end.data(),
       s.far_end.data(),  s.incidence.data(), s.local_incidence.data(), s.area.data(),
       s.category.data(), first_sample};
-  scatter_channel_elements(contexts, e, s.elements);
+  // The channels' element powers, where kept: this line's row of each.
+  std::array<float*, kMaxKeptChannels> kept{};
+  std::span<float* const> kept_rows;
+  if (keep && g && std::any_of(channels.begin(), channels.end(), [](const ExtraChannel& c) {
+        return c.element_power_w != nullptr;
+      })) {
+    RIS_CHECK(channels.size() <= kept.size());
+    const std::size_t at = g->index(line, first_sample) - g->index(keep->line0, 0);
+    for (std::size_t k = 0; k < channels.size(); ++k) {
+      kept[k] = channels[k].element_power_w ? channels[k].element_power_w + at : nullptr;
+    }
+    kept_rows = std::span<float* const>(kept.data(), channels.size());
+  }
+  scatter_channel_elements(contexts, e, s.elements, kept_rows);
   const std::size_t bins = static_cast<std::size_t>(first.bins);
   for (std::size_t k = 0; k < channels.size(); ++k) {
     const ExtraChannel& c = channels[k];

@@ -136,10 +136,17 @@ std::int64_t accumulate_line(const SlarElementContext& ctx, int samples, LineScr
 // fills after the first channel's from the same per-line geometry in the
 // scratch. The range bins are the first channel's. No kept geometry and no
 // point targets (the first channel keeps what is kept).
+// The most channels whose element powers one run keeps (a quad-pol SAR's
+// HV and VV beside HH).
+inline constexpr std::size_t kMaxKeptChannels = 8;
+
 struct ExtraChannel {
   const SlarElementContext* ctx = nullptr;
   double range_window_bins = 0.0;
   SlarLineProfiles* prof = nullptr;
+  // Each element's power for this channel, in LineKeep::element_power_w's
+  // layout (null: not kept; a quad-pol SAR keeps every channel's).
+  float* element_power_w = nullptr;
 };
 
 // The further channels' per-line step (the channel axis), right after the
@@ -150,10 +157,12 @@ struct ExtraChannel {
 // bits and centre counts are the first channel's row (the geometry's). The
 // same bytes as accumulate_line with each channel's context would give, at
 // a fraction of its work.
+// keep and g: where the channels' element powers go (LineKeep's rows).
 void accumulate_channel_lines(std::span<const ExtraChannel> channels,
                               std::span<const SlarElementContext* const> contexts, int samples,
                               LineScratch& s, const SlarLineProfiles& first, int line,
-                              int first_sample);
+                              int first_sample, const LineKeep* keep = nullptr,
+                              const SlarGeometry* g = nullptr);
 
 // The kept-geometry sink's step: the line's samples [first, first + n) from
 // the scratch into row `line` of `kept`, the samples outside unseen (NaN,

@@ -119,7 +119,7 @@ json slar_channels_metadata(const Scene& scene, std::span<const SlarChannelProdu
 
 void write_slar_channel_products(const fs::path& out_dir, const Scene& scene,
                                  std::span<const SlarChannelProducts> channels,
-                                 const SlarRunInfo& info) {
+                                 const SlarRunInfo& info, const ExtraRunProducts& extra) {
   RIS_CHECK(!channels.empty());
   StagedDirectory dir(out_dir);
   std::vector<json> own;
@@ -144,7 +144,14 @@ void write_slar_channel_products(const fs::path& out_dir, const Scene& scene,
     }
     fs::remove_all(sub);
   }
-  write_text_file_atomic(dir.path("metadata.json"), combine_metadata(channels, own).dump(2) + "\n");
+  json meta = combine_metadata(channels, own);
+  if (extra) {
+    json more = extra(dir.path(""));
+    for (auto& [file, what] : more["products"].items()) meta["products"][file] = what;
+    more.erase("products");
+    for (auto& [key, value] : more.items()) meta[key] = value;
+  }
+  write_text_file_atomic(dir.path("metadata.json"), meta.dump(2) + "\n");
   dir.commit();
 }
 

@@ -184,12 +184,14 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
     const SlarGeometry lc =
         slar_geometry_layout(scene, other.track, other.radar.azimuth_line_spacing_m);
     check_same_geometry(sim, other, layout, lc, c);
-    if (coherent || (other.radar.mode == RadarMode::sar && other.radar.sar.coherent)) {
+    if (options.polarimetric_channels) {
+      RIS_CHECK(coherent && other.radar.sar.coherent);
+    } else if (coherent || (other.radar.mode == RadarMode::sar && other.radar.sar.coherent)) {
       throw InputError(other.radar.source_file, "sar.coherent",
                        "the coherent SAR is a single-channel run for now; run each channel "
                        "alone, or set coherent = false");
     }
-    if (!options.targets.empty()) {
+    if (!options.targets.empty() && !options.polarimetric_channels) {
       throw InputError(other.radar.source_file, "targets",
                        "point targets are placed in single-channel runs only for now; run each "
                        "channel alone with its targets");
@@ -236,7 +238,10 @@ std::vector<SlarSimulation> simulate_slar_channels(const Scene& scene,
   keep.hidden_targets = &sim.hidden_targets;
   keep.block_lines = options.engine_block_lines;
   std::vector<SlarImageChannel> more;
-  for (std::size_t c = 1; c < nc; ++c) more.push_back({&rs[c].lut, &rs[c].imaging, &sims[c].image});
+  for (std::size_t c = 1; c < nc; ++c) {
+    more.push_back(
+        {&rs[c].lut, &rs[c].imaging, &sims[c].image, coherent && options.polarimetric_channels});
+  }
   sim.image = form_slar_image_fused(scene, sim.geometry, sim.scene_maps, rs[0].lut, rs[0].imaging,
                                     radar.source_file, keep, more);
   for (std::size_t c = 1; c < nc; ++c) {

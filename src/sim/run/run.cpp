@@ -4,6 +4,7 @@
 #include <omp.h>
 #include <spdlog/spdlog.h>
 
+#include <cctype>
 #include <chrono>
 #include <set>
 
@@ -17,6 +18,8 @@
 #include "ris/sim/acquisition_products.h"
 #include "ris/sim/acquisition_stream.h"
 #include "ris/sim/ppi_products.h"
+#include "ris/sim/quad_pol_products.h"
+#include "ris/sim/sar_quad_pol.h"
 #include "ris/sim/sar_coherent.h"
 #include "ris/sim/slar_channel_products.h"
 #include "ris/sim/slar_channels.h"
@@ -198,6 +201,30 @@ bool several_channels(const RadarParams& radar) {
 // `how`: "streamed", "acquisition" or "" (an in-memory scene run).
 void check_channels(const RunRequest& r, const RadarParams& radar, std::string_view how,
                     bool has_targets) {
+  if (radar.mode == RadarMode::sar && radar.sar.quad_pol) {
+    // A quad-pol SAR: an in-memory run of one polarimetric radar.
+    if (several_channels(radar)) {
+      throw InputError(radar.source_file, "sar.quad_pol",
+                       "a quad-pol radar forms its four channels itself; drop the [[channel]] "
+                       "tables or set quad_pol = false");
+    }
+    if (how == "streamed") {
+      throw InputError(radar.source_file, "sar.quad_pol",
+                       "quad-pol runs are in memory only for now; drop --stream and "
+                       "--block-lines, or set quad_pol = false");
+    }
+    if (how == "acquisition") {
+      throw InputError(radar.source_file, "sar.quad_pol",
+                       "quad-pol runs on an acquisition's grid are not built yet; run on a scene "
+                       "or set quad_pol = false");
+    }
+    if (asks_calibrated(r)) {
+      throw InputError(radar.source_file, "sar.quad_pol",
+                       "a quad-pol run writes no calibrated images yet; drop --calibrated (its "
+                       "SLCs are in sqrt(W))");
+    }
+    return;
+  }
   if (!several_channels(radar)) return;
   const std::string n = std::to_string(radar.channels.size());
   if (how == "streamed") {
@@ -364,6 +391,50 @@ void run_channels(RunResult& res, const LoadedSigma0& sigma0, const SlarOptions&
       warn(cb, "channel " + run.channels[c].name + ": " + w);
     render_slar_run(one, false, seed);
   }
+}
+
+// The pictures of a quad-pol run's four channels from its images.
+void render_quad_pol(MultiChannelSlarRun& run, std::uint64_t seed) {
+  RIS_CHECK(run.quad_pol && run.channels.size() == 4);
+  QuadPolRun& q = *run.quad_pol;
+  q.images = form_quad_pol(
+      {&run.channels[0].run.sim, &run.channels[1].run.sim, &run.channels[3].run.sim}, q.shapes,
+      q.targets, seed);
+  for (std::size_t c = 0; c < 4; ++c) {
+    SlarRun& one = run.channels[c].run;
+    one.pictures = render_slar(one.sim, seed, q.images.intensity[c]);
+  }
+}
+
+// A quad-pol SAR (ris/sim/sar_quad_pol.h), in memory: the HH, HV and VV
+// channels over one geometry, each element's scattering vector from its
+// category's covariance, HH, HV, VH and VV images with the run's seed.
+void run_quad_pol(RunResult& res, const LoadedSigma0& sigma0, const SlarOptions& options,
+                  const RunCallbacks& cb, std::uint64_t seed) {
+  MultiChannelSlarRun& run = res.run.emplace<MultiChannelSlarRun>();
+  run.quad_pol = std::make_shared<QuadPolRun>();
+  run.quad_pol->shapes = scene_polarimetry(*res.scene, *sigma0.source, res.radar);
+  run.quad_pol->targets = options.targets;
+  std::vector<SlarSimulation> sims =
+      simulate_quad_pol_channels(*res.scene, res.radar, *sigma0.source, options);
+  RIS_CHECK(sims.size() == 3);
+  // VH: HV's simulation (one reciprocal image), its own name and noise.
+  SlarSimulation vh = sims[1];
+  vh.radar.polarisation = Polarisation::VH;
+  vh.image.element_power_w.clear();
+  std::array<SlarSimulation*, 4> by_channel = {&sims[0], &sims[1], &vh, &sims[2]};
+  for (std::size_t c = 0; c < 4; ++c) {
+    std::string name(to_string(kQuadPolOrder[c]));
+    for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    ChannelRun one{name, sigma0.path, {}};
+    one.run.coherent = true;
+    one.run.sim = std::move(*by_channel[c]);
+    if (c == 0)
+      for (const std::string& w : one.run.sim.reported_warnings()) warn(cb, w);
+    run.channels.push_back(std::move(one));
+  }
+  if (cb.progress) cb.progress("quad-pol images", 0.8);
+  render_quad_pol(run, seed);
 }
 
 // The channels' products as ris/sim/slar_channel_products.h writes them.
@@ -575,6 +646,9 @@ RunResult run_simulation(const RunRequest& r, const RunCallbacks& cb) {
     for (const std::string& w : run.sim.warnings) warn(cb, w);
     stage("speckle and greytones", 0.9);
     run.pictures = render_ppi(run.sim, r.seed);
+  } else if (radar.mode == RadarMode::sar && radar.sar.quad_pol) {
+    run_quad_pol(res, sigma0, options, cb, r.seed);
+    stage("speckle and greytones", 0.9);
   } else if (several_channels(radar)) {
     run_channels(res, sigma0, options, cb, r.seed);
     stage("speckle and greytones", 0.9);
@@ -621,8 +695,9 @@ void rerender(RunResult& res, std::uint64_t seed, const FilmParams* film) {
   if (auto* multi = std::get_if<MultiChannelSlarRun>(&res.run)) {
     for (ChannelRun& c : multi->channels) {
       if (film != nullptr) c.run.sim.radar.film = *film;
-      render_slar_run(c.run, false, seed);
+      if (!multi->quad_pol) render_slar_run(c.run, false, seed);
     }
+    if (multi->quad_pol) render_quad_pol(*multi, seed);
     return;
   }
   SlarRun& run = *slar_image_run(res);
@@ -660,7 +735,14 @@ double write_run_products(const RunResult& res, const std::filesystem::path& out
   } else if (const auto* ppi = std::get_if<PpiRun>(&res.run)) {
     write_ppi_products(out_dir, *res.scene, ppi->sim, ppi->pictures, res.info);
   } else if (const auto* multi = std::get_if<MultiChannelSlarRun>(&res.run)) {
-    write_slar_channel_products(out_dir, *res.scene, channel_products(*multi), res.info);
+    ExtraRunProducts extra;
+    if (multi->quad_pol) {
+      extra = [&](const std::filesystem::path& staging) {
+        return write_quad_pol_products(staging, *res.scene, multi->channels[0].run.sim,
+                                       multi->quad_pol->images);
+      };
+    }
+    write_slar_channel_products(out_dir, *res.scene, channel_products(*multi), res.info, extra);
   } else {
     const SlarRun& run = std::get<SlarRun>(res.run);
     write_slar_products(out_dir, *res.scene, run.sim, run.pictures, res.info,

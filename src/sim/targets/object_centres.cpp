@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -37,6 +38,7 @@ int sinclair_index(Polarisation p) {
 
 struct Cell {
   std::complex<double> s{};
+  std::array<std::complex<double>, 4> s4{};  // a quad-pol run's S (SBR's index)
   double w = 0.0, w_along = 0.0, w_range = 0.0, w_height = 0.0;
   double n = 0.0, n_along = 0.0, n_range = 0.0, n_height = 0.0;
 };
@@ -123,14 +125,24 @@ ObjectResult trace_object(const TraceContext& ctx, std::size_t k) {
     const Vec3 mid = (ret.first_hit_m + ret.last_hit_m) * 0.5 + m.origin_m;
     const double along_m = track.along_cross(mid.x, mid.y).first;
     const double h_m = std::min(ret.first_hit_m.z, ret.last_hit_m.z) + m.origin_m.z;
-    const std::complex<double> s = ret.s[static_cast<std::size_t>(pq)];
+    // The cell's weight: |S_pq|^2 of the run's polarisation, or a quad-pol
+    // run's span / 2 (what a trihedral's co-pol RCS is), which places one
+    // centre for all four channels.
+    const std::complex<double> s = pq >= 0 ? ret.s[static_cast<std::size_t>(pq)] : 0.0;
     total += s;
     const auto key = one_centre ? std::pair<std::int64_t, std::int64_t>{0, 0}
                                 : std::pair<std::int64_t, std::int64_t>{
                                       static_cast<std::int64_t>(std::floor(along_m / cell_m)),
                                       static_cast<std::int64_t>(std::floor(range_m / cell_m))};
     Cell& c = cells[key];
-    const double w = std::norm(s);
+    double w = std::norm(s);
+    if (pq < 0) {
+      w = 0.0;
+      for (std::size_t i = 0; i < 4; ++i) {
+        c.s4[i] += ret.s[i];
+        w += 0.5 * std::norm(ret.s[i]);
+      }
+    }
     c.s += s;
     c.w += w;
     c.w_along += w * along_m;
@@ -142,9 +154,20 @@ ObjectResult trace_object(const TraceContext& ctx, std::size_t k) {
     c.n_height += h_m;
   }
   res.rcs_m2 = std::norm(total);
+  if (pq < 0) {
+    std::array<std::complex<double>, 4> sum{};
+    for (const auto& [key, c] : cells)
+      for (std::size_t i = 0; i < 4; ++i) sum[i] += c.s4[i];
+    res.rcs_m2 = 0.0;
+    for (std::size_t i = 0; i < 4; ++i) res.rcs_m2 += 0.5 * std::norm(sum[i]);
+  }
   int n = 0;
   for (const auto& [key, c] : cells) {
-    const double rcs = std::norm(c.s);
+    double rcs = std::norm(c.s);
+    if (pq < 0) {
+      rcs = 0.0;
+      for (std::size_t i = 0; i < 4; ++i) rcs += 0.5 * std::norm(c.s4[i]);
+    }
     if (!(rcs > 0.0)) continue;
     const bool weighted = c.w > 0.0;
     const double along = weighted ? c.w_along / c.w : c.n_along / c.n;
@@ -162,6 +185,7 @@ ObjectResult trace_object(const TraceContext& ctx, std::size_t k) {
     t.y_m = y;
     t.height_m = h - terrain;
     t.rcs_m2 = rcs;
+    if (pq < 0) t.sinclair = c.s4;
     t.source_file = obj.source;
     t.index = static_cast<int>(k);
     t.from_object = true;
@@ -190,7 +214,10 @@ std::vector<PointTarget> object_scattering_centres(const std::vector<CulturalObj
   const ObjectSceneMesh m = build_object_scene(objects, scene, library, radar.frequency_hz);
   const EmbreeScene bvh(m.mesh);
   const double lambda = kSpeedOfLight_m_per_s / radar.frequency_hz;
-  const int pq = sinclair_index(radar.polarisation);
+  // -1: every element of S (a quad-pol SAR, ris/sim/sar_quad_pol.h).
+  const int pq = radar.mode == RadarMode::sar && radar.sar.quad_pol
+                     ? -1
+                     : sinclair_index(radar.polarisation);
   const double cell_m = std::max(scene.dx_m, scene.dy_m);
   ObjectCentreStats st;
   st.objects = static_cast<std::int64_t>(objects.size());
