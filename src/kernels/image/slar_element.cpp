@@ -618,7 +618,8 @@ void scatter_channel_elements(std::span<const SlarElementContext* const> channel
                           ratio + static_cast<std::size_t>(k) * kChunk,
                           s.area.data() + o};
       ratio_pass(m, pt, io);
-      float* kept = element_power_w.empty() ? nullptr : element_power_w[static_cast<std::size_t>(k)];
+      float* kept =
+          element_power_w.empty() ? nullptr : element_power_w[static_cast<std::size_t>(k)];
       if (kept) {
         const float* r = ratio + static_cast<std::size_t>(k) * kChunk;
         for (int j = 0; j < m; ++j) {

@@ -23,8 +23,8 @@ namespace {
 using cd = std::complex<double>;
 using cf = std::complex<float>;
 
-constexpr std::uint32_t kQuadPolStream = 0x51504C00u;     // "QPL\0": the elements' vectors
-constexpr std::uint32_t kQuadNoiseStream = 0x514E4F00u;   // "QNO\0" + channel: thermal noise
+constexpr std::uint32_t kQuadPolStream = 0x51504C00u;    // "QPL\0": the elements' vectors
+constexpr std::uint32_t kQuadNoiseStream = 0x514E4F00u;  // "QNO\0" + channel: thermal noise
 constexpr double kInvSqrt2 = 0.70710678118654752440;
 
 // The Sinclair matrix a point target carries (receive-transmit index: HH,
@@ -45,8 +45,9 @@ struct QuadRows {
 };
 
 void range_compress_quad_line(const detail::CoherentResponse& h, const SlarGeometry& g, int line,
-                              const std::array<const float*, 3>& power_w, const CategoryShapes& shapes,
-                              int bins, std::uint64_t seed, const QuadRows& out) {
+                              const std::array<const float*, 3>& power_w,
+                              const CategoryShapes& shapes, int bins, std::uint64_t seed,
+                              const QuadRows& out) {
   std::fill(out.hh, out.hh + bins, cf(0.0f, 0.0f));
   std::fill(out.hv, out.hv + bins, cf(0.0f, 0.0f));
   std::fill(out.vv, out.vv + bins, cf(0.0f, 0.0f));
@@ -208,13 +209,12 @@ QuadPolImages form_quad_pol(const std::array<const SlarSimulation*, 3>& sims,
 #pragma omp parallel for schedule(dynamic, 8)
   for (int line = 0; line < lines; ++line) {
     const std::size_t e = g.index(line, 0), o = img.index(line, 0);
-    range_compress_quad_line(h, g, line,
-                             {sims[0]->image.element_power_w.data() + e,
-                              sims[1]->image.element_power_w.data() + e,
-                              sims[2]->image.element_power_w.data() + e},
-                             shapes, bins, seed,
-                             {range_lines[0].data() + o, range_lines[1].data() + o,
-                              range_lines[2].data() + o});
+    range_compress_quad_line(
+        h, g, line,
+        {sims[0]->image.element_power_w.data() + e, sims[1]->image.element_power_w.data() + e,
+         sims[2]->image.element_power_w.data() + e},
+        shapes, bins, seed,
+        {range_lines[0].data() + o, range_lines[1].data() + o, range_lines[2].data() + o});
   }
   // Azimuth compression (no noise yet: HV and VH share it), then each
   // channel's own thermal noise.

@@ -93,12 +93,16 @@ QuadRunForTest run_quad(const Scene& scene, const RadarParams& radar, const Slar
 
 // L L^H of an element factor (reflection-symmetric lower triangle).
 Hermitian3 product(const ElementFactor& f) {
-  Hermitian3 l = Hermitian3::Zero();
+  Hermitian3 l;
   l(0, 0) = f.l11;
   l(1, 1) = f.l22;
   l(2, 0) = f.l31;
   l(2, 2) = f.l33;
-  return l * l.adjoint();
+  Hermitian3 out;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) out(i, j) += l(i, k) * std::conj(l(j, k));
+  return out;
 }
 
 TEST(SarQuadPol, ElementFactorReproducesTheCategoryCovariance) {

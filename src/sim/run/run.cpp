@@ -19,8 +19,8 @@
 #include "ris/sim/acquisition_stream.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/quad_pol_products.h"
-#include "ris/sim/sar_quad_pol.h"
 #include "ris/sim/sar_coherent.h"
+#include "ris/sim/sar_quad_pol.h"
 #include "ris/sim/slar_channel_products.h"
 #include "ris/sim/slar_channels.h"
 #include "ris/sim/slar_products.h"
@@ -397,9 +397,9 @@ void run_channels(RunResult& res, const LoadedSigma0& sigma0, const SlarOptions&
 void render_quad_pol(MultiChannelSlarRun& run, std::uint64_t seed) {
   RIS_CHECK(run.quad_pol && run.channels.size() == 4);
   QuadPolRun& q = *run.quad_pol;
-  q.images = form_quad_pol(
-      {&run.channels[0].run.sim, &run.channels[1].run.sim, &run.channels[3].run.sim}, q.shapes,
-      q.targets, seed);
+  q.images =
+      form_quad_pol({&run.channels[0].run.sim, &run.channels[1].run.sim, &run.channels[3].run.sim},
+                    q.shapes, q.targets, seed);
   for (std::size_t c = 0; c < 4; ++c) {
     SlarRun& one = run.channels[c].run;
     one.pictures = render_slar(one.sim, seed, q.images.intensity[c]);

@@ -215,9 +215,8 @@ std::vector<PointTarget> object_scattering_centres(const std::vector<CulturalObj
   const EmbreeScene bvh(m.mesh);
   const double lambda = kSpeedOfLight_m_per_s / radar.frequency_hz;
   // -1: every element of S (a quad-pol SAR, ris/sim/sar_quad_pol.h).
-  const int pq = radar.mode == RadarMode::sar && radar.sar.quad_pol
-                     ? -1
-                     : sinclair_index(radar.polarisation);
+  const int pq =
+      radar.mode == RadarMode::sar && radar.sar.quad_pol ? -1 : sinclair_index(radar.polarisation);
   const double cell_m = std::max(scene.dx_m, scene.dy_m);
   ObjectCentreStats st;
   st.objects = static_cast<std::int64_t>(objects.size());
