@@ -40,6 +40,7 @@
 #                                    (scripts/serve_screenshot.py); skipped
 #                                    with a note when Chromium is missing
 #   town-sar-x-ground-range          README.md "Buildings and reflectors" (ground_range.png, 600 px)
+#   town-quadpol-pauli               README.md, docs/polarimetry.md (polsar/pauli.png, 600 px)
 #   stream-40k-ground-range          README.md, docs/performance.md (--heavy only)
 # The pic_* functions are called by name ("pic_$name"), which shellcheck cannot see.
 # shellcheck disable=SC2317
@@ -246,6 +247,15 @@ pic_town-sar-x-ground-range() {
   put town.png town-sar-x-ground-range
 }
 
+# README.md "SAR, PPI and point targets", docs/polarimetry.md: the town's
+# quad-pol Pauli picture (slant range, near range left).
+pic_town-quadpol-pauli() {
+  run simulate --quiet --scene "$DATA/scenes/town.toml" \
+      --radar "$DATA/radars/sar-x-band-town-quadpol.toml" --out out-town-qp
+  shrink out-town-qp/polsar/pauli.png pauli.png 600 0
+  put pauli.png town-quadpol-pauli
+}
+
 # README.md "Large scenes"; docs/performance.md. --heavy only.
 pic_stream-40k-ground-range() {
   run scene fractal --generator noise --size 40000 --cell-size 5 --relief 2000 \
@@ -260,7 +270,8 @@ ALL=(ku-geometric-preview slar-ku-geometric-fig4-5 slar-ku-geometric-fig7
      fractal-alps-geocoded sar-ku-geometric-corner-reflectors ppi-ku-geometric-mast-30m
      ppi-ku-geometric-nav-10000ft topo-winnipeg-incidence topo-winnipeg-simamp
      simulate-sanand-mean fading compare-ku-geometric-two-seeds
-     sensitivity-ku-geometric-cell-factor town-sar-x-ground-range serve-page)
+     sensitivity-ku-geometric-cell-factor town-sar-x-ground-range town-quadpol-pauli
+     serve-page)
 # --check: a few seconds of the cheapest commands, one of each kind of
 # conversion (ris's PNG, halved by gdal_translate, composed in Python).
 QUICK=(ku-geometric-preview sigma0-ku-geometric-8.6GHz fractal-alps-preview

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "bench_objects.h"
+#include "bench_quad_pol.h"
 #include "command_registry.h"
 #include "ris/backscatter/library.h"
 #include "ris/perf/bench_setup.h"
@@ -327,6 +328,7 @@ void run_bench(const BenchArgs& a) {
         threads, 1e3 * t1, 1e3 * t4, t4 / t1);
     fmt::print("channels_4_over_1={:.3f}\n", t4 / t1);
   }
+  run_quad_pol_bench(ris::data_dir().string(), a.repeats);
 
   // Bandwidth baseline on the same scene, same run.
   {
