@@ -38,6 +38,7 @@
 #include "ris/image/compare_report.h"
 #include "ris/image/geocode.h"
 #include "ris/image/greytone_image.h"
+#include "ris/image/polsar/quad_pol_slc.h"
 #include "ris/image/quality_report.h"
 #include "ris/image/slar_image.h"
 #include "ris/io/compression_preset.h"
@@ -58,6 +59,7 @@
 #include "ris/sim/point_target_irf.h"
 #include "ris/sim/ppi_products.h"
 #include "ris/sim/run.h"
+#include "ris/sim/sar_quad_pol.h"
 #include "ris/sim/slar_products.h"
 #include "ris/util/data_dir.h"
 #include "ris/util/error.h"
@@ -369,6 +371,56 @@ struct PyResult {
     for (const std::string& n : channel_names()) names += (names.empty() ? "" : ", ") + n;
     throw ris::InputError(res->info.radar_path, "channel",
                           "no channel \"" + name + "\" (the channels: " + names + ")");
+  }
+
+  // A quad-pol run's images and what formed them (ris/sim/sar_quad_pol.h).
+  const ris::QuadPolRun& quad_pol() const {
+    require_in_memory();
+    const auto* multi = std::get_if<ris::MultiChannelSlarRun>(&res->run);
+    if (multi == nullptr || !multi->quad_pol) {
+      throw ris::InputError(res->info.radar_path, "sar.quad_pol",
+                            "not a quad-pol run: set [sar] quad_pol = true (with coherent = "
+                            "true) in the radar file");
+    }
+    return *multi->quad_pol;
+  }
+  // The four SLCs (HH, HV, VH, VV), complex64, (4, lines, bins).
+  py::array_t<std::complex<float>> quad_pol_slc() const {
+    const ris::QuadPolImages& q = quad_pol().images;
+    py::array_t<std::complex<float>> a({py::ssize_t{4}, py::ssize_t{q.lines}, py::ssize_t{q.bins}});
+    std::complex<float>* d = a.mutable_data();
+    for (std::size_t c = 0; c < 4; ++c) d = std::copy(q.slc[c].begin(), q.slc[c].end(), d);
+    return a;
+  }
+  // C3 or T3 averaged over a window x window boxcar (as ris polsar), complex64
+  // (3, 3, lines, bins).
+  py::array_t<std::complex<float>> quad_pol_matrix(const std::string& kind, int window) const {
+    if (kind != "c3" && kind != "t3") {
+      throw ris::InputError("", "kind", "expected \"c3\" or \"t3\", got \"" + kind + "\"");
+    }
+    if (window < 1 || window % 2 == 0) {
+      throw ris::InputError("", "window",
+                            "expected an odd number of pixels >= 1, got " + std::to_string(window));
+    }
+    const ris::QuadPolImages& q = quad_pol().images;
+    ris::QuadPolSlc set;
+    set.cols = q.bins;
+    set.rows = q.lines;
+    set.hh = q.slc[0];
+    set.hv = q.slc[1];
+    set.vh = q.slc[2];
+    set.vv = q.slc[3];
+    ris::CovarianceImage c = ris::boxcar_average(ris::single_look_c3(set), window, window);
+    if (kind == "t3") c = ris::to_t3(c);
+    const auto n = static_cast<py::ssize_t>(c.m.size());
+    py::array_t<std::complex<float>> a(
+        {py::ssize_t{3}, py::ssize_t{3}, py::ssize_t{c.rows}, py::ssize_t{c.cols}});
+    std::complex<float>* d = a.mutable_data();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (py::ssize_t k = 0; k < n; ++k)
+          *d++ = std::complex<float>(c.m[static_cast<std::size_t>(k)](i, j));
+    return a;
   }
 
   // A streamed run's blocks and passes (`ris simulate --stream`'s report).
@@ -1023,6 +1075,8 @@ void bind_result(py::module_& m) {
       .def_property_readonly("out_dir", [](const PyResult& r) { return r.out_dir.string(); })
       .def("stream_summary", &PyResult::stream_summary)
       .def_property_readonly("channels", &PyResult::channel_names)
+      .def("quad_pol_slc", &PyResult::quad_pol_slc)
+      .def("quad_pol_matrix", &PyResult::quad_pol_matrix)
       .def("channel", &PyResult::channel);
   py::class_<PyRunOptions>(m, "_RunOptions")
       .def(py::init<>())

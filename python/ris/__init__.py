@@ -488,6 +488,45 @@ class Result:
         return Result(self._impl.channel(name), self.scene)
 
     @property
+    def slc(self):
+        """A quad-pol run ([sar] quad_pol = true): the four single-look complex
+        images, complex64 of shape (4, line, bin) in the order HH, HV, VH, VV
+        (transmit first; sqrt(W): abs(z)**2 is the pixel's power in watts,
+        NaN for no data). Other runs: InputError naming sar.quad_pol."""
+        return self._impl.quad_pol_slc()
+
+    def polarimetric_matrix(self, kind="c3", window=7):
+        """A quad-pol run's C3 (lexicographic, [HH, sqrt2 HV, VV]) or T3
+        (Pauli) per pixel, averaged over a window x window boxcar (odd; cut at
+        the edges) as ``ris polsar`` does: complex64, shape (3, 3, line, bin)."""
+        return self._impl.quad_pol_matrix(kind, int(window))
+
+    def polsar_xarray(self, window=7):
+        """A quad-pol run as an ``xarray.Dataset``: slc on (polarisation, line,
+        bin), c3 and t3 on (row, col, line, bin) at the boxcar window, with
+        to_xarray()'s line and bin coordinates (needs Debian's python3-xarray)."""
+        xr = _xarray()
+        import json
+        slc = self.slc
+        lines = slc.shape[1]
+        hh = self.channel("hh")  # the geometry's channel: line and bin coordinates
+        spacing = hh._impl.line_spacing_m()
+        coords = dict(polarisation=("polarisation", ["HH", "HV", "VH", "VV"],
+                                    {"long_name": "transmit, receive"}),
+                      line=("line", (np.arange(lines) + 0.5) * spacing,
+                            {"units": "m", "long_name": "along-track distance of the line centre"}),
+                      bin=("bin", hh.slant_range_m,
+                           {"units": "m", "long_name": "slant range of the bin centre"}))
+        m = ("row", "col", "line", "bin")
+        data = {"slc": (("polarisation", "line", "bin"), slc, {"units": "sqrt(W)"}),
+                "c3": (m, self.polarimetric_matrix("c3", window), {"units": "W"}),
+                "t3": (m, self.polarimetric_matrix("t3", window), {"units": "W"})}
+        return xr.Dataset(data, coords=coords,
+                          attrs=dict(kind=self.kind, seed=self.seed, window=int(window),
+                                     basis="C3: [HH, sqrt2 HV, VV]; T3: [HH+VV, HH-VV, 2HV]/sqrt2",
+                                     metadata=json.dumps(self.metadata)))
+
+    @property
     def metadata(self):
         """metadata.json's content as a dict."""
         return self._impl.metadata()
