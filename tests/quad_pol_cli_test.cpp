@@ -183,12 +183,21 @@ TEST(QuadPolCli, ReflectorsDecomposeAsTheirSinclairMatrices) {
   EXPECT_NEAR(ratio_db(rolled, 2, 1), 0.0, 0.1);
   EXPECT_GT(alpha.at(rolled.r, rolled.c).real(), 80.0);
 
+  // Compact pol (CTLR) of the same set: m-chi's odd bounce at the
+  // trihedral, even bounce at the dihedral.
+  const Raster odd = read_band(out / "polsar" / "m_chi.tif", 7);
+  const Raster even = read_band(out / "polsar" / "m_chi.tif", 8);
+  EXPECT_GT(odd.at(tri.r, tri.c).real(), 10.0 * even.at(tri.r, tri.c).real());
+  EXPECT_GT(even.at(di.r, di.c).real(), 10.0 * odd.at(di.r, di.c).real());
+
   const nlohmann::json m = nlohmann::json::parse(test::read_file(out / "metadata.json"));
   ASSERT_TRUE(m.contains("quad_pol")) << m.dump(1);
   EXPECT_EQ(m["quad_pol"]["looks"], 1);
   EXPECT_EQ(m["quad_pol"]["channels"].size(), 4u);
   EXPECT_TRUE(m["products"].contains("slc_hh.tif"));
-  for (const char* f : {"c3.tif", "t3.tif", "h_a_alpha.tif", "freeman_durden.tif", "pauli.png"}) {
+  for (const char* f :
+       {"c3.tif", "t3.tif", "h_a_alpha.tif", "freeman_durden.tif", "pauli.png", "dual_h_c2.tif",
+        "dual_v_c2.tif", "compact_rh.tif", "compact_rv.tif", "compact_c2.tif", "m_chi.tif"}) {
     EXPECT_TRUE(fs::exists(out / "polsar" / f)) << f;
   }
 }

@@ -23,6 +23,7 @@ namespace {
 
 struct PolsarOptions {
   std::string hh, hv, vh, vv, product, frequency = "A", window = "7", out;
+  bool syntheses = false;
 };
 
 // "N" (N x N) or "RxC", each odd and in 1..101.
@@ -68,7 +69,7 @@ void run_polsar(const PolsarOptions& o) {
   const PolsarWindow w = parse_window(o.window);
   const QuadPolSlc s = rasters ? read_quad_pol_rasters({o.hh, o.hv, o.vh, o.vv})
                                : read_quad_pol_nisar(o.product, o.frequency);
-  const nlohmann::json j = write_polsar_products(s, w, o.out);
+  const nlohmann::json j = write_polsar_products(s, w, o.out, o.syntheses);
   fmt::print("ris polsar: {} x {} pixels, window {} x {}, written to {}\n", s.cols, s.rows, w.rows,
              w.cols, o.out);
   const auto& st = j["statistics"];
@@ -95,6 +96,9 @@ void add_polsar(CLI::App& app) {
   cmd->add_option("--window", o->window, "Boxcar window: N or RxC odd pixels (rows x columns)")
       ->capture_default_str();
   cmd->add_option("--out", o->out, "Output folder")->required();
+  cmd->add_flag("--syntheses", o->syntheses,
+                "Also the dual-pol (HH+HV, VV+VH) and compact-pol (CTLR) images of the set: C2, "
+                "the compact SLCs, Stokes and m-chi");
   cmd->callback([o] { run_polsar(*o); });
 }
 

@@ -4,11 +4,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "ris/image/polsar/decompositions.h"
+#include "ris/image/polsar/pol_synthesis.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/raster_io.h"
 
@@ -66,10 +68,83 @@ struct Range {
   }
 };
 
+// C11, C12 and C22 of a two-channel covariance (top-left 2 x 2).
+void write_c2_bands(const CovarianceImage& c, const std::filesystem::path& path,
+                    const Georef* georef) {
+  const std::size_t n = c.m.size();
+  std::vector<std::vector<float>> d(4, std::vector<float>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    d[0][i] = static_cast<float>(c.m[i](0, 0).real());
+    d[1][i] = static_cast<float>(c.m[i](0, 1).real());
+    d[2][i] = static_cast<float>(c.m[i](0, 1).imag());
+    d[3][i] = static_cast<float>(c.m[i](1, 1).real());
+  }
+  write_geotiff_bands<float>(path,
+                             {{d[0].data(), "C11"},
+                              {d[1].data(), "C12_real"},
+                              {d[2].data(), "C12_imag"},
+                              {d[3].data(), "C22"}},
+                             c.cols, c.rows, georef);
+}
+
+// The dual- and compact-pol products (ris/image/polsar/pol_synthesis.h).
+nlohmann::json write_synthesis_products(const QuadPolSlc& s, const PolsarWindow& window,
+                                        const StagedDirectory& dir, const Georef* georef) {
+  const auto c2_of = [&](TwoChannelMode mode) {
+    return boxcar_c2(synthesise_two_channel(s, mode), window.rows, window.cols);
+  };
+  write_c2_bands(c2_of(TwoChannelMode::dual_h), dir.path("dual_h_c2.tif"), georef);
+  write_c2_bands(c2_of(TwoChannelMode::dual_v), dir.path("dual_v_c2.tif"), georef);
+  const TwoChannelSlc compact = synthesise_two_channel(s, TwoChannelMode::compact_ctlr);
+  write_geotiff(dir.path("compact_rh.tif"), compact.a.data(), s.cols, s.rows, georef, std::nullopt,
+                {}, "RH (transmit right-circular, receive H)");
+  write_geotiff(dir.path("compact_rv.tif"), compact.b.data(), s.cols, s.rows, georef, std::nullopt,
+                {}, "RV (transmit right-circular, receive V)");
+  const CovarianceImage c2 = boxcar_c2(compact, window.rows, window.cols);
+  write_c2_bands(c2, dir.path("compact_c2.tif"), georef);
+  const std::size_t n = c2.m.size();
+  constexpr std::size_t kBands = 9;
+  std::vector<std::vector<float>> d(kBands, std::vector<float>(n));
+  std::array<Range, kBands> r;
+  for (std::size_t i = 0; i < n; ++i) {
+    const StokesMChi p = stokes_m_chi(c2.m[i]);
+    const std::array<double, kBands> v = {p.g0,  p.g1,   p.g2,    p.g3, p.m, p.chi_rad * kRadToDeg,
+                                          p.odd, p.even, p.volume};
+    for (std::size_t b = 0; b < kBands; ++b) {
+      d[b][i] = static_cast<float>(v[b]);
+      r[b].add(v[b]);
+    }
+  }
+  const std::array<const char*, kBands> names = {"g0",      "g1",  "g2",   "g3",    "m",
+                                                 "chi_deg", "odd", "even", "volume"};
+  std::vector<BandView<float>> bands;
+  nlohmann::json stats;
+  for (std::size_t b = 0; b < kBands; ++b) {
+    bands.push_back({d[b].data(), names[b]});
+    stats[names[b]] = r[b].json();
+  }
+  write_geotiff_bands<float>(dir.path("m_chi.tif"), bands, s.cols, s.rows, georef);
+  return {{"products",
+           {"dual_h_c2.tif", "dual_v_c2.tif", "compact_rh.tif", "compact_rv.tif", "compact_c2.tif",
+            "m_chi.tif"}},
+          {"dual_h", "transmit H, receive H and V: (HH, HV)"},
+          {"dual_v", "transmit V, receive V and H: (VV, VH)"},
+          {"compact",
+           "CTLR (Raney 2007): transmit (1, -i)/sqrt2, RH = (HH - i VH)/sqrt2, RV = (HV - i "
+           "VV)/sqrt2; names transmit first"},
+          {"stokes",
+           "g0 = <|RH|^2 + |RV|^2>, g1 = <|RH|^2 - |RV|^2>, g2 = 2 Re <RH RV*>, "
+           "g3 = -2 Im <RH RV*>"},
+          {"m_chi",
+           "Raney et al. 2012: sin 2chi = -g3 / (m g0); odd = m g0 (1 + sin 2chi) / 2, even = "
+           "m g0 (1 - sin 2chi) / 2, volume = g0 (1 - m)"},
+          {"statistics", stats}};
+}
+
 }  // namespace
 
 nlohmann::json write_polsar_products(const QuadPolSlc& s, const PolsarWindow& window,
-                                     const std::filesystem::path& out_dir) {
+                                     const std::filesystem::path& out_dir, bool syntheses) {
   const CovarianceImage c3 = boxcar_average(single_look_c3(s), window.rows, window.cols);
   const CovarianceImage t3 = to_t3(c3);
   const std::vector<CloudePottier> hal = cloude_pottier_image(t3);
@@ -128,6 +203,10 @@ nlohmann::json write_polsar_products(const QuadPolSlc& s, const PolsarWindow& wi
   j["statistics"] = {{"entropy", hr.json()},       {"anisotropy", ar.json()},
                      {"alpha_deg", alr.json()},    {"freeman_odd", oddr.json()},
                      {"freeman_dbl", dblr.json()}, {"freeman_vol", volr.json()}};
+  if (syntheses) {
+    j["syntheses"] = write_synthesis_products(s, window, dir, georef);
+    for (const auto& f : j["syntheses"]["products"]) j["products"].push_back(f);
+  }
   write_text_file_atomic(dir.path("metadata.json"), j.dump(1) + "\n");
   dir.commit();
   return j;

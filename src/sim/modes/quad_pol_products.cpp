@@ -59,10 +59,12 @@ nlohmann::json write_quad_pol_products(const std::filesystem::path& dir, const S
   // The decompositions of the simulated set, as ris polsar makes them of a
   // real one (so like is compared with like).
   const nlohmann::json polsar =
-      write_polsar_products(set, {kQuadPolWindow, kQuadPolWindow}, dir / "polsar");
+      write_polsar_products(set, {kQuadPolWindow, kQuadPolWindow}, dir / "polsar", true);
   products["polsar/"] = fmt::format(
-      "ris polsar of the four SLCs at a {0} x {0} boxcar: c3.tif, t3.tif, h_a_alpha.tif, "
-      "freeman_durden.tif, pauli.png, metadata.json",
+      "ris polsar --syntheses of the four SLCs at a {0} x {0} boxcar: c3.tif, t3.tif, "
+      "h_a_alpha.tif, freeman_durden.tif, pauli.png, the dual- and compact-pol images "
+      "(dual_h_c2.tif, dual_v_c2.tif, compact_rh.tif, compact_rv.tif, compact_c2.tif, "
+      "m_chi.tif), metadata.json",
       kQuadPolWindow);
   nlohmann::json info = {
       {"channels", {"HH", "HV", "VH", "VV"}},

@@ -8,6 +8,14 @@
 //   freeman_durden.tif  Freeman_Odd (surface), Freeman_Dbl, Freeman_Vol
 //   pauli.png           the Pauli picture (red |HH-VV|, green |HV|, blue |HH+VV|)
 //   metadata.json       inputs, window, conventions, summary statistics
+// and with `syntheses` the dual- and compact-pol images of the same set
+// (ris/image/polsar/pol_synthesis.h), at the same window:
+//   dual_h_c2.tif, dual_v_c2.tif, compact_c2.tif
+//                       4 float bands C11, C12_real, C12_imag, C22 of
+//                       (HH, HV), (VV, VH), (RH, RV)
+//   compact_rh.tif, compact_rv.tif
+//                       the compact (CTLR) SLCs, CFloat32
+//   m_chi.tif           g0, g1, g2, g3, m, chi_deg, odd, even, volume
 // written into a staged folder that appears whole or not at all.
 //
 // Example:
@@ -28,6 +36,6 @@ struct PolsarWindow {
 };
 
 nlohmann::json write_polsar_products(const QuadPolSlc& s, const PolsarWindow& window,
-                                     const std::filesystem::path& out_dir);
+                                     const std::filesystem::path& out_dir, bool syntheses = false);
 
 }  // namespace ris
