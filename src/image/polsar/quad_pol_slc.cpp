@@ -200,6 +200,7 @@ CovarianceImage single_look_c3(const QuadPolSlc& s) {
   c.cols = s.cols;
   c.rows = s.rows;
   c.m.resize(s.hh.size());
+#pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < s.hh.size(); ++i) {
     const Sinclair sm{Complex(s.hh[i]), Complex(s.hv[i]), Complex(s.vh[i]), Complex(s.vv[i])};
     c.m[i] = outer(lexicographic_vector(sm));
@@ -215,7 +216,9 @@ CovarianceImage boxcar_average(const CovarianceImage& c, int window_rows, int wi
            static_cast<std::size_t>(col);
   };
   // Along rows (each line's running sum), then along columns.
+  // Each output pixel is summed in the same order on any thread.
   CovarianceImage across = c;
+#pragma omp parallel for schedule(static)
   for (int r = 0; r < c.rows; ++r) {
     for (int col = 0; col < c.cols; ++col) {
       const int c0 = std::max(0, col - hc), c1 = std::min(c.cols - 1, col + hc);
@@ -225,6 +228,7 @@ CovarianceImage boxcar_average(const CovarianceImage& c, int window_rows, int wi
     }
   }
   CovarianceImage out = c;
+#pragma omp parallel for schedule(static)
   for (int col = 0; col < c.cols; ++col) {
     for (int r = 0; r < c.rows; ++r) {
       const int r0 = std::max(0, r - hr), r1 = std::min(c.rows - 1, r + hr);
