@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <numbers>
 
@@ -85,28 +86,37 @@ void render_optical(const Scene& scene, const EoSensorConfig& cfg, const EoSurfa
   img.shadowed_cells = shadowed;
 }
 
+// The surface temperature depends on the category only (flat-ground
+// forcing), so each category's band brightness temperatures are computed
+// once; the per-cell loop adds the noise.
 void render_thermal(const Scene& scene, const EoSensorConfig& cfg, const EoSurfaceTable& table,
                     EoImage& img) {
   const DiurnalForcing f =
       solar_forcing(cfg.when, img.latitude_deg, img.longitude_deg, 8, cfg.transmittance);
   const double t_s = cfg.when.hour * 3600.0;
+  std::map<std::int32_t, std::vector<double>> by_category;
+  for (const auto& [id, surf] : table.by_category) {
+    const ThermalSurface ts{cfg.mean_temperature_k, surf.thermal_inertia, surf.albedo,
+                            surf.emissivity_lwir};
+    const double temp = surface_temperature_k(ts, f, t_s);
+    std::vector<double>& v = by_category[id];
+    for (EoBand band : cfg.bands) {
+      const SpectralBand range = eo_band_info(band).range;
+      const double sky =
+          cfg.sky_temperature_k > 0 ? planck_band_radiance(range, cfg.sky_temperature_k) : 0.0;
+      const double l = thermal_leaving_radiance(band_property(surf, band),
+                                                planck_band_radiance(range, temp), sky);
+      v.push_back(l > 0 ? brightness_temperature_k(range, l) : 0.0);
+    }
+  }
 #pragma omp parallel for schedule(static)
   for (int r = 0; r < scene.rows; ++r) {
     for (int c = 0; c < scene.cols; ++c) {
       const std::size_t i = scene.index(r, c);
       if (!scene.valid[i]) continue;
-      const EoSurface& surf = table.at(scene.category[i]);
-      const ThermalSurface ts{cfg.mean_temperature_k, surf.thermal_inertia, surf.albedo,
-                              surf.emissivity_lwir};
-      const double temp = surface_temperature_k(ts, f, t_s);
+      const std::vector<double>& v = by_category.at(scene.category[i]);
       for (std::size_t b = 0; b < cfg.bands.size(); ++b) {
-        const SpectralBand range = eo_band_info(cfg.bands[b]).range;
-        const double sky =
-            cfg.sky_temperature_k > 0 ? planck_band_radiance(range, cfg.sky_temperature_k) : 0.0;
-        const double l = thermal_leaving_radiance(band_property(surf, cfg.bands[b]),
-                                                  planck_band_radiance(range, temp), sky);
-        img.bands[b][i] = static_cast<float>(
-            add_noise(l > 0 ? brightness_temperature_k(range, l) : 0.0, cfg, r, c, b));
+        img.bands[b][i] = static_cast<float>(add_noise(v[b], cfg, r, c, b));
       }
     }
   }
