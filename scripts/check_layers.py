@@ -17,9 +17,11 @@ import sys
 # sim. perf holds the bench scene set-up (builds a scene, a radar and runs the
 # simulation), so it sits above sim too: it may include sim, and only apps and
 # benches include it. serve is the HTTP server of `ris serve`
-# (it runs simulations through sim and draws through image).
+# (it runs simulations through sim and draws through image). sensors_eo
+# (optical and thermal sensors, docs/sensors.md) casts shadow rays through the
+# objects layer's Embree scene, so it sits above objects.
 LAYERS = ["util", "io", "scene", "sensor", "backscatter", "geometry", "objects",
-          "image",
+          "sensors_eo", "image",
           "sim", "analysis", "perf", "serve", "apps"]
 RANK = {name: i for i, name in enumerate(LAYERS)}
 # The SIMD kernels (src/kernels/<folder>/, beside their portable twins) are
