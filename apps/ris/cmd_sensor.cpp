@@ -24,6 +24,7 @@
 #include "ris/io/raster_io.h"
 #include "ris/scene/geo_frame.h"
 #include "ris/scene/scene_source.h"
+#include "ris/sensors_eo/camera_view.h"
 #include "ris/sensors_eo/eo_render.h"
 #include "ris/util/error.h"
 
@@ -78,24 +79,25 @@ std::vector<std::uint8_t> stretch(const std::vector<float>& v) {
   return out;
 }
 
-void write_preview(const std::filesystem::path& path, const ris::EoImage& img) {
+void write_preview(const std::filesystem::path& path, const std::vector<std::string>& names,
+                   const std::vector<std::vector<float>>& bands, int cols, int rows) {
   auto find = [&](const char* n) {
-    const auto it = std::find(img.band_names.begin(), img.band_names.end(), n);
-    return it == img.band_names.end() ? -1 : static_cast<int>(it - img.band_names.begin());
+    const auto it = std::find(names.begin(), names.end(), n);
+    return it == names.end() ? -1 : static_cast<int>(it - names.begin());
   };
   const int r = find("red"), g = find("green"), b = find("blue");
   if (r < 0 || g < 0 || b < 0) {
-    ris::write_png_gray(path, stretch(img.bands[0]).data(), img.cols, img.rows);
+    ris::write_png_gray(path, stretch(bands[0]).data(), cols, rows);
     return;
   }
-  const auto sr = stretch(img.bands[r]), sg = stretch(img.bands[g]), sb = stretch(img.bands[b]);
+  const auto sr = stretch(bands[r]), sg = stretch(bands[g]), sb = stretch(bands[b]);
   std::vector<std::uint8_t> rgb(sr.size() * 3);
   for (std::size_t i = 0; i < sr.size(); ++i) {
     rgb[3 * i] = sr[i];
     rgb[3 * i + 1] = sg[i];
     rgb[3 * i + 2] = sb[i];
   }
-  ris::write_png_rgb(path, rgb.data(), img.cols, img.rows);
+  ris::write_png_rgb(path, rgb.data(), cols, rows);
 }
 
 nlohmann::json metadata(const SensorArgs& a, const ris::EoSensorConfig& cfg,
@@ -125,6 +127,66 @@ nlohmann::json metadata(const SensorArgs& a, const ris::EoSensorConfig& cfg,
   return md;
 }
 
+// The scene-grid image the camera looks at: without noise (the camera adds
+// its own per pixel); the same image when the sensor has none.
+ris::EoImage noise_free(const ris::Scene& scene, const ris::EoSensorConfig& cfg,
+                        const ris::EoSurfaceTable& table, const ris::EoImage& img, double lat,
+                        double lon) {
+  if (cfg.noise == 0) return img;
+  ris::EoSensorConfig quiet = cfg;
+  quiet.noise = 0;
+  return ris::render_eo(scene, quiet, table, lat, lon);
+}
+
+// camera_*.tif (GCPs in the scene's CRS from the rays' ground points, so
+// gdalwarp -tps places the picture), camera_preview.png; returns the
+// metadata's camera block.
+nlohmann::json write_camera_products(ris::StagedDirectory& out, const ris::Scene& scene,
+                                     const ris::EoSensorConfig& cfg, const ris::EoImage& grid) {
+  const ris::FrameCamera& cam = *cfg.camera;
+  const ris::CameraImage img = ris::view_through_camera(scene, grid, cfg, cam, cfg.detector);
+  ris::Georef georef;
+  georef.crs_wkt = scene.crs_wkt;
+  georef.gcps = img.gcps;
+  const ris::Georef* geo = img.gcps.size() >= 3 ? &georef : nullptr;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<ris::BandView<float>> views;
+  for (std::size_t b = 0; b < img.bands.size(); ++b) {
+    views.push_back({img.bands[b].data(), img.band_names[b] + " (" + img.unit + ")"});
+  }
+  const bool thermal = cfg.kind == ris::EoKind::thermal;
+  const ris::RasterMetadata md{{"RIS_SENSOR", thermal ? "thermal camera" : "optical camera"},
+                               {"RIS_UNIT", img.unit}};
+  ris::write_geotiff_bands<float>(
+      out.path(thermal ? "camera_brightness_temperature.tif" : "camera_radiance.tif"), views,
+      img.cols, img.rows, geo, nan, md);
+  ris::write_geotiff<float>(out.path("camera_range_m.tif"), img.range_m.data(), img.cols, img.rows,
+                            geo, nan, {{"RIS_UNIT", "m"}});
+  ris::write_geotiff<float>(out.path("camera_footprint_area_m2.tif"), img.footprint_area_m2.data(),
+                            img.cols, img.rows, geo, nan, {{"RIS_UNIT", "m2"}});
+  if (!img.digital_numbers.empty()) {
+    std::vector<ris::BandView<std::uint16_t>> dn;
+    for (std::size_t b = 0; b < img.digital_numbers.size(); ++b) {
+      dn.push_back({img.digital_numbers[b].data(), img.band_names[b] + " (DN)"});
+    }
+    ris::write_geotiff_bands<std::uint16_t>(out.path("camera_digital_number.tif"), dn, img.cols,
+                                            img.rows, geo, std::nullopt, {{"RIS_UNIT", "DN"}});
+  }
+  write_preview(out.path("camera_preview.png"), img.band_names, img.bands, img.cols, img.rows);
+  return {{"position_m", {cam.x_m, cam.y_m}},
+          {"altitude_m", cam.altitude_m},
+          {"heading_deg", cam.heading_deg},
+          {"depression_deg", cam.depression_deg},
+          {"fov_deg", cam.fov_deg},
+          {"columns", cam.cols},
+          {"rows", cam.rows},
+          {"samples", cam.samples},
+          {"mtf_at_nyquist", cam.mtf_at_nyquist},
+          {"empty_pixels", img.empty_pixels},
+          {"gcps", img.gcps.size()},
+          {"digital_numbers", !img.digital_numbers.empty()}};
+}
+
 void run_sensor(const SensorArgs& a) {
   if (a.threads > 0) omp_set_num_threads(a.threads);
   const ris::EoSensorConfig cfg = ris::load_eo_sensor(a.sensor);
@@ -149,6 +211,7 @@ void run_sensor(const SensorArgs& a) {
   }
 
   ris::StagedDirectory out(a.out);
+  nlohmann::json md_json = metadata(a, cfg, img);
   const ris::Georef georef(scene.geotransform(), scene.crs_wkt);
   std::vector<ris::BandView<float>> views;
   for (std::size_t b = 0; b < img.bands.size(); ++b) {
@@ -158,8 +221,12 @@ void run_sensor(const SensorArgs& a) {
   const std::string name = thermal ? "brightness_temperature.tif" : "radiance.tif";
   ris::write_geotiff_bands<float>(out.path(name), views, img.cols, img.rows, &georef,
                                   std::numeric_limits<double>::quiet_NaN(), md);
-  write_preview(out.path("preview.png"), img);
-  ris::write_text_file_atomic(out.path("metadata.json"), metadata(a, cfg, img).dump(2) + "\n");
+  write_preview(out.path("preview.png"), img.band_names, img.bands, img.cols, img.rows);
+  if (cfg.camera) {
+    md_json["camera"] =
+        write_camera_products(out, scene, cfg, noise_free(scene, cfg, table, img, lat, lon));
+  }
+  ris::write_text_file_atomic(out.path("metadata.json"), md_json.dump(2) + "\n");
   out.commit();
   if (!a.quiet) {
     fmt::print(
