@@ -1,13 +1,14 @@
 #include "ris/sensors_eo/eo_render.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <memory>
 #include <numbers>
 
 #include "ris/objects/sbr.h"
 #include "ris/sensors_eo/diurnal_temperature.h"
+#include "ris/sensors_eo/facet_forcing.h"
 #include "ris/sensors_eo/lambertian.h"
 #include "ris/sensors_eo/planck_band.h"
 #include "ris/sensors_eo/sun_shadow.h"
@@ -40,6 +41,12 @@ Vec3 cell_normal(const Scene& s, int r, int c) {
   return {-dzdx / n, -dzdy / n, 1 / n};
 }
 
+double mesh_top_z(const TriangleMesh& m) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (const Vec3& v : m.vertices) top = std::max(top, v.z);
+  return top;
+}
+
 double add_noise(double v, const EoSensorConfig& cfg, int row, int col, std::size_t band) {
   if (cfg.noise <= 0) return v;
   CounterRng rng(cfg.seed, static_cast<std::uint32_t>(col), static_cast<std::uint32_t>(row),
@@ -54,6 +61,7 @@ void render_optical(const Scene& scene, const EoSensorConfig& cfg, const EoSurfa
   const Vec3 s = sun_direction_enu(img.sun.azimuth_deg, img.sun.elevation_deg);
   const TriangleMesh mesh = terrain_mesh(scene);
   const bool have_mesh = !img.night && !mesh.triangles.empty();
+  const double top = mesh_top_z(mesh);
   const std::unique_ptr<EmbreeScene> bvh =
       have_mesh ? std::make_unique<EmbreeScene>(mesh) : nullptr;
   std::int64_t shadowed = 0;
@@ -65,7 +73,7 @@ void render_optical(const Scene& scene, const EoSensorConfig& cfg, const EoSurfa
       const EoSurface& surf = table.at(scene.category[i]);
       const Vec3 n = cell_normal(scene, r, c);
       const bool lit =
-          !img.night && (!have_mesh || sun_visible(*bvh, local_centre(scene, r, c), s, 0.05));
+          !img.night && (!have_mesh || sun_visible(*bvh, local_centre(scene, r, c), s, 0.05, top));
       shadowed += (!img.night && !lit) ? 1 : 0;
       for (std::size_t b = 0; b < cfg.bands.size(); ++b) {
         const double e0 = eo_band_info(cfg.bands[b]).solar_irradiance_w_m2_um / r2;
@@ -86,37 +94,73 @@ void render_optical(const Scene& scene, const EoSensorConfig& cfg, const EoSurfa
   img.shadowed_cells = shadowed;
 }
 
-// The surface temperature depends on the category only (flat-ground
-// forcing), so each category's band brightness temperatures are computed
-// once; the per-cell loop adds the noise.
+// Each cell's surface temperature from its own day of insolation
+// (ris/sensors_eo/facet_forcing.h): the sun on its facet's normal, and its
+// cast shadows through the terrain mesh, at each of the day's samples; then
+// the band brightness temperatures through the emissivity and the sky.
+struct ThermalBands {
+  std::vector<SpectralBand> ranges;
+  std::vector<double> sky_radiance;  // per band, W m^-2 sr^-1
+};
+
+ThermalBands thermal_bands(const EoSensorConfig& cfg) {
+  ThermalBands t;
+  for (EoBand band : cfg.bands) {
+    t.ranges.push_back(eo_band_info(band).range);
+    t.sky_radiance.push_back(cfg.sky_temperature_k > 0
+                                 ? planck_band_radiance(t.ranges.back(), cfg.sky_temperature_k)
+                                 : 0.0);
+  }
+  return t;
+}
+
+// The insolation of the cell's facet at each sample (0 at night, on the
+// facet's back or in a cast shadow).
+void cell_insolation(const Scene& scene, const EmbreeScene* bvh, double top, const DaySamples& day,
+                     int r, int c, std::vector<double>& out) {
+  const Vec3 n = cell_normal(scene, r, c);
+  const Vec3 p = local_centre(scene, r, c);
+  for (std::size_t k = 0; k < day.t_seconds.size(); ++k) {
+    const double cos_i = n.dot(day.sun_enu[k]);
+    const bool up = day.irradiance_w_m2[k] > 0 && cos_i > 0;
+    out[k] = up && (bvh == nullptr || sun_visible(*bvh, p, day.sun_enu[k], 0.05, top))
+                 ? day.irradiance_w_m2[k] * cos_i
+                 : 0.0;
+  }
+}
+
 void render_thermal(const Scene& scene, const EoSensorConfig& cfg, const EoSurfaceTable& table,
                     EoImage& img) {
-  const DiurnalForcing f =
-      solar_forcing(cfg.when, img.latitude_deg, img.longitude_deg, 8, cfg.transmittance);
+  const DaySamples day =
+      day_samples(cfg.when, img.latitude_deg, img.longitude_deg, 8, cfg.transmittance);
   const double t_s = cfg.when.hour * 3600.0;
-  std::map<std::int32_t, std::vector<double>> by_category;
-  for (const auto& [id, surf] : table.by_category) {
-    const ThermalSurface ts{cfg.mean_temperature_k, surf.thermal_inertia, surf.albedo,
-                            surf.emissivity_lwir};
-    const double temp = surface_temperature_k(ts, f, t_s);
-    std::vector<double>& v = by_category[id];
-    for (EoBand band : cfg.bands) {
-      const SpectralBand range = eo_band_info(band).range;
-      const double sky =
-          cfg.sky_temperature_k > 0 ? planck_band_radiance(range, cfg.sky_temperature_k) : 0.0;
-      const double l = thermal_leaving_radiance(band_property(surf, band),
-                                                planck_band_radiance(range, temp), sky);
-      v.push_back(l > 0 ? brightness_temperature_k(range, l) : 0.0);
-    }
-  }
-#pragma omp parallel for schedule(static)
-  for (int r = 0; r < scene.rows; ++r) {
-    for (int c = 0; c < scene.cols; ++c) {
-      const std::size_t i = scene.index(r, c);
-      if (!scene.valid[i]) continue;
-      const std::vector<double>& v = by_category.at(scene.category[i]);
-      for (std::size_t b = 0; b < cfg.bands.size(); ++b) {
-        img.bands[b][i] = static_cast<float>(add_noise(v[b], cfg, r, c, b));
+  const ThermalBands bands = thermal_bands(cfg);
+  const TriangleMesh mesh = terrain_mesh(scene);
+  const std::unique_ptr<EmbreeScene> bvh =
+      mesh.triangles.empty() ? nullptr : std::make_unique<EmbreeScene>(mesh);
+  const double top = mesh_top_z(mesh);
+#pragma omp parallel
+  {
+    std::vector<double> insolation(day.t_seconds.size());  // once per thread
+    DiurnalForcing f;
+#pragma omp for schedule(dynamic, 8)
+    for (int r = 0; r < scene.rows; ++r) {
+      for (int c = 0; c < scene.cols; ++c) {
+        const std::size_t i = scene.index(r, c);
+        if (!scene.valid[i]) continue;
+        const EoSurface& surf = table.at(scene.category[i]);
+        cell_insolation(scene, bvh.get(), top, day, r, c, insolation);
+        forcing_from_insolation(day, insolation.data(), f);
+        const ThermalSurface ts{cfg.mean_temperature_k, surf.thermal_inertia, surf.albedo,
+                                surf.emissivity_lwir};
+        const double temp = surface_temperature_k(ts, f, t_s);
+        for (std::size_t b = 0; b < cfg.bands.size(); ++b) {
+          const double l = thermal_leaving_radiance(band_property(surf, cfg.bands[b]),
+                                                    planck_band_radiance(bands.ranges[b], temp),
+                                                    bands.sky_radiance[b]);
+          const double bt = l > 0 ? brightness_temperature_k(bands.ranges[b], l) : 0.0;
+          img.bands[b][i] = static_cast<float>(add_noise(bt, cfg, r, c, b));
+        }
       }
     }
   }

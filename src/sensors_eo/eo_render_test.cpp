@@ -79,7 +79,36 @@ TEST(EoRender, ThermalBlackbodyShowsSurfaceTemperature) {
   const DiurnalForcing f = solar_forcing(cfg.when, 48.0, 11.0, 8, cfg.transmittance);
   const double t = surface_temperature_k({288.0, 800.0, 0.23, 1.0}, f, 13 * 3600.0);
   EXPECT_GT(t, 300.0);
-  for (float v : img.bands[0]) EXPECT_NEAR(v, t, 1e-4);
+  // Open flat ground: each cell's own forcing (15-minute samples) against
+  // solar_forcing's 1-minute samples: 0.0002 K apart.
+  for (float v : img.bands[0]) EXPECT_NEAR(v, t, 1e-3);
+}
+
+// Slopes and shadows heat as their own insolation says: at 13:00 UTC at
+// 48 N (the sun in the south) a south-facing flank of a ridge is warmer than
+// the north-facing one, and the ground in a tall wall's afternoon shadow (to
+// its north-east) cooler than the open ground beside it.
+TEST(EoRender, ThermalSlopesAndShadowsFollowTheSun) {
+  Scene scene = Scene::flat(60, 60, 5.0, 0.0f, 21);
+  for (int c = 0; c < 60; ++c) {
+    for (int r = 10; r <= 20; ++r) {  // an east-west ridge, rows 10..20 (north at row 0)
+      scene.elevation_m[scene.index(r, c)] = static_cast<float>(5 * (5 - std::abs(r - 15)));
+    }
+  }
+  for (int r = 40; r < 42; ++r) {
+    for (int c = 20; c < 22; ++c) scene.elevation_m[scene.index(r, c)] = 60.0f;  // a tower
+  }
+  const EoSensorConfig cfg = parse_eo_sensor(
+      "kind = \"thermal\"\ndate = \"2024-06-21\"\ntime = \"13:00:00\"\nbands = [\"lwir\"]\n",
+      "s.toml");
+  const EoImage img = render_eo(scene, cfg, parse_eo_surface_table(kTable, "t.csv"), 48.0, 11.0);
+  const std::vector<float>& t = img.bands[0];
+  EXPECT_GT(t[scene.index(18, 30)], t[scene.index(12, 30)] + 2.0f);  // south flank vs north
+  EXPECT_GT(t[scene.index(18, 30)], t[scene.index(50, 50)]);         // and vs flat ground
+  EXPECT_LT(t[scene.index(12, 30)], t[scene.index(50, 50)]);
+  // The tower's shadow at 13:00-16:00 UTC (sun south-west to west) lies to
+  // its north-east; a cell there is cooler than open ground.
+  EXPECT_LT(t[scene.index(37, 24)], t[scene.index(50, 50)] - 1.0f);
 }
 
 TEST(EoRender, SameBytesForAnyThreadCount) {

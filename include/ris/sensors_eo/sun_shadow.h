@@ -6,6 +6,8 @@
 // docs/sensors.md, "Shadows".
 #pragma once
 
+#include <limits>
+
 #include "ris/objects/sbr.h"
 #include "ris/util/vec3.h"
 
@@ -15,8 +17,9 @@ namespace ris {
 Vec3 sun_direction_enu(double azimuth_deg, double elevation_deg);
 
 // True when the ray from p (lifted offset_m along the sun direction, so it
-// does not hit its own facet) towards the sun meets no triangle.
+// does not hit its own facet) towards the sun meets no triangle. top_z_m:
+// the highest vertex of the mesh, when known: the ray stops above it.
 bool sun_visible(const EmbreeScene& scene, const Vec3& p, const Vec3& sun_dir,
-                 double offset_m = 1e-3);
+                 double offset_m = 1e-3, double top_z_m = std::numeric_limits<double>::infinity());
 
 }  // namespace ris
