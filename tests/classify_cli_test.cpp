@@ -272,6 +272,20 @@ TEST(SceneClassifyCli, BadInputGivesAClearErrorAndNoOutput) {
   expect_refused(dir, img + " --training " + test::q(dir / "one.geojson"), "2 or more categories");
   test::write_file(dir / "notvec.geojson", "not a vector file");
   expect_refused(dir, img + " --training " + test::q(dir / "notvec.geojson"), "notvec.geojson");
+  // Memory: a 512 x 512 image reads in 3 MiB (12 bytes a pixel) but needs
+  // 10 MiB to classify (40 bytes a pixel on one band): refused at 6 MiB.
+  {
+    std::vector<float> big(512 * 512, 1.0f);
+    const Georef g{{kX0, kCell, 0.0, kY0, 0.0, -kCell}, utm_wkt()};
+    write_geotiff<float>(dir / "big.tif", big.data(), 512, 512, &g);
+    const auto r = test::run_ris_env("RIS_MAX_MEMORY_MB=6",
+                                     "scene classify " + test::q(dir / "big.tif") +
+                                         " --classes 3 --out " + test::q(dir / "out.tif"));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("classifying the 512 x 512 image"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.tif"));
+    std::filesystem::remove(dir / "big.tif");
+  }
   // The output must be a GeoTIFF.
   const auto png =
       test::run_ris("scene classify " + img + " --classes 4 --out " + test::q(dir / "out.png"));

@@ -31,6 +31,7 @@
 #include "ris/io/safe_paths.h"
 #include "ris/io/training_polygons.h"
 #include "ris/util/error.h"
+#include "ris/util/resource_guard.h"
 #include "seed_option.h"
 
 namespace ris::app {
@@ -86,6 +87,18 @@ struct Input {
   std::size_t with_data = 0;
 };
 
+// The classification's memory, checked once the image's size is known and
+// before its other bands are read: per pixel and band, its intensity (4
+// bytes), dB, validity weight and blur buffer (12) and the sample matrix
+// (4); per pixel, the validity, training and output codes (3), the sample
+// index (8), k-means' labels (4) and the burnt polygons (1), rounded up.
+void require_classify_memory(const ClassifyArgs& a, int cols, int rows) {
+  const auto nb = static_cast<std::int64_t>(a.bands.size());
+  const std::int64_t pixels = checked_mul(cols, rows, a.image, "");
+  require_memory(checked_mul(pixels, 20 * nb + 20, a.image, ""), a.image, "",
+                 fmt::format("classifying the {} x {} image on {} band(s)", cols, rows, nb));
+}
+
 Input read_input(const ClassifyArgs& a) {
   const PixelScale scale = parse_pixel_scale(a.scale, "--scale");
   Input in;
@@ -93,6 +106,7 @@ Input read_input(const ClassifyArgs& a) {
     IntensityImage img = read_intensity_image(a.image, b, scale);
     if (in.req.bands.empty()) {
       in.req.rows = img.rows, in.req.cols = img.cols;
+      require_classify_memory(a, img.cols, img.rows);
     } else if (img.rows != in.req.rows || img.cols != in.req.cols) {
       throw InputError(a.image, "--band",
                        fmt::format("band {} is {} x {} pixels, band {} {} x {}", b, img.cols,
