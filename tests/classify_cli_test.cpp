@@ -4,6 +4,7 @@
 // and with training polygons (in the image's CRS and in WGS 84); the class
 // raster keeps the image's grid, georeferencing and no-data, the regions
 // come back with IoU > 0.95, and bad input leaves no output.
+#include <gdal.h>
 #include <gtest/gtest.h>
 
 #include <ogr_spatialref.h>
@@ -44,8 +45,10 @@ std::string utm_wkt() {
   return out;
 }
 
-// The image: power (db = false) or 10 log10 of it, NaN no-data in the stripe.
-void write_image(const std::filesystem::path& p, bool db) {
+// The image: power (db = false) or 10 log10 of it, NaN no-data in the
+// stripe; placed by its geotransform or (gcps) by a 5 x 5 grid of ground
+// control points on the same affine map, as ris's slant-range products are.
+void write_image(const std::filesystem::path& p, bool db, bool gcps = false) {
   std::mt19937_64 rng(42);
   std::gamma_distribution<float> speckle(4.0f, 0.25f);
   std::vector<float> v(kSize * kSize);
@@ -55,7 +58,12 @@ void write_image(const std::filesystem::path& p, bool db) {
       v[static_cast<std::size_t>(r * kSize + c)] =
           no_data(r, c) ? NAN : (db ? 10.0f * std::log10(x) : x);
     }
-  const Georef g{{kX0, kCell, 0.0, kY0, 0.0, -kCell}, utm_wkt()};
+  Georef g{{kX0, kCell, 0.0, kY0, 0.0, -kCell}, utm_wkt()};
+  for (int i = 0; gcps && i <= 4; ++i)
+    for (int k = 0; k <= 4; ++k) {
+      const double px = k * kSize / 4.0, ln = i * kSize / 4.0;
+      g.gcps.push_back({px, ln, kX0 + px * kCell, kY0 - ln * kCell, 0.0});
+    }
   write_geotiff<float>(p, v.data(), kSize, kSize, &g, NAN);
 }
 
@@ -205,14 +213,18 @@ std::string training_geojson(const std::vector<int>& category, bool wgs84, doubl
   return "{\"type\":\"FeatureCollection\"," + crs + "\"features\":[\n" + f + "]}\n";
 }
 
+// The polygons in UTM, in WGS 84, and in UTM over the image placed by GCPs
+// (whose class raster keeps the GCPs).
 TEST(SceneClassifyCli, TrainingPolygonsInAnyCrsGiveTheirCategories) {
   test::TempDir dir;
   write_image(dir / "power.tif", false);
+  write_image(dir / "power_gcps.tif", false, true);
   const std::vector<int> category = {7, 3, 12, 5};  // region -> ris category id
-  for (const bool wgs84 : {false, true}) {
-    const std::string name = wgs84 ? "wgs84" : "utm";
+  for (const std::string name : {"utm", "wgs84", "gcps"}) {
+    const bool wgs84 = name == "wgs84";
     test::write_file(dir / (name + ".geojson"), training_geojson(category, wgs84));
-    const auto r = test::run_ris("scene classify " + test::q(dir / "power.tif") + " --training " +
+    const std::string image = name == "gcps" ? "power_gcps.tif" : "power.tif";
+    const auto r = test::run_ris("scene classify " + test::q(dir / image) + " --training " +
                                  test::q(dir / (name + ".geojson")) + " --out " +
                                  test::q(dir / (name + ".tif")));
     ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -226,6 +238,13 @@ TEST(SceneClassifyCli, TrainingPolygonsInAnyCrsGiveTheirCategories) {
     }
     const auto j = nlohmann::json::parse(test::read_file(dir / (name + ".json")));
     EXPECT_EQ(j["method"].get<std::string>(), "nearest mean");
+    if (name == "gcps") {
+      GDALDatasetH ds = GDALOpen((dir / "gcps.tif").c_str(), GA_ReadOnly);
+      ASSERT_NE(ds, nullptr);
+      EXPECT_EQ(GDALGetGCPCount(ds), 25);
+      GDALClose(ds);
+      EXPECT_EQ(j["image"]["georeferenced"].get<std::string>(), "ground control points");
+    }
     EXPECT_EQ(j["training"]["features"].get<int>(), 4);
     // Each 20 x 20 box burns the 400 pixels whose centres it holds (the
     // WGS 84 copy, its edges slightly curved in UTM, within 2 %).
@@ -270,6 +289,19 @@ TEST(SceneClassifyCli, BadInputGivesAClearErrorAndNoOutput) {
   // One category only: nothing to choose between.
   test::write_file(dir / "one.geojson", training_geojson({2, 2, 2, 2}, false));
   expect_refused(dir, img + " --training " + test::q(dir / "one.geojson"), "2 or more categories");
+  // Training on an image placed neither by a geotransform nor by GCPs.
+  {
+    std::vector<float> plain(64 * 64, 1.0f);
+    write_geotiff<float>(dir / "plain.tif", plain.data(), 64, 64, nullptr);
+    const auto r =
+        test::run_ris("scene classify " + test::q(dir / "plain.tif") + " --training " +
+                      test::q(dir / "attr.geojson") + " --out " + test::q(dir / "out.tif"));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("neither a geotransform nor ground control points"), std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.tif"));
+    std::filesystem::remove(dir / "plain.tif");
+  }
   test::write_file(dir / "notvec.geojson", "not a vector file");
   expect_refused(dir, img + " --training " + test::q(dir / "notvec.geojson"), "notvec.geojson");
   // Memory: a 512 x 512 image reads in 3 MiB (12 bytes a pixel) but needs

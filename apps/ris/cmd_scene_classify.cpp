@@ -129,6 +129,10 @@ Input read_input(const ClassifyArgs& a) {
   return in;
 }
 
+bool georeferenced(const IntensityImage& img) {
+  return img.has_geotransform || !img.georef.gcps.empty();
+}
+
 ClassifyResult classify(const ClassifyArgs& a, Input& in, TrainingPixels& training) {
   if (a.training.empty()) {
     if (in.with_data < static_cast<std::size_t>(a.classes))
@@ -137,9 +141,10 @@ ClassifyResult classify(const ClassifyArgs& a, Input& in, TrainingPixels& traini
           fmt::format("{} classes asked for, {} pixels have data", a.classes, in.with_data));
     return classify_unsupervised(in.req);
   }
-  if (!in.first.has_geotransform)
+  if (!georeferenced(in.first))
     throw InputError(a.image, "--training",
-                     "the image has no geotransform, so polygons cannot be placed on it");
+                     "the image has neither a geotransform nor ground control points, so "
+                     "polygons cannot be placed on it");
   training = rasterize_training_polygons(a.training, a.attribute, in.first.georef, in.req.cols,
                                          in.req.rows);
   std::map<int, std::size_t> with_data;  // category -> training pixels that have data
@@ -172,7 +177,9 @@ nlohmann::json summary_json(const ClassifyArgs& a, const Input& in, const Classi
                 {"bands", a.bands},
                 {"cols", in.req.cols},
                 {"rows", in.req.rows},
-                {"georeferenced", in.first.has_geotransform}};
+                {"georeferenced", in.first.has_geotransform       ? "geotransform"
+                                  : !in.first.georef.gcps.empty() ? "ground control points"
+                                                                  : "no"}};
   j["pixels_with_data"] = in.with_data;
   j["no_data_pixels"] = in.req.valid.size() - in.with_data;
   j["method"] = a.training.empty() ? "k-means" : "nearest mean";
@@ -228,7 +235,7 @@ void run_classify(ClassifyArgs a) {
                           {"RIS_CLASSIFY_SOURCE", a.image},
                           {"RIS_CLASSIFY_CLASSES", std::to_string(res.codes.size())}};
   write_geotiff<std::uint8_t>(tif.temp_path(), res.labels.data(), in.req.cols, in.req.rows,
-                              in.first.has_geotransform ? &in.first.georef : nullptr, 0.0, md,
+                              georeferenced(in.first) ? &in.first.georef : nullptr, 0.0, md,
                               "class code (0 = no data)");
   write_text_file_atomic(json.temp_path(), j.dump(1) + "\n");
   tif.commit();

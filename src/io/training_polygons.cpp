@@ -5,7 +5,11 @@
 #include <gdal_alg.h>
 #include <ogr_api.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "ris/io/gdal_util.h"
 #include "ris/io/safe_paths.h"
@@ -69,6 +73,35 @@ std::size_t check_layer(OGRLayerH layer, const std::string& path, const std::str
   return n;
 }
 
+// The image's georeferencing on the in-memory grid: its geotransform, or
+// its ground control points (GDAL's rasterizer then places the polygons by
+// a polynomial fitted to them, as gdalwarp does).
+void place_grid(GDALDatasetH ds, const Georef& georef) {
+  if (georef.gcps.empty()) {
+    std::array<double, 6> gt = georef.geotransform;
+    GDALSetGeoTransform(ds, gt.data());
+    if (!georef.crs_wkt.empty()) GDALSetProjection(ds, georef.crs_wkt.c_str());
+    return;
+  }
+  std::vector<GDAL_GCP> gcps(georef.gcps.size());
+  std::vector<std::string> ids(georef.gcps.size());
+  for (std::size_t i = 0; i < gcps.size(); ++i) {
+    const GroundControlPoint& g = georef.gcps[i];
+    ids[i] = std::to_string(i + 1);
+    gcps[i] = {ids[i].data(), const_cast<char*>(""), g.pixel, g.line, g.x, g.y, g.z};
+  }
+  GDALSetGCPs(ds, static_cast<int>(gcps.size()), gcps.data(), georef.crs_wkt.c_str());
+}
+
+// {x0, y0, x1, y1} of the image in its CRS: of its corners, or of its GCPs.
+std::array<double, 4> image_bounds(const Georef& georef, int cols, int rows) {
+  if (georef.gcps.empty()) return raster_outline(georef.geotransform, cols, rows);
+  std::array<double, 4> b{1e300, 1e300, -1e300, -1e300};
+  for (const GroundControlPoint& g : georef.gcps)
+    b = {std::min(b[0], g.x), std::min(b[1], g.y), std::max(b[2], g.x), std::max(b[3], g.y)};
+  return b;
+}
+
 }  // namespace
 
 TrainingPixels rasterize_training_polygons(const std::string& path, const std::string& attribute,
@@ -88,9 +121,7 @@ TrainingPixels rasterize_training_polygons(const std::string& path, const std::s
   GDALDriverH mem = GDALGetDriverByName("MEM");
   const GdalDataset grid(GDALCreate(mem, "", cols, rows, 1, GDT_Byte, nullptr));
   RIS_CHECK(grid != nullptr);
-  std::array<double, 6> gt = georef.geotransform;
-  GDALSetGeoTransform(handle(grid), gt.data());
-  if (!georef.crs_wkt.empty()) GDALSetProjection(handle(grid), georef.crs_wkt.c_str());
+  place_grid(handle(grid), georef);
   int band = 1;
   const std::string burn = "ATTRIBUTE=" + attribute;
   char* options[] = {const_cast<char*>(burn.c_str()), nullptr};
@@ -107,7 +138,7 @@ TrainingPixels rasterize_training_polygons(const std::string& path, const std::s
   for (const std::uint8_t c : out.codes)
     if (c != 0) ++out.pixels[c];
   if (out.pixels.empty()) {
-    const std::array<double, 4> b = raster_outline(gt, cols, rows);
+    const std::array<double, 4> b = image_bounds(georef, cols, rows);
     throw InputError(
         path, "--training",
         fmt::format("none of its {} polygons covers a pixel of the image: the polygons span "

@@ -33,8 +33,8 @@ struct TrainingPixels {
 // or not a vector file; it has no features; a layer lacks the attribute; a
 // feature's value is not an integer 1..255 (its feature id is named); or
 // no polygon covers a pixel centre of the image (its bounds and the
-// polygons' are given). The image must have a geotransform (georef from
-// a raster that has one).
+// polygons' are given). georef: the image's geotransform and CRS, or its
+// ground control points (a raster on the radar's grid) and their CRS.
 TrainingPixels rasterize_training_polygons(const std::string& path, const std::string& attribute,
                                            const Georef& georef, int cols, int rows);
 
