@@ -5,6 +5,7 @@
 // raster keeps the image's grid, georeferencing and no-data, the regions
 // come back with IoU > 0.95, and bad input leaves no output.
 #include <gdal.h>
+#include <gdal_utils.h>
 #include <gtest/gtest.h>
 
 #include <ogr_spatialref.h>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "ris/io/raster_io.h"
+#include "ris/scene/scene_io.h"
 #include "test_util.h"
 
 namespace ris {
@@ -213,20 +215,48 @@ std::string training_geojson(const std::vector<int>& category, bool wgs84, doubl
   return "{\"type\":\"FeatureCollection\"," + crs + "\"features\":[\n" + f + "]}\n";
 }
 
-// The polygons in UTM, in WGS 84, and in UTM over the image placed by GCPs
-// (whose class raster keeps the GCPs).
+// A vector file converted to a GeoPackage (GDALVectorTranslate, the library
+// behind ogr2ogr).
+bool to_geopackage(const std::filesystem::path& from, const std::filesystem::path& to) {
+  GDALAllRegister();
+  GDALDatasetH src = GDALOpenEx(from.c_str(), GDAL_OF_VECTOR, nullptr, nullptr, nullptr);
+  if (src == nullptr) {
+    std::printf("GDALOpenEx: %s\n", CPLGetLastErrorMsg());
+    return false;
+  }
+  char* argv[] = {const_cast<char*>("-f"), const_cast<char*>("GPKG"), nullptr};
+  GDALVectorTranslateOptions* opt = GDALVectorTranslateOptionsNew(argv, nullptr);
+  GDALDatasetH out = GDALVectorTranslate(to.c_str(), nullptr, 1, &src, opt, nullptr);
+  GDALVectorTranslateOptionsFree(opt);
+  GDALClose(src);
+  if (out == nullptr) {
+    std::printf("GDALVectorTranslate: %s\n", CPLGetLastErrorMsg());
+    return false;
+  }
+  GDALClose(out);
+  return true;
+}
+
+// The polygons in UTM (GeoJSON and GeoPackage), in WGS 84, and in UTM over
+// the image placed by GCPs (whose class raster keeps the GCPs).
 TEST(SceneClassifyCli, TrainingPolygonsInAnyCrsGiveTheirCategories) {
   test::TempDir dir;
   write_image(dir / "power.tif", false);
   write_image(dir / "power_gcps.tif", false, true);
   const std::vector<int> category = {7, 3, 12, 5};  // region -> ris category id
-  for (const std::string name : {"utm", "wgs84", "gcps"}) {
+  for (const std::string name : {"utm", "wgs84", "gcps", "gpkg"}) {
     const bool wgs84 = name == "wgs84";
     test::write_file(dir / (name + ".geojson"), training_geojson(category, wgs84));
+    std::string polygons = name + ".geojson";
+    if (name == "gpkg") {  // the UTM GeoJSON as a GeoPackage, by GDAL's ogr2ogr
+      polygons = "training.gpkg";
+      // (from utm.geojson: a layer named "gpkg", from gpkg.geojson, failed to translate)
+      ASSERT_TRUE(to_geopackage(dir / "utm.geojson", dir / polygons));
+    }
     const std::string image = name == "gcps" ? "power_gcps.tif" : "power.tif";
-    const auto r = test::run_ris("scene classify " + test::q(dir / image) + " --training " +
-                                 test::q(dir / (name + ".geojson")) + " --out " +
-                                 test::q(dir / (name + ".tif")));
+    const auto r =
+        test::run_ris("scene classify " + test::q(dir / image) + " --training " +
+                      test::q(dir / polygons) + " --out " + test::q(dir / (name + ".tif")));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     std::vector<int> code;
     const std::vector<double> iou = region_iou(read_raster_f64(dir / (name + ".tif")), &code);
@@ -251,6 +281,49 @@ TEST(SceneClassifyCli, TrainingPolygonsInAnyCrsGiveTheirCategories) {
     for (const auto& [code_text, n] : j["training"]["pixels"].items())
       EXPECT_NEAR(n.get<double>(), 400.0, wgs84 ? 8.0 : 0.0) << name << " category " << code_text;
   }
+}
+
+// The class raster is a land cover `ris scene import` reads: a flat DEM on
+// the image's grid with the classes mapped to generic-terrain categories
+// gives a scene whose every cell with data has its class's category, and
+// the no-data stripe is no-data (the mapping has no fill).
+TEST(SceneClassifyCli, TheClassRasterIsALandCoverSceneImportReads) {
+  test::TempDir dir;
+  write_image(dir / "power.tif", false);
+  ASSERT_EQ(test::run_ris("scene classify " + test::q(dir / "power.tif") +
+                          " --classes 4 --quiet --out " + test::q(dir / "classes.tif"))
+                .exit_code,
+            0);
+  std::vector<float> flat(kSize * kSize, 100.0f);
+  const Georef g{{kX0, kCell, 0.0, kY0, 0.0, -kCell}, utm_wkt()};
+  write_geotiff<float>(dir / "dem.tif", flat.data(), kSize, kSize, &g);
+  test::write_file(dir / "classes.toml",
+                   "[mapping]\nname = \"ris scene classify\"\n"
+                   "library = \"backscatter/generic-terrain.toml\"\n"
+                   "[classes]\n1 = \"water\"\n2 = \"grass\"\n3 = \"forest\"\n4 = \"urban\"\n");
+  const auto r = test::run_ris("scene import " + test::q(dir / "dem.tif") + " --landcover " +
+                               test::q(dir / "classes.tif") + " --mapping " +
+                               test::q(dir / "classes.toml") + " -o " + test::q(dir / "scene.tif"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Scene scene = read_scene(dir / "scene.tif");
+  ASSERT_EQ(scene.cols, kSize);
+  ASSERT_EQ(scene.rows, kSize);
+  const RasterF64 lab = read_raster_f64(dir / "classes.tif");
+  const std::uint16_t category_of_class[5] = {0, 23, 21, 22, 24};
+  std::size_t differ = 0, invalid = 0;
+  for (int row = 0; row < kSize; ++row)
+    for (int c = 0; c < kSize; ++c) {
+      const std::size_t i = static_cast<std::size_t>(row * kSize + c);
+      const int cls = static_cast<int>(lab.data[i]);
+      invalid += scene.valid[i] == 0;
+      if (cls == 0) {
+        differ += scene.valid[i] != 0;
+      } else {
+        differ += scene.valid[i] == 0 || scene.category[i] != category_of_class[cls];
+      }
+    }
+  EXPECT_EQ(differ, 0U);
+  EXPECT_EQ(invalid, 8U * kSize);  // the stripe
 }
 
 // Each refusal: a non-zero exit, a message naming the file or option, and
