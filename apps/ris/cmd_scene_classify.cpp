@@ -16,10 +16,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -42,6 +42,7 @@ struct ClassifyArgs {
   int classes = 0;
   std::vector<int> bands;
   double smooth_px = 1.0;
+  double looks = 0.0;  // > 0: report each class's K-distribution shape for L looks
   std::uint64_t seed = 1;
   bool quiet = false;
 };
@@ -66,6 +67,9 @@ void check_options(ClassifyArgs& a) {
     throw InputError("", "--classes", "give the number of classes (2..255) or --training");
   if (a.classes != 0 && (a.classes < 2 || a.classes > 255))
     throw InputError("", "--classes", fmt::format("expected 2..255 classes, got {}", a.classes));
+  if (!(a.looks >= 0.0 && a.looks <= 1e6))
+    throw InputError("", "--looks",
+                     fmt::format("expected a number of looks above 0, got {}", a.looks));
   if (!(a.smooth_px >= 0.0 && a.smooth_px <= 50.0))
     throw InputError("", "--smooth", fmt::format("expected 0..50 pixels, got {}", a.smooth_px));
   const std::string ext = lower_extension(a.out);
@@ -168,6 +172,19 @@ ClassifyResult classify(const ClassifyArgs& a, Input& in, TrainingPixels& traini
   return res;
 }
 
+// Per band, the K-distribution shape nu by the method of moments
+// (k_shape_moments); null where the class is no rougher than L-look speckle
+// (nu infinite: JSON has no infinity).
+nlohmann::json k_shape_json(const ClassStatistics& s, double looks) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t b = 0; b < s.m1.size(); ++b) {
+    const double nu = s.m1[b] > 0.0 ? k_shape_moments(s.m1[b], s.m2[b], looks)
+                                    : std::numeric_limits<double>::infinity();
+    out.push_back(std::isfinite(nu) ? nlohmann::json(nu) : nlohmann::json(nullptr));
+  }
+  return out;
+}
+
 nlohmann::json summary_json(const ClassifyArgs& a, const Input& in, const ClassifyResult& res,
                             const TrainingPixels& training) {
   nlohmann::json j;
@@ -185,6 +202,7 @@ nlohmann::json summary_json(const ClassifyArgs& a, const Input& in, const Classi
   j["method"] = a.training.empty() ? "k-means" : "nearest mean";
   j["smooth_sigma_px"] = a.smooth_px;
   if (a.training.empty()) j["seed"] = a.seed;
+  if (a.looks > 0.0) j["looks"] = a.looks;
   if (!a.training.empty()) {
     nlohmann::json px = nlohmann::json::object();
     for (const auto& [code, n] : training.pixels) px[std::to_string(code)] = n;
@@ -198,12 +216,14 @@ nlohmann::json summary_json(const ClassifyArgs& a, const Input& in, const Classi
   const std::vector<ClassStatistics> stats = class_statistics(in.req, res);
   for (std::size_t c = 0; c < stats.size(); ++c) {
     const ClassStatistics& s = stats[c];
-    j["classes"].push_back({{"code", s.code},
-                            {"pixels", s.pixels},
-                            {"fraction", double(s.pixels) / double(in.with_data)},
-                            {"mean_sigma0_db", s.mean_db},
-                            {"enl", s.enl},
-                            {"mean_smoothed_db", res.means[c]}});
+    nlohmann::json cls = {{"code", s.code},
+                          {"pixels", s.pixels},
+                          {"fraction", double(s.pixels) / double(in.with_data)},
+                          {"mean_sigma0_db", s.mean_db},
+                          {"enl", s.enl},
+                          {"mean_smoothed_db", res.means[c]}};
+    if (a.looks > 0.0) cls["k_shape_nu"] = k_shape_json(s, a.looks);
+    j["classes"].push_back(cls);
   }
   return j;
 }
@@ -276,6 +296,9 @@ void add_scene_classify(CLI::App& app) {
                   "Gaussian smoothing of the dB image before classifying, sigma in pixels")
       ->capture_default_str();
   add_seed_option(cmd, a->seed, "Seed of the k-means++ initialisation");
+  cmd->add_option("--looks", a->looks,
+                  "The image's number of looks L: also report each class's K-distribution "
+                  "shape nu (method of moments; docs/classify.md)");
   cmd->add_option("--summary", a->summary, "JSON summary per class (default: --out with .json)");
   cmd->add_flag("--quiet", a->quiet, "Print nothing on success");
   cmd->callback([a] { run_classify(*a); });

@@ -52,11 +52,13 @@ ClassifyResult classify_nearest_mean(const ClassifyRequest& req,
 // (ClassifyResult::labels): for each class, each band's mean intensity in
 // dB (10 log10 of the mean of linear power, so not biased by the log) and
 // its ENL = mean^2 / variance (unbiased variance; Oliver & Quegan 1998,
-// section 4.4: 1 for single-look exponential speckle, L for L looks).
+// section 4.4: 1 for single-look exponential speckle, L for L looks), and
+// the moments k_shape_moments takes (mean and mean square, linear).
 struct ClassStatistics {
   std::uint8_t code = 0;
   std::size_t pixels = 0;
   std::vector<double> mean_db, enl;  // per band
+  std::vector<double> m1, m2;        // per band: E[I], E[I^2]
 };
 std::vector<ClassStatistics> class_statistics(const ClassifyRequest& req,
                                               const ClassifyResult& res);

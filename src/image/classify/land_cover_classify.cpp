@@ -194,6 +194,8 @@ std::vector<ClassStatistics> class_statistics(const ClassifyRequest& req,
       st.mean_db.push_back(mean > 0 ? 10.0 * std::log10(mean)
                                     : -std::numeric_limits<double>::infinity());
       st.enl.push_back(var > 0 ? mean * mean / var : 0.0);
+      st.m1.push_back(mean);
+      st.m2.push_back(n > 0 ? s2[c][b] / n : 0.0);
     }
   }
   return out;
