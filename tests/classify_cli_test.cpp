@@ -372,7 +372,8 @@ void expect_refused(const test::TempDir& dir, const std::string& args, const std
   EXPECT_NE(r.output.find(says), std::string::npos) << args << "\n" << r.output;
   for (const auto& e : std::filesystem::directory_iterator(dir.path())) {
     const std::string f = e.path().filename().string();
-    EXPECT_TRUE(f == "power.tif" || f.ends_with(".geojson")) << args << ": left " << f;
+    EXPECT_TRUE(f == "power.tif" || f == "db.tif" || f.ends_with(".geojson"))
+        << args << ": left " << f;
   }
 }
 
@@ -387,6 +388,11 @@ TEST(SceneClassifyCli, BadInputGivesAClearErrorAndNoOutput) {
   expect_refused(dir, img + " --classes 4 --band 2", "band 2 asked for, the raster has 1");
   expect_refused(dir, img + " --classes 4 --scale linear", "--scale");
   expect_refused(dir, img + " --classes 4 --looks -1", "--looks");
+  // An image in dB read as power (its -13 and -7 dB halves <= 0): the hint.
+  write_image(dir / "db.tif", true);
+  expect_refused(dir, test::q(dir / "db.tif") + " --classes 4",
+                 "values at or below 0: for an image in dB give --scale db");
+  std::filesystem::remove(dir / "db.tif");
   // Polygons 100 km east of the image: no overlap, the two extents given.
   test::write_file(dir / "far.geojson", training_geojson({1, 2, 3, 4}, false, 1e5));
   expect_refused(dir, img + " --training " + test::q(dir / "far.geojson"),

@@ -103,6 +103,23 @@ void require_classify_memory(const ClassifyArgs& a, int cols, int rows) {
                  fmt::format("classifying the {} x {} image on {} band(s)", cols, rows, nb));
 }
 
+// A dB image read as power has most of its values at or below zero (no
+// data to the classifier): refused with the hint, rather than classifying
+// the few positive dB values as power.
+void refuse_negative_power(const ClassifyArgs& a, int band, const IntensityImage& img) {
+  if (img.read_as != "power") return;
+  std::size_t finite = 0, not_positive = 0;
+  for (const float v : img.intensity) {
+    finite += std::isfinite(v);
+    not_positive += std::isfinite(v) && v <= 0.0f;
+  }
+  if (finite > 0 && 2 * not_positive > finite)
+    throw InputError(a.image, "--scale",
+                     fmt::format("band {} read as power has {} of its {} values at or below 0: "
+                                 "for an image in dB give --scale db",
+                                 band, not_positive, finite));
+}
+
 Input read_input(const ClassifyArgs& a) {
   const PixelScale scale = parse_pixel_scale(a.scale, "--scale");
   Input in;
@@ -116,6 +133,7 @@ Input read_input(const ClassifyArgs& a) {
                        fmt::format("band {} is {} x {} pixels, band {} {} x {}", b, img.cols,
                                    img.rows, a.bands[0], in.req.cols, in.req.rows));
     }
+    refuse_negative_power(a, b, img);
     in.req.bands.push_back(std::move(img.intensity));
     if (in.req.bands.size() == 1) in.first = std::move(img);
   }
