@@ -144,6 +144,16 @@ IntensityImage read_intensity_image(const std::string& path, int band, PixelScal
     for (int k = 0; k < 6; ++k) img.georef.geotransform[static_cast<std::size_t>(k)] = gt[k];
     const char* wkt = GDALGetProjectionRef(handle(ds));
     img.georef.crs_wkt = wkt != nullptr ? wkt : "";
+  } else if (GDALGetGCPCount(handle(ds)) > 0) {
+    // A raster on the radar's own grid placed by ground control points
+    // (ris's slant-range products): kept, so that what is made of the image
+    // can carry them too.
+    const GDAL_GCP* gcps = GDALGetGCPs(handle(ds));
+    for (int k = 0; k < GDALGetGCPCount(handle(ds)); ++k)
+      img.georef.gcps.push_back(
+          {gcps[k].dfGCPPixel, gcps[k].dfGCPLine, gcps[k].dfGCPX, gcps[k].dfGCPY, gcps[k].dfGCPZ});
+    const char* wkt = GDALGetGCPProjection(handle(ds));
+    img.georef.crs_wkt = wkt != nullptr ? wkt : "";
   }
   char** md = GDALGetMetadata(handle(ds), nullptr);
   for (int i = 0; md != nullptr && md[i] != nullptr; ++i) {

@@ -27,7 +27,7 @@ struct IntensityImage {
   int cols = 0, rows = 0;
   std::vector<float> intensity;  // rows x cols; NaN: no data
   std::string read_as;           // "complex |z|^2", "power", "amplitude^2", "10^(dB/10)"
-  Georef georef;
+  Georef georef;  // a geotransform and CRS, or else the raster's GCPs (if any) and their CRS
   bool has_geotransform = false;
   RasterMetadata metadata;  // the dataset's default-domain items
 };
