@@ -41,6 +41,7 @@
 #                                    with a note when Chromium is missing
 #   town-sar-x-ground-range          README.md "Buildings and reflectors" (ground_range.png, 600 px)
 #   town-quadpol-pauli               README.md, docs/polarimetry.md (polsar/pauli.png, 600 px)
+#   town-camera                      README.md, docs/sensors.md (camera_preview.png of ris sensor)
 #   stream-40k-ground-range          README.md, docs/performance.md (--heavy only)
 # The pic_* functions are called by name ("pic_$name"), which shellcheck cannot see.
 # shellcheck disable=SC2317
@@ -256,6 +257,14 @@ pic_town-quadpol-pauli() {
   put pauli.png town-quadpol-pauli
 }
 
+# README.md "Optical and thermal images", docs/sensors.md: the town through
+# an oblique frame camera.
+pic_town-camera() {
+  run sensor optical "$DATA/scenes/town.toml" --table "$DATA/sensors_eo/town-eo.csv" \
+      --sensor "$DATA/sensors_eo/optical-camera-town.toml" -o out-town-camera
+  put out-town-camera/camera_preview.png town-camera
+}
+
 # README.md "Large scenes"; docs/performance.md. --heavy only.
 pic_stream-40k-ground-range() {
   run scene fractal --generator noise --size 40000 --cell-size 5 --relief 2000 \
@@ -271,7 +280,7 @@ ALL=(ku-geometric-preview slar-ku-geometric-fig4-5 slar-ku-geometric-fig7
      ppi-ku-geometric-nav-10000ft topo-winnipeg-incidence topo-winnipeg-simamp
      simulate-sanand-mean fading compare-ku-geometric-two-seeds
      sensitivity-ku-geometric-cell-factor town-sar-x-ground-range town-quadpol-pauli
-     serve-page)
+     town-camera serve-page)
 # --check: a few seconds of the cheapest commands, one of each kind of
 # conversion (ris's PNG, halved by gdal_translate, composed in Python).
 QUICK=(ku-geometric-preview sigma0-ku-geometric-8.6GHz fractal-alps-preview
