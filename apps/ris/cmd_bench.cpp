@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_camera.h"
 #include "bench_objects.h"
 #include "bench_quad_pol.h"
 #include "command_registry.h"
@@ -83,6 +84,7 @@ struct BenchArgs {
   std::uint64_t seed = 7;
   bool topo = false;     // ris topo's DEM pass instead (ris/perf/topo_bench.h)
   bool objects = false;  // the SBR tracer instead (apps/ris/bench_objects.h)
+  bool camera = false;   // the frame camera instead (apps/ris/bench_camera.h)
   double topo_posting_arcsec = TopoBenchOptions{}.posting_arcsec;
 };
 
@@ -236,16 +238,24 @@ void run_topo_bench_command(const BenchArgs& a) {
   fmt::print("topo_dem_cells_per_s_2threads={:.0f}\n", cells / r.dem_seconds);
 }
 
-void run_bench(const BenchArgs& a) {
-  if (a.objects) {
+// The benches run instead of the default one (--camera, --objects, --topo);
+// false when none is asked for.
+bool run_other_bench(const BenchArgs& a) {
+  if (a.camera) {
+    run_camera_bench(ris::data_dir().string(), a.repeats);
+  } else if (a.objects) {
     run_objects_bench(a.repeats);
     run_town_bench(ris::data_dir().string());
-    return;
-  }
-  if (a.topo) {
+  } else if (a.topo) {
     run_topo_bench_command(a);
-    return;
+  } else {
+    return false;
   }
+  return true;
+}
+
+void run_bench(const BenchArgs& a) {
+  if (run_other_bench(a)) return;
   const int rows = a.rows > 0 ? a.rows : a.size;
   const int cols = a.cols > 0 ? a.cols : a.size;
   if (rows <= 0 || cols <= 0) throw InputError("", "--size", "expected a positive scene size");
@@ -329,6 +339,7 @@ void run_bench(const BenchArgs& a) {
     fmt::print("channels_4_over_1={:.3f}\n", t4 / t1);
   }
   run_quad_pol_bench(ris::data_dir().string(), a.repeats);
+  run_camera_bench(ris::data_dir().string(), a.repeats);
 
   // Bandwidth baseline on the same scene, same run.
   {
@@ -405,6 +416,8 @@ void add_bench(CLI::App& app) {
   cmd->add_flag("!--no-io", args->io, "Skip the product-writing (I/O) timing");
   cmd->add_flag("--topo", args->topo,
                 "Instead: ris topo's DEM pass on the airborne example, DEM cells/s on 2 threads");
+  cmd->add_flag("--camera", args->camera,
+                "Instead: the optical frame camera over the town, rays/s on 2 threads");
   cmd->add_flag("--objects", args->objects,
                 "Instead: the SBR tracer of cultural objects, rays/s on 2 threads");
   cmd->add_option("--topo-posting", args->topo_posting_arcsec,

@@ -131,20 +131,22 @@ nlohmann::json metadata(const SensorArgs& a, const ris::EoSensorConfig& cfg,
 // its own per pixel); the same image when the sensor has none.
 ris::EoImage noise_free(const ris::Scene& scene, const ris::EoSensorConfig& cfg,
                         const ris::EoSurfaceTable& table, const ris::EoImage& img, double lat,
-                        double lon) {
+                        double lon, const ris::EoTerrain& terrain) {
   if (cfg.noise == 0) return img;
   ris::EoSensorConfig quiet = cfg;
   quiet.noise = 0;
-  return ris::render_eo(scene, quiet, table, lat, lon);
+  return ris::render_eo(scene, quiet, table, lat, lon, &terrain);
 }
 
 // camera_*.tif (GCPs in the scene's CRS from the rays' ground points, so
 // gdalwarp -tps places the picture), camera_preview.png; returns the
 // metadata's camera block.
 nlohmann::json write_camera_products(ris::StagedDirectory& out, const ris::Scene& scene,
-                                     const ris::EoSensorConfig& cfg, const ris::EoImage& grid) {
+                                     const ris::EoSensorConfig& cfg, const ris::EoImage& grid,
+                                     const ris::EoTerrain& terrain) {
   const ris::FrameCamera& cam = *cfg.camera;
-  const ris::CameraImage img = ris::view_through_camera(scene, grid, cfg, cam, cfg.detector);
+  const ris::CameraImage img =
+      ris::view_through_camera(scene, grid, cfg, cam, cfg.detector, &terrain);
   ris::Georef georef;
   georef.crs_wkt = scene.crs_wkt;
   georef.gcps = img.gcps;
@@ -200,7 +202,8 @@ void run_sensor(const SensorArgs& a) {
   const ris::LoadedScene loaded = ris::load_scene_source(a.scene);
   const ris::Scene& scene = loaded.scene;
   const auto [lat, lon] = scene_lat_lon(scene, cfg, a.scene);
-  const ris::EoImage img = ris::render_eo(scene, cfg, table, lat, lon);
+  const ris::EoTerrain terrain = ris::build_eo_terrain(scene);  // for the sun and the camera
+  const ris::EoImage img = ris::render_eo(scene, cfg, table, lat, lon, &terrain);
   if (img.night && !thermal) {
     spdlog::warn(
         "{}: the sun is below the horizon (elevation {:.2f} deg) at {} UTC hour {:.3f}: rendering "
@@ -223,8 +226,8 @@ void run_sensor(const SensorArgs& a) {
                                   std::numeric_limits<double>::quiet_NaN(), md);
   write_preview(out.path("preview.png"), img.band_names, img.bands, img.cols, img.rows);
   if (cfg.camera) {
-    md_json["camera"] =
-        write_camera_products(out, scene, cfg, noise_free(scene, cfg, table, img, lat, lon));
+    md_json["camera"] = write_camera_products(
+        out, scene, cfg, noise_free(scene, cfg, table, img, lat, lon, terrain), terrain);
   }
   ris::write_text_file_atomic(out.path("metadata.json"), md_json.dump(2) + "\n");
   out.commit();

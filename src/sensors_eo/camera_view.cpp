@@ -11,6 +11,7 @@
 #include "ris/sensors_eo/mtf_blur.h"
 #include "ris/sensors_eo/planck_band.h"
 #include "ris/util/counter_rng.h"
+#include "ris/util/error.h"
 
 namespace ris {
 namespace {
@@ -74,27 +75,35 @@ void shade_pixel(const CameraSetup& s, int row, int col, CameraImage& img) {
   const std::size_t bands = s.grid_radiance.size();
   std::array<double, kMaxBands> sum{};  // no allocation per pixel
   int hits = 0;
+  // The centre ray: range and footprint; with an odd number of samples it
+  // is also the middle sub-sample (one ray, not two).
+  const Vec3 dc = camera_ray_direction(s.frame, s.cam, row + 0.5, col + 0.5);
+  const Hit hc = first_hit(*s.bvh, s.eye, dc);
+  auto add = [&](const Vec3& d, const Hit& h) {
+    if (!h.ok) return;
+    const std::ptrdiff_t cell = cell_of(s, s.eye + d * h.t);
+    if (cell < 0) return;
+    ++hits;
+    for (std::size_t k = 0; k < bands; ++k) sum[k] += s.grid_radiance[k][cell];
+  };
   for (int a = 0; a < n; ++a) {
     for (int b = 0; b < n; ++b) {
+      if (n % 2 == 1 && 2 * a + 1 == n && 2 * b + 1 == n) {
+        add(dc, hc);
+        continue;
+      }
       const Vec3 d = camera_ray_direction(s.frame, s.cam, row + (a + 0.5) / n, col + (b + 0.5) / n);
-      const Hit h = first_hit(*s.bvh, s.eye, d);
-      if (!h.ok) continue;
-      const std::ptrdiff_t cell = cell_of(s, s.eye + d * h.t);
-      if (cell < 0) continue;
-      ++hits;
-      for (std::size_t k = 0; k < bands; ++k) sum[k] += s.grid_radiance[k][cell];
+      add(d, first_hit(*s.bvh, s.eye, d));
     }
   }
   for (std::size_t k = 0; k < bands; ++k) {
     img.bands[k][p] = hits > 0 ? static_cast<float>(sum[k] / hits) : kNan;
   }
-  const Vec3 d = camera_ray_direction(s.frame, s.cam, row + 0.5, col + 0.5);
-  const Hit h = first_hit(*s.bvh, s.eye, d);
-  if (!h.ok) return;
-  const double cos_i = std::max(1e-3, std::abs(s.bvh->normals()[h.prim].dot(d)));
-  img.range_m[p] = static_cast<float>(h.t);
+  if (!hc.ok) return;
+  const double cos_i = std::max(1e-3, std::abs(s.bvh->normals()[hc.prim].dot(dc)));
+  img.range_m[p] = static_cast<float>(hc.t);
   img.footprint_area_m2[p] =
-      static_cast<float>(h.t * h.t * pixel_solid_angle_sr(s.frame, d) / cos_i);
+      static_cast<float>(hc.t * hc.t * pixel_solid_angle_sr(s.frame, dc) / cos_i);
 }
 
 CameraSetup make_setup(const Scene& scene, const EmbreeScene& bvh, const EoImage& grid,
@@ -163,11 +172,33 @@ void finish_bands(const EoSensorConfig& sensor, const std::optional<Detector>& d
   }
 }
 
+// A camera inside or under the terrain sees nothing the user meant.
+void require_above_terrain(const Scene& scene, const EoSensorConfig& sensor,
+                           const FrameCamera& cam) {
+  const auto [gc, gr] = scene.grid_from_world(cam.x_m, cam.y_m);
+  const int c = static_cast<int>(std::floor(gc)), r = static_cast<int>(std::floor(gr));
+  if (r < 0 || c < 0 || r >= scene.rows || c >= scene.cols) return;
+  const std::size_t i = scene.index(r, c);
+  if (scene.valid[i] && cam.altitude_m <= scene.elevation_m[i]) {
+    throw InputError(sensor.path, "camera.altitude",
+                     "the camera (" + std::to_string(cam.altitude_m) +
+                         " m) is at or below the terrain under it (" +
+                         std::to_string(scene.elevation_m[i]) +
+                         " m): give an altitude above the terrain (heights are above the "
+                         "scene's datum, not above ground)");
+  }
+}
+
 }  // namespace
+
+std::int64_t camera_ray_count(const FrameCamera& cam) {
+  const std::int64_t n = cam.samples;
+  return static_cast<std::int64_t>(cam.cols) * cam.rows * (n * n + (n % 2 == 0 ? 1 : 0));
+}
 
 CameraImage view_through_camera(const Scene& scene, const EoImage& grid,
                                 const EoSensorConfig& sensor, const FrameCamera& cam,
-                                const std::optional<Detector>& detector) {
+                                const std::optional<Detector>& detector, const EoTerrain* terrain) {
   CameraImage img;
   img.rows = cam.rows;
   img.cols = cam.cols;
@@ -177,10 +208,14 @@ CameraImage view_through_camera(const Scene& scene, const EoImage& grid,
   img.bands.assign(grid.bands.size(), std::vector<float>(n, kNan));
   img.range_m.assign(n, kNan);
   img.footprint_area_m2.assign(n, kNan);
-  const TriangleMesh mesh = terrain_mesh(scene);
-  if (mesh.triangles.empty()) return img;
-  const EmbreeScene bvh(mesh);
-  const CameraSetup s = make_setup(scene, bvh, grid, sensor, cam);
+  require_above_terrain(scene, sensor, cam);
+  EoTerrain own;
+  if (terrain == nullptr) {
+    own = build_eo_terrain(scene);
+    terrain = &own;
+  }
+  if (!terrain->bvh) return img;
+  const CameraSetup s = make_setup(scene, *terrain->bvh, grid, sensor, cam);
   std::int64_t empty = 0;
 #pragma omp parallel for schedule(dynamic, 4) reduction(+ : empty)
   for (int r = 0; r < cam.rows; ++r) {
@@ -191,6 +226,12 @@ CameraImage view_through_camera(const Scene& scene, const EoImage& grid,
     }
   }
   img.empty_pixels = empty;
+  if (empty == static_cast<std::int64_t>(n)) {
+    throw InputError(sensor.path, "camera.heading",
+                     "the camera sees none of the scene (every ray misses it): turn it towards "
+                     "the scene (camera.heading, clockwise from north; camera.depression, below "
+                     "the horizontal) or move it (camera.position, scene metres)");
+  }
   add_gcps(s, img);
   const double sigma = gaussian_sigma_px(cam.mtf_at_nyquist);
   for (std::vector<float>& band : img.bands) blur_gaussian_masked(band, img.rows, img.cols, sigma);

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "ris/sensors_eo/planck_band.h"
+#include "ris/util/error.h"
 
 namespace ris {
 namespace {
@@ -121,7 +122,8 @@ TEST(CameraView, ABlockOccludesTheGroundBehindIt) {
 
 // A thermal camera averages radiance and reports brightness temperature:
 // over one uniform field it reads the grid's temperature (through Planck and
-// back) whatever the MTF; a camera that sees no scene reads no data.
+// back) whatever the MTF; a camera that sees none of the scene, or stands
+// under its terrain, is refused naming the key.
 TEST(CameraView, ThermalReadsTheGridTemperatureAndSkyIsEmpty) {
   const Scene scene = Scene::flat(100, 100, 1.0, 0.0f, 21);
   const EoSurfaceTable table = parse_eo_surface_table(kTable, "t.csv");
@@ -135,9 +137,20 @@ TEST(CameraView, ThermalReadsTheGridTemperatureAndSkyIsEmpty) {
   for (float v : img.bands[0]) EXPECT_NEAR(v, t, 1e-3f);
   cam.depression_deg = 0;  // the horizon: the ground it could see lies km off the scene
   cam.altitude_m = 1000.0;
-  const CameraImage sky = view_through_camera(scene, grid, cfg, cam, std::nullopt);
-  EXPECT_TRUE(std::isnan(sky.bands[0][0]));
-  EXPECT_EQ(sky.empty_pixels, 256);
+  try {
+    (void)view_through_camera(scene, grid, cfg, cam, std::nullopt);
+    ADD_FAILURE() << "a camera that sees none of the scene was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("camera.heading"), std::string::npos) << e.what();
+  }
+  cam.depression_deg = 90;
+  cam.altitude_m = -5.0;  // under the ground (0 m)
+  try {
+    (void)view_through_camera(scene, grid, cfg, cam, std::nullopt);
+    ADD_FAILURE() << "a camera under the terrain was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("camera.altitude"), std::string::npos) << e.what();
+  }
 }
 
 // Noise keyed on pixel and band: the same bytes for one and two threads.

@@ -55,15 +55,13 @@ double add_noise(double v, const EoSensorConfig& cfg, int row, int col, std::siz
 }
 
 void render_optical(const Scene& scene, const EoSensorConfig& cfg, const EoSurfaceTable& table,
-                    EoImage& img) {
+                    const EoTerrain& terrain, EoImage& img) {
   const double r2 = img.sun.earth_sun_distance_au * img.sun.earth_sun_distance_au;
   const double cos_z = std::cos(img.sun.zenith_deg * std::numbers::pi / 180.0);
   const Vec3 s = sun_direction_enu(img.sun.azimuth_deg, img.sun.elevation_deg);
-  const TriangleMesh mesh = terrain_mesh(scene);
-  const bool have_mesh = !img.night && !mesh.triangles.empty();
-  const double top = mesh_top_z(mesh);
-  const std::unique_ptr<EmbreeScene> bvh =
-      have_mesh ? std::make_unique<EmbreeScene>(mesh) : nullptr;
+  const EmbreeScene* bvh = terrain.bvh.get();
+  const bool have_mesh = !img.night && bvh != nullptr;
+  const double top = terrain.top_z_m;
   std::int64_t shadowed = 0;
 #pragma omp parallel for schedule(dynamic, 8) reduction(+ : shadowed)
   for (int r = 0; r < scene.rows; ++r) {
@@ -130,15 +128,13 @@ void cell_insolation(const Scene& scene, const EmbreeScene* bvh, double top, con
 }
 
 void render_thermal(const Scene& scene, const EoSensorConfig& cfg, const EoSurfaceTable& table,
-                    EoImage& img) {
+                    const EoTerrain& terrain, EoImage& img) {
   const DaySamples day =
       day_samples(cfg.when, img.latitude_deg, img.longitude_deg, 8, cfg.transmittance);
   const double t_s = cfg.when.hour * 3600.0;
   const ThermalBands bands = thermal_bands(cfg);
-  const TriangleMesh mesh = terrain_mesh(scene);
-  const std::unique_ptr<EmbreeScene> bvh =
-      mesh.triangles.empty() ? nullptr : std::make_unique<EmbreeScene>(mesh);
-  const double top = mesh_top_z(mesh);
+  const EmbreeScene* bvh = terrain.bvh.get();
+  const double top = terrain.top_z_m;
 #pragma omp parallel
   {
     std::vector<double> insolation(day.t_seconds.size());  // once per thread
@@ -149,7 +145,7 @@ void render_thermal(const Scene& scene, const EoSensorConfig& cfg, const EoSurfa
         const std::size_t i = scene.index(r, c);
         if (!scene.valid[i]) continue;
         const EoSurface& surf = table.at(scene.category[i]);
-        cell_insolation(scene, bvh.get(), top, day, r, c, insolation);
+        cell_insolation(scene, bvh, top, day, r, c, insolation);
         forcing_from_insolation(day, insolation.data(), f);
         const ThermalSurface ts{cfg.mean_temperature_k, surf.thermal_inertia, surf.albedo,
                                 surf.emissivity_lwir};
@@ -192,8 +188,17 @@ TriangleMesh terrain_mesh(const Scene& scene) {
   return m;
 }
 
+EoTerrain build_eo_terrain(const Scene& scene) {
+  EoTerrain t;
+  const TriangleMesh mesh = terrain_mesh(scene);
+  if (mesh.triangles.empty()) return t;
+  t.top_z_m = mesh_top_z(mesh);
+  t.bvh = std::make_unique<EmbreeScene>(mesh);
+  return t;
+}
+
 EoImage render_eo(const Scene& scene, const EoSensorConfig& sensor, const EoSurfaceTable& table,
-                  double latitude_deg, double longitude_deg) {
+                  double latitude_deg, double longitude_deg, const EoTerrain* terrain) {
   EoImage img;
   img.rows = scene.rows;
   img.cols = scene.cols;
@@ -209,10 +214,15 @@ EoImage render_eo(const Scene& scene, const EoSensorConfig& sensor, const EoSurf
   for (std::size_t i = 0; i < scene.size(); ++i) {  // fail before the parallel loops
     if (scene.valid[i]) table.at(scene.category[i]);
   }
+  EoTerrain own;
+  if (terrain == nullptr) {
+    own = build_eo_terrain(scene);
+    terrain = &own;
+  }
   if (sensor.kind == EoKind::optical) {
-    render_optical(scene, sensor, table, img);
+    render_optical(scene, sensor, table, *terrain, img);
   } else {
-    render_thermal(scene, sensor, table, img);
+    render_thermal(scene, sensor, table, *terrain, img);
   }
   return img;
 }

@@ -91,12 +91,11 @@ FrameCamera parse_camera(ConfigTable& t) {
   if (!(cam.mtf_at_nyquist > 0 && cam.mtf_at_nyquist <= 1)) {
     t.fail("mtf_at_nyquist", "expected the MTF at Nyquist in (0, 1] (1: no blur)");
   }
-  const std::int64_t rays = static_cast<std::int64_t>(cam.cols) * cam.rows *
-                            (static_cast<std::int64_t>(cam.samples) * cam.samples + 1);
+  const std::int64_t rays = camera_ray_count(cam);
   if (rays > kMaxCameraRays) {
-    t.fail("samples", "columns x rows x (samples^2 + 1) = " + std::to_string(rays) +
-                          " rays, more than " + std::to_string(kMaxCameraRays) +
-                          ": fewer pixels or samples");
+    t.fail("samples",
+           "columns x rows x samples^2 (+ 1 centre ray if even) = " + std::to_string(rays) +
+               " rays, more than " + std::to_string(kMaxCameraRays) + ": fewer pixels or samples");
   }
   t.finish();
   return cam;

@@ -33,4 +33,13 @@ double pixel_solid_angle_sr(const CameraFrame& frame, const Vec3& direction) {
   return c * c * c / (frame.focal_px * frame.focal_px);
 }
 
+std::optional<std::pair<double, double>> camera_project(const CameraFrame& frame,
+                                                        const FrameCamera& cam,
+                                                        const Vec3& offset) {
+  const double z = offset.dot(frame.forward);
+  if (!(z > 0)) return std::nullopt;
+  return std::pair{0.5 * cam.rows + frame.focal_px * offset.dot(frame.down) / z,
+                   0.5 * cam.cols + frame.focal_px * offset.dot(frame.right) / z};
+}
+
 }  // namespace ris

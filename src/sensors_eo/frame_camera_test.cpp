@@ -68,5 +68,29 @@ TEST(FrameCamera, PixelSolidAnglesSumToTheFieldOfView) {
   EXPECT_NEAR(sum, omega, 1e-5 * omega);
 }
 
+// A point of known position projects to the pixel the collinearity
+// equations predict (Kraus 2007, eq. 4.2-1, here with the axes written out):
+// a nadir camera 500 m up sees a point dx east, dy north at
+// col = cols/2 + f dx / 500, row = rows/2 - f dy / 500; the ray through that
+// image point returns to the point; behind the camera nothing projects.
+TEST(FrameCamera, KnownPointsProjectToThePredictedPixel) {
+  const FrameCamera nadir_cam = camera(0, 90, 640, 480, 30);
+  const CameraFrame f = camera_frame(nadir_cam);
+  const Vec3 offset{37.0, -21.0, -500.0};
+  const auto px = camera_project(f, nadir_cam, offset);
+  ASSERT_TRUE(px.has_value());
+  EXPECT_NEAR(px->second, 320.0 + f.focal_px * 37.0 / 500.0, 0.1);
+  EXPECT_NEAR(px->first, 240.0 + f.focal_px * 21.0 / 500.0, 0.1);
+  // Oblique, any heading: project then cast back through the image point.
+  const FrameCamera oblique = camera(123, 35, 800, 600, 50);
+  const CameraFrame g = camera_frame(oblique);
+  const Vec3 p{-150.0, -80.0, -300.0};
+  const auto q = camera_project(g, oblique, p);
+  ASSERT_TRUE(q.has_value());
+  const Vec3 back = camera_ray_direction(g, oblique, q->first, q->second);
+  EXPECT_NEAR(back.dot(p.normalized()), 1.0, 1e-12);
+  EXPECT_FALSE(camera_project(g, oblique, -g.forward).has_value());
+}
+
 }  // namespace
 }  // namespace ris

@@ -40,12 +40,20 @@ struct CameraImage {
   std::int64_t empty_pixels = 0;         // no ray met the scene
 };
 
+// Rays a camera casts: samples^2 per pixel, plus the centre ray (range and
+// footprint) when samples is even (when odd, the middle sample is it).
+std::int64_t camera_ray_count(const FrameCamera& camera);
+
 // Most pixels x rays a camera may cast (1e9: about a minute on two cores).
 inline constexpr std::int64_t kMaxCameraRays = 1'000'000'000;
 
 // grid: the scene-grid image without noise (render_eo with noise 0).
+// Throws InputError naming camera.altitude for a camera at or below the
+// terrain under it, camera.heading for one that sees none of the scene.
+// terrain: the scene's (built here when not given).
 CameraImage view_through_camera(const Scene& scene, const EoImage& grid,
                                 const EoSensorConfig& sensor, const FrameCamera& camera,
-                                const std::optional<Detector>& detector);
+                                const std::optional<Detector>& detector,
+                                const EoTerrain* terrain = nullptr);
 
 }  // namespace ris

@@ -10,10 +10,12 @@
 // bytes are the same for any thread count. docs/sensors.md.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "ris/objects/mesh.h"
+#include "ris/objects/sbr.h"
 #include "ris/scene/scene.h"
 #include "ris/sensors_eo/eo_sensor_config.h"
 #include "ris/sensors_eo/sun_position.h"
@@ -39,9 +41,19 @@ struct EoImage {
 // four valid cells.
 TriangleMesh terrain_mesh(const Scene& scene);
 
-// Renders the image at the place (latitude, longitude of the scene's centre).
-// Throws InputError (naming the table) for a category the table lacks.
+// The terrain mesh's BVH, built once per scene and shared by the sun's rays
+// and a camera's (building it is most of a small image's time). bvh is null
+// for a scene without a square of four valid cells.
+struct EoTerrain {
+  std::unique_ptr<EmbreeScene> bvh;
+  double top_z_m = 0;  // the highest vertex: rays to the sun stop above it
+};
+EoTerrain build_eo_terrain(const Scene& scene);
+
+// Renders the image at the place (latitude, longitude of the scene's centre)
+// with the scene's terrain (built here when not given). Throws InputError
+// (naming the table) for a category the table lacks.
 EoImage render_eo(const Scene& scene, const EoSensorConfig& sensor, const EoSurfaceTable& table,
-                  double latitude_deg, double longitude_deg);
+                  double latitude_deg, double longitude_deg, const EoTerrain* terrain = nullptr);
 
 }  // namespace ris

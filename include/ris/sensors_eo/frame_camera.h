@@ -22,6 +22,9 @@
 //   ris::Vec3 d = ris::camera_ray_direction(cam, 240.0, 320.0);  // centre
 #pragma once
 
+#include <optional>
+#include <utility>
+
 #include "ris/util/vec3.h"
 
 namespace ris {
@@ -55,5 +58,12 @@ Vec3 camera_ray_direction(const CameraFrame& frame, const FrameCamera& cam, doub
 // with the optical axis: cos^3(off_axis) / focal_px^2 steradians (the
 // pixel's area over the squared distance, foreshortened).
 double pixel_solid_angle_sr(const CameraFrame& frame, const Vec3& direction);
+
+// The image point (row, col) in pixel units where the point at `offset`
+// from the camera (point minus camera position, ENU metres) projects: the
+// collinearity equations row = rows/2 + f (d . down) / (d . forward),
+// col = cols/2 + f (d . right) / (d . forward). nullopt behind the camera.
+std::optional<std::pair<double, double>> camera_project(const CameraFrame& frame,
+                                                        const FrameCamera& cam, const Vec3& offset);
 
 }  // namespace ris
