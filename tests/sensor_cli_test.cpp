@@ -203,6 +203,15 @@ TEST(SensorCli, FrameCameraWritesItsPictureWithGcps) {
   EXPECT_TRUE(md["camera"]["digital_numbers"].get<bool>());
 }
 
+// The bench's camera line runs and prints its figure (no speed is asserted:
+// speed goals live in the bench's printout, docs/sensors.md).
+TEST(SensorCli, BenchPrintsTheCameraRayRate) {
+  const auto r = run_ris("bench --camera --repeats 1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("camera_rays_per_s="), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("terrain BVH"), std::string::npos) << r.output;
+}
+
 TEST(SensorCli, BadCamerasNameTheKeyAndWriteNothing) {
   TempDir d;
   write_file(d.path() / "s.toml", kScene);
@@ -237,6 +246,14 @@ TEST(SensorCli, BadCamerasNameTheKeyAndWriteNothing) {
   r = run("optical", optical + "[detector]\nelectrons_per_radiance = 1\nfull_well = 10\n");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("[camera]"), std::string::npos) << r.output;
+  r = run("optical", optical + "[camera]\nposition = [690250, 5330200]\naltitude = 10\n");
+  EXPECT_NE(r.exit_code, 0);  // the pyramid's top (its centre: x, y are its corner) is 57 m
+  EXPECT_NE(r.output.find("camera.altitude"), std::string::npos) << r.output;
+  r = run("optical", optical +
+                         "[camera]\nposition = [690200, 5330150]\naltitude = 500\n"
+                         "depression = 0\n");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("sees none of the scene"), std::string::npos) << r.output;
   r = run("optical", sensor_text("optical", "[\"red\", \"red\"]", "10:00:00"));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("twice"), std::string::npos) << r.output;
