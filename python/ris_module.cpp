@@ -1133,7 +1133,8 @@ void bind_backscatter(py::module_& m) {
 
 }  // namespace
 
-void bind_study(py::module_& m);  // study_bindings.cpp
+void bind_study(py::module_& m);   // study_bindings.cpp
+void bind_sensor(py::module_& m);  // sensor_bindings.cpp
 
 PYBIND11_MODULE(_ris, m) {
   m.doc() = "ris radar image simulator: C++ core bindings (use the `ris` package)";
@@ -1144,6 +1145,7 @@ PYBIND11_MODULE(_ris, m) {
   bind_result(m);
   bind_backscatter(m);
   bind_study(m);
+  bind_sensor(m);
   m.def("_data_dir", [] { return ris::data_dir().string(); });
   m.def("_topo", &topo);
   m.def("_quality", &quality);

@@ -22,9 +22,9 @@
 #include "command_registry.h"
 #include "ris/io/atomic_file.h"
 #include "ris/io/raster_io.h"
-#include "ris/scene/geo_frame.h"
 #include "ris/scene/scene_source.h"
 #include "ris/sensors_eo/camera_view.h"
+#include "ris/sensors_eo/eo_place.h"
 #include "ris/sensors_eo/eo_render.h"
 #include "ris/util/error.h"
 
@@ -41,21 +41,6 @@ struct SensorArgs {
   int threads = 0;
   bool quiet = false;
 };
-
-// The place the sun is computed for: the scene's centre through its CRS, or
-// the sensor file's latitude/longitude (which win when given).
-std::pair<double, double> scene_lat_lon(const ris::Scene& scene, const ris::EoSensorConfig& cfg,
-                                        const std::string& scene_path) {
-  if (cfg.latitude_deg && cfg.longitude_deg) return {*cfg.latitude_deg, *cfg.longitude_deg};
-  if (scene.crs_wkt.empty()) {
-    throw InputError(cfg.path, "latitude",
-                     "the scene " + scene_path + " has no CRS: give latitude and longitude");
-  }
-  const ris::GeoFrame frame(scene.crs_wkt, scene_path);
-  const auto [x, y] = scene.world_from_grid(scene.cols / 2.0, scene.rows / 2.0);
-  const auto [lon, lat] = frame.lonlat_from_scene(x, y);
-  return {lat, lon};
-}
 
 // 8-bit preview: RGB from red/green/blue when all three are imaged, else the
 // first band in grey; each stretched linearly between its 2nd and 98th
@@ -201,7 +186,7 @@ void run_sensor(const SensorArgs& a) {
   const ris::EoSurfaceTable table = ris::load_eo_surface_table(a.table);
   const ris::LoadedScene loaded = ris::load_scene_source(a.scene);
   const ris::Scene& scene = loaded.scene;
-  const auto [lat, lon] = scene_lat_lon(scene, cfg, a.scene);
+  const auto [lat, lon] = ris::eo_place(scene, cfg, a.scene);
   const ris::EoTerrain terrain = ris::build_eo_terrain(scene);  // for the sun and the camera
   const ris::EoImage img = ris::render_eo(scene, cfg, table, lat, lon, &terrain);
   if (img.night && !thermal) {

@@ -60,6 +60,8 @@ __all__ = [
     "simulate_acquisition",
     "study",
     "StudyResult",
+    "sensor",
+    "SensorImage",
     "sigma0",
     "list_models",
     "DIELECTRIC_MODELS",
@@ -1043,3 +1045,4 @@ def compare(simulated_w, real_w, register=True, max_shift_px=16, mask=None, cate
 
 
 from ._study import StudyResult, study  # noqa: E402 (uses Scene, Radar, _xarray)
+from ._sensor import SensorImage, sensor  # noqa: E402
