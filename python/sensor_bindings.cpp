@@ -40,7 +40,8 @@ py::dict run_sensor(const std::string& scene_path, const std::string& sensor_pat
     const int before = omp_get_max_threads();
     if (threads > 0) omp_set_num_threads(threads);
     cfg = ris::load_eo_sensor(sensor_path);
-    const ris::EoSurfaceTable table = ris::load_eo_surface_table(table_path);
+    const ris::EoSurfaceTable table = ris::load_eo_surface_table(
+        table_path.empty() ? ris::default_eo_surface_table(scene_path) : table_path);
     loaded = ris::load_scene_source(scene_path);
     std::tie(lat, lon) = ris::eo_place(loaded.scene, cfg, scene_path);
     const ris::EoTerrain terrain = ris::build_eo_terrain(loaded.scene);

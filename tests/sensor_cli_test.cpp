@@ -203,6 +203,21 @@ TEST(SensorCli, FrameCameraWritesItsPictureWithGcps) {
   EXPECT_TRUE(md["camera"]["digital_numbers"].get<bool>());
 }
 
+// Without --table the table is the one named after the scene's library: the
+// standard scene's crops (ku-geometric-eo.csv), which the generic table
+// lacks.
+TEST(SensorCli, DefaultTableFollowsTheScenesLibrary) {
+  TempDir d;
+  write_file(d.path() / "o.toml",
+             sensor_text("optical", "[\"red\"]", "10:00:00") + "latitude = 39\nlongitude = -95\n");
+  const auto r = run_ris("sensor optical " + std::string(test::data_dir()) +
+                         "/scenes/ku-geometric.toml --sensor " + (d.path() / "o.toml").string() +
+                         " -q -o " + (d.path() / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto md = nlohmann::json::parse(read_file(d.path() / "out" / "metadata.json"));
+  EXPECT_NE(md["surface_table"].get<std::string>().find("ku-geometric-eo.csv"), std::string::npos);
+}
+
 // The bench's camera line runs and prints its figure (no speed is asserted:
 // speed goals live in the bench's printout, docs/sensors.md).
 TEST(SensorCli, BenchPrintsTheCameraRayRate) {

@@ -91,7 +91,7 @@ nlohmann::json metadata(const SensorArgs& a, const ris::EoSensorConfig& cfg,
   md["sensor_kind"] = a.kind;
   md["scene"] = a.scene;
   md["sensor_file"] = a.sensor;
-  md["surface_table"] = a.table;
+  md["surface_table"] = a.table.empty() ? ris::default_eo_surface_table(a.scene) : a.table;
   md["rows"] = img.rows;
   md["cols"] = img.cols;
   md["bands"] = img.band_names;
@@ -183,7 +183,8 @@ void run_sensor(const SensorArgs& a) {
                      fmt::format("the file is a {} sensor but the command is `ris sensor {}`",
                                  thermal ? "thermal" : "optical", a.kind));
   }
-  const ris::EoSurfaceTable table = ris::load_eo_surface_table(a.table);
+  const std::string table_path = a.table.empty() ? ris::default_eo_surface_table(a.scene) : a.table;
+  const ris::EoSurfaceTable table = ris::load_eo_surface_table(table_path);
   const ris::LoadedScene loaded = ris::load_scene_source(a.scene);
   const ris::Scene& scene = loaded.scene;
   const auto [lat, lon] = ris::eo_place(scene, cfg, a.scene);
@@ -234,8 +235,9 @@ void add_sensor(CLI::App& app) {
   cmd->add_option("scene", a->scene, "Scene file")->required();
   cmd->add_option("--sensor", a->sensor, "Sensor TOML (data/sensors_eo/optical.toml, thermal.toml)")
       ->required();
-  a->table = ris::app::data_path("sensors_eo/generic-terrain-eo.csv");
-  cmd->add_option("--table", a->table, "Per-category surface table (CSV)")->capture_default_str();
+  cmd->add_option("--table", a->table,
+                  "Per-category surface table (CSV; default: data/sensors_eo/<the scene's "
+                  "backscatter library>-eo.csv, else generic-terrain-eo.csv)");
   cmd->add_option("--out,-o", a->out, "Output folder")->required();
   cmd->add_option("--threads", a->threads, "Threads (0: all)")->capture_default_str();
   cmd->add_flag("--quiet,-q", a->quiet, "Print nothing");

@@ -54,8 +54,9 @@ def sensor(scene, sensor, table=None, threads=0):
     """Renders ``ris sensor``'s images: scene, a scene file (a description or
     a ris scene GeoTIFF; a Scene loaded from a file is taken by its path);
     sensor, a sensor TOML (data/sensors_eo/optical.toml, thermal.toml, ...);
-    table, the per-category surface table (default
-    data/sensors_eo/generic-terrain-eo.csv). Returns a SensorImage."""
+    table, the per-category surface table (default, as the command line's:
+    data/sensors_eo/<the scene's backscatter library>-eo.csv when it exists,
+    else generic-terrain-eo.csv). Returns a SensorImage."""
     path = getattr(scene, "path", scene)
     if path is None or path == "":
         raise _error("scene", "sensor(): the scene must come from a file (a Scene built from "
@@ -64,9 +65,8 @@ def sensor(scene, sensor, table=None, threads=0):
         raise _error("scene", f"sensor(): scene: expected a file path or a Scene, got {scene!r}")
     if not isinstance(sensor, (str, os.PathLike)):
         raise _error("sensor", f"sensor(): sensor: expected a sensor TOML path, got {sensor!r}")
-    if table is None:
-        table = os.path.join(_ris._data_dir(), "sensors_eo", "generic-terrain-eo.csv")
     if isinstance(threads, bool) or not isinstance(threads, int) or threads < 0:
         raise _error("threads", f"sensor(): threads: expected an integer >= 0, got {threads!r}")
-    return SensorImage(_ris._sensor(os.fspath(path), os.fspath(sensor), os.fspath(table),
+    return SensorImage(_ris._sensor(os.fspath(path), os.fspath(sensor),
+                                    "" if table is None else os.fspath(table),
                                     threads))

@@ -66,7 +66,7 @@ def files(tmp_path_factory):
 
 
 def test_optical_equals_the_command_line(files, tmp_path):
-    img = ris.sensor(files / "s.toml", files / "o.toml", threads=2)
+    img = ris.sensor(files / "s.toml", files / "o.toml", TABLE, threads=2)
     assert list(img.bands) == ["blue", "green", "red"] and img.unit == "W m-2 sr-1 um-1"
     run_cli("sensor", "optical", files / "s.toml", "--sensor", files / "o.toml",
             "--table", TABLE, "-q", "-o", tmp_path / "out")

@@ -1,11 +1,16 @@
 #include "ris/sensors_eo/surface_table.h"
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
+#include "ris/backscatter/library.h"
+#include "ris/scene/scene_source.h"
+#include "ris/util/data_dir.h"
 #include "ris/util/error.h"
+#include "ris/util/path_exists.h"
 
 namespace ris {
 namespace {
@@ -114,6 +119,15 @@ EoSurfaceTable load_eo_surface_table(const std::string& path) {
   std::stringstream ss;
   ss << f.rdbuf();
   return parse_eo_surface_table(ss.str(), path);
+}
+
+std::string default_eo_surface_table(const std::string& scene_path) {
+  std::string library = scene_backscatter_library(scene_path);
+  if (library.empty()) library = default_sigma0_library_path();
+  const std::filesystem::path named =
+      data_dir() / "sensors_eo" / (std::filesystem::path(library).stem().string() + "-eo.csv");
+  if (path_exists(named)) return named.string();
+  return (data_dir() / "sensors_eo" / "generic-terrain-eo.csv").string();
 }
 
 }  // namespace ris

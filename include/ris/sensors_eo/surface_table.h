@@ -42,4 +42,10 @@ double band_property(const EoSurface& s, EoBand b);
 EoSurfaceTable parse_eo_surface_table(const std::string& text, const std::string& path);
 EoSurfaceTable load_eo_surface_table(const std::string& path);
 
+// The surface table for a scene when none is given: the one named after the
+// scene's backscatter library, <data>/sensors_eo/<library stem>-eo.csv (the
+// library the scene raster names, else the standard library ku-geometric),
+// when it exists; else <data>/sensors_eo/generic-terrain-eo.csv.
+std::string default_eo_surface_table(const std::string& scene_path);
+
 }  // namespace ris
