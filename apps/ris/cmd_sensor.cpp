@@ -25,6 +25,7 @@
 #include "ris/scene/scene_source.h"
 #include "ris/sensors_eo/camera_view.h"
 #include "ris/sensors_eo/eo_place.h"
+#include "ris/sensors_eo/eo_preview.h"
 #include "ris/sensors_eo/eo_render.h"
 #include "ris/util/error.h"
 
@@ -42,47 +43,14 @@ struct SensorArgs {
   bool quiet = false;
 };
 
-// 8-bit preview: RGB from red/green/blue when all three are imaged, else the
-// first band in grey; each stretched linearly between its 2nd and 98th
-// percentiles (NaN black).
-std::vector<std::uint8_t> stretch(const std::vector<float>& v) {
-  std::vector<float> finite;
-  for (float x : v) {
-    if (std::isfinite(x)) finite.push_back(x);
-  }
-  std::vector<std::uint8_t> out(v.size(), 0);
-  if (finite.empty()) return out;
-  std::sort(finite.begin(), finite.end());
-  const float lo = finite[finite.size() * 2 / 100];
-  const float hi = finite[std::min(finite.size() - 1, finite.size() * 98 / 100)];
-  const float span = hi > lo ? hi - lo : 1.0f;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (std::isfinite(v[i]))
-      out[i] =
-          static_cast<std::uint8_t>(std::clamp((v[i] - lo) / span, 0.0f, 1.0f) * 255.0f + 0.5f);
-  }
-  return out;
-}
-
 void write_preview(const std::filesystem::path& path, const std::vector<std::string>& names,
                    const std::vector<std::vector<float>>& bands, int cols, int rows) {
-  auto find = [&](const char* n) {
-    const auto it = std::find(names.begin(), names.end(), n);
-    return it == names.end() ? -1 : static_cast<int>(it - names.begin());
-  };
-  const int r = find("red"), g = find("green"), b = find("blue");
-  if (r < 0 || g < 0 || b < 0) {
-    ris::write_png_gray(path, stretch(bands[0]).data(), cols, rows);
-    return;
+  const ris::EoPreview p = ris::eo_preview(names, bands);
+  if (p.channels == 3) {
+    ris::write_png_rgb(path, p.pixels.data(), cols, rows);
+  } else {
+    ris::write_png_gray(path, p.pixels.data(), cols, rows);
   }
-  const auto sr = stretch(bands[r]), sg = stretch(bands[g]), sb = stretch(bands[b]);
-  std::vector<std::uint8_t> rgb(sr.size() * 3);
-  for (std::size_t i = 0; i < sr.size(); ++i) {
-    rgb[3 * i] = sr[i];
-    rgb[3 * i + 1] = sg[i];
-    rgb[3 * i + 2] = sb[i];
-  }
-  ris::write_png_rgb(path, rgb.data(), cols, rows);
 }
 
 nlohmann::json metadata(const SensorArgs& a, const ris::EoSensorConfig& cfg,

@@ -19,7 +19,7 @@ DaySamples day_samples(const UtcDateTime& date, double lat_deg, double lon_deg, 
   // interval with the sun up (from 16 sub-samples) scales the irradiance and
   // the sun's direction is the mean over the up part, so a wall lit from the
   // moment of sunrise is not over- or under-counted by up to half an
-  // interval (3 % of its daily mean at 15-minute samples).
+  // interval (6 % of its daily mean at 30-minute samples).
   constexpr int kSub = 16;
   DaySamples d;
   d.harmonics = harmonics;

@@ -26,7 +26,7 @@ DiurnalForcing forcing_of(const DaySamples& day, const Vec3& n) {
 // cosine of mean S / pi and harmonics S / 2, 2 S / (3 pi); an east-facing
 // wall sees S sin(w t') in the morning only, mean S / (2 pi) (with S the
 // day's solar irradiance). The declination moves by 0.4 deg over the day,
-// the 15-minute samples alias the clipped cosine's kinks: 0.3 % tolerance.
+// the 30-minute samples alias the clipped cosine's kinks: 0.3 % tolerance.
 TEST(FacetForcing, EquatorEquinoxClosedForms) {
   const DaySamples day = day_samples({2024, 3, 20, 0.0}, 0.0, 0.0, 4, 1.0);
   double s = 0;

@@ -122,8 +122,11 @@ EoSurfaceTable load_eo_surface_table(const std::string& path) {
 }
 
 std::string default_eo_surface_table(const std::string& scene_path) {
-  std::string library = scene_backscatter_library(scene_path);
-  if (library.empty()) library = default_sigma0_library_path();
+  return eo_surface_table_for_library(scene_backscatter_library(scene_path));
+}
+
+std::string eo_surface_table_for_library(const std::string& library_path) {
+  const std::string library = library_path.empty() ? default_sigma0_library_path() : library_path;
   const std::filesystem::path named =
       data_dir() / "sensors_eo" / (std::filesystem::path(library).stem().string() + "-eo.csv");
   if (path_exists(named)) return named.string();

@@ -262,6 +262,12 @@ struct HttpServer::Impl {
     http.Get(R"(/api/overlay/([a-z]+)\.png)", guarded([&s](const httplib::Request& req, auto& res) {
                send_png(res, s.overlay_png(req.matches[1], req.get_param_value("masks")));
              }));
+    // minute=<0..1439>: the UTC time of day (default: the sensor file's).
+    http.Get(R"(/api/sensor/([a-z]+)\.png)", guarded([&s](const httplib::Request& req, auto& res) {
+               std::optional<int> minute;
+               if (req.has_param("minute")) minute = int_param(req, "minute");
+               send_png(res, s.sensor_png(req.matches[1], minute));
+             }));
     http.Get("/api/shadowmap.txt",
              guarded([&s](const auto&, auto& res) { send_text(res, s.shadow_map(), ""); }));
     http.Get("/api/histogram",

@@ -55,6 +55,9 @@ class ServeApi : public ::testing::Test {
   static httplib::Client client() {
     httplib::Client c("127.0.0.1", port_);
     c.set_url_encode(false);  // send paths exactly as written
+    // A thermal view of the standard scene takes seconds on a loaded 2-core
+    // machine (httplib's default read timeout is 5 s).
+    c.set_read_timeout(120, 0);
     return c;
   }
   static httplib::Result post(const std::string& path, const std::string& body) {
@@ -162,6 +165,45 @@ TEST_F(ServeApi, PathTraversalReadsNothing) {
     EXPECT_EQ(r->status, 400) << name;
   }
   EXPECT_FALSE(std::filesystem::exists(tmp_->path() / "escaped.toml"));
+}
+
+// The PNG's width and height from its IHDR chunk (bytes 16-23, big-endian).
+std::pair<std::uint32_t, std::uint32_t> png_size(const std::string& png) {
+  auto be32 = [&](std::size_t at) {
+    std::uint32_t v = 0;
+    for (std::size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(png[at + i]);
+    return v;
+  };
+  return {be32(16), be32(20)};
+}
+
+// The optical and thermal views of the scene: PNGs on the scene's grid (the
+// standard scene: 1000 x 700 cells, its crops' table), another picture at
+// another time of day, the same bytes asked twice; a bad kind or minute is
+// a 400 naming the parameter.
+TEST_F(ServeApi, SensorViewsLieOnTheScenesGrid) {
+  const auto optical = client().Get("/api/sensor/optical.png");
+  ASSERT_TRUE(optical);
+  ASSERT_EQ(optical->status, 200) << optical->body;
+  EXPECT_EQ(optical->get_header_value("Content-Type"), "image/png");
+  EXPECT_EQ(png_size(optical->body), (std::pair<std::uint32_t, std::uint32_t>{1000, 700}));
+  const auto evening = client().Get("/api/sensor/optical.png?minute=1080");
+  ASSERT_TRUE(evening);
+  ASSERT_EQ(evening->status, 200);
+  EXPECT_NE(evening->body, optical->body);
+  const auto thermal = client().Get("/api/sensor/thermal.png?minute=780");
+  ASSERT_TRUE(thermal);
+  ASSERT_EQ(thermal->status, 200) << thermal->body;
+  EXPECT_EQ(client().Get("/api/sensor/thermal.png?minute=780")->body, thermal->body);
+  for (const char* bad : {"/api/sensor/radar.png", "/api/sensor/optical.png?minute=1440",
+                          "/api/sensor/optical.png?minute=noon"}) {
+    const auto r = client().Get(bad);
+    ASSERT_TRUE(r) << bad;
+    EXPECT_EQ(r->status, 400) << bad;
+    EXPECT_TRUE(r->body.find("kind") != std::string::npos ||
+                r->body.find("minute") != std::string::npos)
+        << r->body;
+  }
 }
 
 TEST_F(ServeApi, SimulateFilmOnlyAndImages) {

@@ -28,6 +28,7 @@
 #include "ris/serve/radar_overrides.h"
 #include "ris/serve/run_compare.h"
 #include "ris/serve/run_views.h"
+#include "ris/serve/sensor_view.h"
 #include "ris/serve/view_link.h"
 #include "ris/sim/run.h"
 #include "ris/util/error.h"
@@ -536,6 +537,19 @@ std::vector<std::uint8_t> Session::image_png(const std::string& view) const {
     scene_png_version_ = scene_.version;
   }
   return scene_png_;
+}
+
+std::vector<std::uint8_t> Session::sensor_png(const std::string& kind,
+                                              std::optional<int> minute_of_day) const {
+  std::lock_guard lock(mutex_);
+  const std::string key = fmt::format("{} {} {} {}", kind, minute_of_day.value_or(-1),
+                                      scene_.version, backscatter_name_);
+  if (key != sensor_png_key_) {
+    sensor_png_ = sensor_view_png(*scene_.scene, backscatter_files_.at(backscatter_name_), kind,
+                                  minute_of_day);
+    sensor_png_key_ = key;
+  }
+  return sensor_png_;
 }
 
 std::vector<std::uint8_t> Session::overlay_png(const std::string& view,

@@ -1,7 +1,7 @@
 // The day's solar forcing of one facet of the terrain (issue 35 item 3;
 // docs/sensors.md "Thermal"): the insolation on a surface of normal n,
 //   I(t) = T E_s / r^2 max(n . s(t), 0) lit(t),
-// sampled over the UTC day (every 15 minutes) with the sun's direction s(t)
+// sampled over the UTC day (every 30 minutes) with the sun's direction s(t)
 // from sun_position, lit(t) 0 while the facet is in a cast shadow (a ray to
 // the sun through the terrain mesh), and reduced to its mean and first
 // harmonics exactly as solar_forcing does for flat open ground
@@ -29,9 +29,9 @@ struct DaySamples {
   int harmonics = 0;
 };
 
-// 96 samples (15 minutes) by default.
+// 48 samples (30 minutes) by default.
 DaySamples day_samples(const UtcDateTime& date, double lat_deg, double lon_deg, int harmonics,
-                       double transmittance, int samples = 96);
+                       double transmittance, int samples = 48);
 
 // Fills f (its harmonics resized once, so a caller reusing f allocates
 // nothing per facet) from the insolation of each sample (W m^-2).

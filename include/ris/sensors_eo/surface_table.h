@@ -47,5 +47,7 @@ EoSurfaceTable load_eo_surface_table(const std::string& path);
 // library the scene raster names, else the standard library ku-geometric),
 // when it exists; else <data>/sensors_eo/generic-terrain-eo.csv.
 std::string default_eo_surface_table(const std::string& scene_path);
+// The same for a backscatter library's path or file name ("" the standard).
+std::string eo_surface_table_for_library(const std::string& library);
 
 }  // namespace ris

@@ -131,6 +131,10 @@ class Session {
   nlohmann::json histogram() const;
   nlohmann::json sigma0_chart() const;
   nlohmann::json inspect(const std::string& view, int x, int y) const;
+  // The scene's optical or thermal view (ris/serve/sensor_view.h), kept for
+  // the last (kind, minute, scene version) asked.
+  std::vector<std::uint8_t> sensor_png(const std::string& kind,
+                                       std::optional<int> minute_of_day) const;
 
   // Comparing runs (ris/serve/run_history.h, run_compare.h; docs/serve.md,
   // "Comparing two runs"). The last SLAR and SAR runs are kept (their slant
@@ -221,6 +225,8 @@ class Session {
   // page shows it beside every run).
   mutable std::uint64_t scene_png_version_ = 0;
   mutable std::vector<std::uint8_t> scene_png_;
+  mutable std::string sensor_png_key_;
+  mutable std::vector<std::uint8_t> sensor_png_;
 };
 
 }  // namespace ris
