@@ -451,6 +451,44 @@ async function showRun(summary) {
     $('shadow-map').textContent = '(no shadow map for a PPI)';
   }
   if (!summary.film_only) drawSigma0();
+  if ($('sensor-kind').value !== 'off') showSensor();
+}
+
+// ---- other sensors (GET /api/sensor/<kind>.png: ris sensor's scene-grid preview) ----
+function sensorMinute() {
+  const minute = Number($('sensor-time').value);
+  const hh = String(Math.floor(minute / 60)).padStart(2, '0');
+  $('sensor-time-value').textContent = `${hh}:${String(minute % 60).padStart(2, '0')}`;
+  return minute;
+}
+
+async function showSensor() {
+  const kind = $('sensor-kind').value;
+  const img = $('sensor-image');
+  const minute = sensorMinute();
+  if (kind === 'off') {
+    img.hidden = true;
+    img.removeAttribute('src');
+    return;
+  }
+  // The scene's version (an edit makes a new picture): from the scene image's URL.
+  const version = (run && run.images.scene || '').split('scene=')[1] || '';
+  const url = `/api/sensor/${kind}.png?minute=${minute}&scene=${version}`;
+  img.hidden = false;
+  img.dataset.state = 'loading';
+  setStatus(`rendering the ${kind} view…`);
+  const ok = await loadImage(img, url);
+  img.dataset.state = ok ? 'ready' : 'failed';
+  if (ok) {
+    setStatus(`${kind} view at ${$('sensor-time-value').textContent} UTC`);
+    return;
+  }
+  img.hidden = true;
+  try {
+    await api(url);
+  } catch (e) {
+    showError(e.message);
+  }
 }
 
 // ---- charts ----
@@ -1193,6 +1231,10 @@ async function main() {
   for (const c of document.querySelectorAll('.overlay')) {
     c.addEventListener('change', () => { showImages(); showLegend(); });
   }
+  $('sensor-kind').addEventListener('change', showSensor);
+  $('sensor-time').addEventListener('input', sensorMinute);
+  $('sensor-time').addEventListener('change', showSensor);
+  sensorMinute();
   $('overlay-opacity').addEventListener('input', applyOpacity);
   for (const id of ['stretch-low', 'stretch-high']) $(id).addEventListener('input', applyStretch);
   $('ramp').addEventListener('change', applyStretch);

@@ -453,6 +453,37 @@ def double_click(driver, element_id):
     ActionChains(driver).double_click(driver.find_element("id", element_id)).perform()
 
 
+def check_sensors(driver, out_dir):
+    """The optical and thermal views: each a picture on the scene's grid
+    (as many pixels as the scene image), another one at another time of day,
+    and none once switched off."""
+    def sensor_state():
+        return driver.execute_script(
+            "const i = document.getElementById('sensor-image');"
+            "return [i.dataset.state || '', i.naturalWidth, i.naturalHeight, i.src, i.hidden];")
+
+    scene_size = driver.execute_script(
+        "const i = document.getElementById('scene'); return [i.naturalWidth, i.naturalHeight];")
+    choose(driver, "sensor-kind", "optical")
+    first = wait_until(lambda: (st := sensor_state())[0] == "ready" and st, 120,
+                       "the optical view")
+    assert first[1:3] == scene_size, (first, scene_size)
+    driver.execute_script("const t = document.getElementById('sensor-time'); t.value = 1080;"
+                          "t.dispatchEvent(new Event('change'));")
+    evening = wait_until(lambda: (st := sensor_state())[0] == "ready" and st[3] != first[3]
+                         and st, 120, "the optical view at 18:00")
+    assert "minute=1080" in evening[3], evening
+    choose(driver, "sensor-kind", "thermal")
+    thermal = wait_until(lambda: (st := sensor_state())[0] == "ready" and "thermal" in st[3]
+                         and st, 180, "the thermal view")
+    assert thermal[1:3] == scene_size, thermal
+    driver.save_screenshot(os.path.join(out_dir, "5-thermal.png"))
+    choose(driver, "sensor-kind", "off")
+    wait_until(lambda: sensor_state()[4], 10, "the sensor view switched off")
+    print(f"sensor views: optical and thermal {thermal[1]} x {thermal[2]} px (the scene's), "
+          "another picture at 18:00 UTC, off hides it")
+
+
 def check_upload(driver, out_dir):
     """A DEM uploaded from the page, imported and simulated with the library
     it names; a scene cell's latitude and longitude lie inside the DEM."""
@@ -612,6 +643,7 @@ def main():
         last = saved_text.rsplit("[[object]]", 1)[1]
         assert re.search(r"length = [\"']\d+ ft[\"']", last), last
         driver.save_screenshot(os.path.join(out_dir, "4-saved.png"))
+        check_sensors(driver, out_dir)
         check_upload(driver, out_dir)
         errors = driver.find_element("id", "error").text
         assert errors == "", f"the page shows an error: {errors}"
