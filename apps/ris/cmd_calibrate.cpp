@@ -11,15 +11,17 @@
 //                 [--quantity beta0|sigma0] [--scale auto|power|amplitude|db] [--band B]
 //                 [--polarisation POL] [--bin-deg W] [--min-bin-pixels N] [--min-pixels N]
 //                 [--edge PX] [--fit table|quadratic] [--library NAMES] [--no-clamp]
-//                 [--summary LIB.json] [--threads N] [--quiet]
+//                 [--append] [--summary LIB.json] [--threads N] [--quiet]
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -48,7 +50,7 @@ struct CalibrateArgs {
   int band = 1, category = 1, edge_px = 1, threads = 0;
   double bin_deg = 1.0;
   std::int64_t min_bin_pixels = 50, min_pixels = 500;
-  bool no_clamp = false, quiet = false;
+  bool no_clamp = false, append = false, quiet = false;
 };
 
 std::string lower_extension(const std::filesystem::path& p) {
@@ -72,6 +74,12 @@ BackscatterFitOptions check_options(CalibrateArgs& a) {
     throw InputError("", "--category", "expected a category id 1..65534");
   if (lower_extension(a.out) != ".csv")
     throw InputError(a.out, "--out", "expected a sigma0 table (.csv)");
+  if (a.append && a.summary.empty())
+    throw InputError("", "--summary",
+                     "with --append, name this run's summary (the default, --out with .json, "
+                     "holds the first run's)");
+  if (a.append && !std::filesystem::is_regular_file(a.out))
+    throw InputError(a.out, "--append", "no table to append to: run once without --append");
   if (a.summary.empty()) a.summary = std::filesystem::path(a.out).replace_extension(".json");
   if (lower_extension(a.summary) != ".json")
     throw InputError(a.summary, "--summary", "expected a .json file");
@@ -206,6 +214,22 @@ void print_fits(const std::vector<CategoryFit>& fits,
   }
 }
 
+// A new table, or (--append) the existing one with this run's curves
+// after it: another band or polarisation of the same categories.
+std::string table_text(const CalibrateArgs& a, const std::vector<CategoryFit>& fits,
+                       const RadarBand& band,
+                       const std::function<std::string(std::int32_t)>& name_of,
+                       const std::string& provenance) {
+  if (!a.append) return backscatter_table_csv(fits, band, name_of, provenance, !a.no_clamp);
+  std::ifstream in(a.out, std::ios::binary);
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (!in) throw InputError(a.out, "--append", "cannot read the table");
+  std::string text = buffer.str();
+  if (!text.empty() && text.back() != '\n') text += '\n';
+  return text + "# appended: " + provenance + "\n" + backscatter_table_rows(fits, band, name_of);
+}
+
 void run_calibrate(CalibrateArgs a) {
   const BackscatterFitOptions fit_options = check_options(a);
   const Acquisition acq = read_acquisition(a.acq.path, a.acq.options());
@@ -253,12 +277,24 @@ void run_calibrate(CalibrateArgs a) {
   const std::string provenance =
       fmt::format("from {} ({}), acquisition {}, DEM {}{}", a.image, a.quantity, acq.source, a.dem,
                   a.land_cover.empty() ? "" : ", land cover " + a.land_cover);
-  const std::string csv = backscatter_table_csv(fits, band, name_of, provenance, !a.no_clamp);
+  const std::string csv = table_text(a, fits, band, name_of, provenance);
   const nlohmann::json j = summary_json(a, acq, band, s, fits, name_of);
   // Both files or neither: each written under a temporary name, renamed
-  // only when both are complete.
+  // only when both are complete and the table reads back as a table.
   AtomicPath csv_out(a.out), json_out(a.summary);
   write_text_file_atomic(csv_out.temp_path(), csv);
+  try {
+    load_sigma0_source(csv_out.temp_path().string());
+  } catch (const InputError& e) {
+    std::string what = e.what();
+    const std::string temp = csv_out.temp_path().string();
+    for (std::size_t at = what.find(temp); at != std::string::npos; at = what.find(temp))
+      what.replace(at, temp.size(), a.out);
+    throw InputError(
+        a.out, a.append ? "--append" : "",
+        "the table with the new rows does not read back (" + what +
+            (a.append ? "); is a curve of this band and polarisation in it already?" : ")"));
+  }
   write_text_file_atomic(json_out.temp_path(), j.dump(1) + "\n");
   csv_out.commit();
   json_out.commit();
@@ -318,6 +354,9 @@ void add_calibrate(CLI::App& app) {
   cmd->add_option("--library", a->library, "Category library whose names the table gives");
   cmd->add_flag("--no-clamp", a->no_clamp,
                 "Refuse angles outside the fitted range (default: they take the end value)");
+  cmd->add_flag("--append", a->append,
+                "Add this run's curves (another band or polarisation) to the existing --out "
+                "table");
   cmd->add_option("--threads", a->threads, "Threads (0: all)")->capture_default_str();
   cmd->add_flag("--quiet,-q", a->quiet, "Print nothing on success");
   cmd->callback([a] { run_calibrate(*a); });

@@ -157,22 +157,14 @@ std::vector<CategoryFit> fit_backscatter(std::span<const float> sigma0_linear,
   return out;
 }
 
-std::string backscatter_table_csv(const std::vector<CategoryFit>& fits, const RadarBand& band,
-                                  const std::function<std::string(std::int32_t)>& name_of,
-                                  const std::string& provenance, bool clamp) {
-  std::string out =
-      "# sigma0 fitted from a calibrated image by ris calibrate (docs/calibrate.md)\n";
-  if (!provenance.empty()) out += "# " + provenance + "\n";
-  out +=
-      "# per category: the mean of linear sigma0 in each local-incidence bin, at the bin's\n"
-      "# mean incidence; ris interpolates linearly in dB between the rows\n";
-  out += fmt::format("# clamp: {}\n", clamp ? "true" : "false");
+std::string backscatter_table_rows(const std::vector<CategoryFit>& fits, const RadarBand& band,
+                                   const std::function<std::string(std::int32_t)>& name_of) {
+  std::string out;
   for (const auto& f : fits) {
     if (!f.fitted) continue;
     const std::string name = name_of ? name_of(f.category) : std::string();
     if (!name.empty()) out += fmt::format("# category {}: {}\n", f.category, name);
   }
-  out += "category,frequency_ghz,polarisation,angle_deg,sigma0_db\n";
   for (const auto& f : fits) {
     if (!f.fitted) continue;
     double last = -1.0;
@@ -188,6 +180,20 @@ std::string backscatter_table_csv(const std::vector<CategoryFit>& fits, const Ra
     }
   }
   return out;
+}
+
+std::string backscatter_table_csv(const std::vector<CategoryFit>& fits, const RadarBand& band,
+                                  const std::function<std::string(std::int32_t)>& name_of,
+                                  const std::string& provenance, bool clamp) {
+  std::string out =
+      "# sigma0 fitted from a calibrated image by ris calibrate (docs/calibrate.md)\n";
+  if (!provenance.empty()) out += "# " + provenance + "\n";
+  out +=
+      "# per category: the mean of linear sigma0 in each local-incidence bin, at the bin's\n"
+      "# mean incidence; ris interpolates linearly in dB between the rows\n";
+  out += fmt::format("# clamp: {}\n", clamp ? "true" : "false");
+  out += "category,frequency_ghz,polarisation,angle_deg,sigma0_db\n";
+  return out + backscatter_table_rows(fits, band, name_of);
 }
 
 }  // namespace ris

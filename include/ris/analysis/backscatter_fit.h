@@ -93,4 +93,9 @@ std::string backscatter_table_csv(const std::vector<CategoryFit>& fits, const Ra
                                   const std::function<std::string(std::int32_t)>& name_of,
                                   const std::string& provenance, bool clamp);
 
+// The same table's "# category N: name" lines and rows alone, to append to
+// an existing table (another band or polarisation of the same categories).
+std::string backscatter_table_rows(const std::vector<CategoryFit>& fits, const RadarBand& band,
+                                   const std::function<std::string(std::int32_t)>& name_of);
+
 }  // namespace ris
