@@ -333,6 +333,10 @@ TEST(CalibrateCli, BadInputIsRefusedNamingItAndLeavesNoOutput) {
   refused("calibrate " + test::q(beta0) + " " + c.acq + " --land-cover " +
               test::q(dir / "nocover.tif") + " --out " + test::q(dir / "o.csv"),
           "nocover.tif");
+  // A land cover without a CRS cannot be placed on the ground points.
+  refused("calibrate " + test::q(beta0) + " " + c.acq + " --land-cover " +
+              test::q(dir / "small.tif") + " --out " + test::q(dir / "o.csv"),
+          "the land cover has no CRS");
   // Every category below its pixel count: the error names it, nothing written.
   const test::RunResult few =
       test::run_ris(calibrate_args(c, beta0, dir / "o.csv") + " --min-pixels 100000000");
