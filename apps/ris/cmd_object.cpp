@@ -88,9 +88,9 @@ void run(const Options& o) {
     throw InputError("", "--rays-per-wavelength", "expected 1..100 (10 is the PO-SBR norm)");
   }
   const double lambda = ris::kSpeedOfLight_m_per_s / f_hz;
-  const ris::Placement placement{.scale = o.mesh.empty() ? 1.0 : o.scale,
-                                 .roll_rad = ris::deg_to_rad(o.roll_deg),
-                                 .tilt_rad = ris::deg_to_rad(o.tilt_deg)};
+  const ris::MeshPlacement placement{.scale = o.mesh.empty() ? 1.0 : o.scale,
+                                     .roll_rad = ris::deg_to_rad(o.roll_deg),
+                                     .tilt_rad = ris::deg_to_rad(o.tilt_deg)};
   ris::TriangleMesh mesh;
   if (o.mesh.empty()) {
     mesh = canonical(o, lambda);

@@ -65,7 +65,7 @@ void TriangleMesh::append(const TriangleMesh& other) {
   }
 }
 
-void place(TriangleMesh& mesh, const Placement& p) {
+void place(TriangleMesh& mesh, const MeshPlacement& p) {
   for (Vec3& v : mesh.vertices) {
     Vec3 w = rotate_x(v * p.scale, p.roll_rad);
     w = rotate_y(w, -p.tilt_rad);

@@ -30,7 +30,7 @@ void check_triangle(const TriangleMesh& m, const std::string& path, std::size_t 
 
 }  // namespace
 
-TriangleMesh load_mesh(const std::string& path, const Placement& placement,
+TriangleMesh load_mesh(const std::string& path, const MeshPlacement& placement,
                        std::size_t max_triangles) {
   require_regular_input(path);
   Assimp::Importer importer;

@@ -246,7 +246,7 @@ ObjectSceneMesh build_object_scene(const std::vector<CulturalObject>& objects, c
       piece = reflector_shape_mesh(b, lambda);
       const std::uint32_t m = table.index(b.material, b, "material");
       std::fill(piece.material.begin(), piece.material.end(), m);
-      Placement p;
+      MeshPlacement p;
       p.roll_rad = b.roll_rad;
       p.tilt_rad = b.tilt_rad;
       p.azimuth_rad = b.azimuth_rad;

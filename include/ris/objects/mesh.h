@@ -35,14 +35,17 @@ struct TriangleMesh {
 // Orientation and position: the mesh is scaled, turned about +x (rotation
 // about the boresight, the radar's line of sight at boresight), tilted
 // (about +y, nose up positive) and turned in azimuth (about +z), then moved.
-struct Placement {
+// (Not `Placement`: ris/scene/scene_object.h has a ris::Placement of its own,
+// and two classes of one name with default member initialisers give two
+// inline constructors of one mangled name: the linker keeps either.)
+struct MeshPlacement {
   double scale = 1.0;
   double roll_rad = 0.0;     // about +x (line of sight at boresight)
   double tilt_rad = 0.0;     // about -y: boresight raised by tilt
   double azimuth_rad = 0.0;  // about +z
   Vec3 position_m{};
 };
-void place(TriangleMesh& mesh, const Placement& p);
+void place(TriangleMesh& mesh, const MeshPlacement& p);
 
 // Square plate of side a in the x = 0 plane, normal +x.
 TriangleMesh make_plate(double side_m);

@@ -1,5 +1,5 @@
 // Object meshes from files through Assimp (OBJ, PLY, STL, glTF, ...), placed
-// by position, rotation and scale (ris/objects/mesh.h's Placement).
+// by position, rotation and scale (ris/objects/mesh.h's MeshPlacement).
 //
 // Refused, as InputError naming the file and what is wrong: a file that is not
 // a regular file or cannot be read, one without triangles, a non-finite
@@ -19,7 +19,7 @@ namespace ris {
 // The resource cap: 4 M triangles (about 200 MB of BVH in Embree).
 constexpr std::size_t kMaxMeshTriangles = std::size_t{4} << 20;
 
-TriangleMesh load_mesh(const std::string& path, const Placement& placement,
+TriangleMesh load_mesh(const std::string& path, const MeshPlacement& placement,
                        std::size_t max_triangles = kMaxMeshTriangles);
 
 }  // namespace ris
