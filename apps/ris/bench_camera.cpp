@@ -1,4 +1,5 @@
 #include "bench_camera.h"
+#include "bench_timing.h"
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -12,19 +13,6 @@
 #include "ris/sensors_eo/eo_render.h"
 
 namespace ris::app {
-
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
 
 void run_camera_bench(const std::string& data_dir, int repeats) {
   const LoadedScene town = load_scene_source(data_dir + "/scenes/town.toml");

@@ -1,4 +1,5 @@
 #include "bench_quad_pol.h"
+#include "bench_timing.h"
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -16,19 +17,6 @@
 #include "ris/sim/sar_quad_pol.h"
 
 namespace ris::app {
-
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
 
 void run_quad_pol_bench(const std::string& data_dir, int repeats) {
   // Both runs image the town's grid and its objects' scattering centres
